@@ -1,0 +1,128 @@
+//! Impact-law ids and the [`ImpactLaw`] capability trait.
+
+use crate::error::{Error, Result};
+use crate::planar::{ContactProblem, Resolution};
+use std::fmt;
+use std::str::FromStr;
+
+/// Stable ids of the impact laws. These strings are a public contract (CLI, JSON, TOML).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum LawId {
+    /// `whittaker`: Newton restitution with Coulomb friction on the total impulses against the
+    /// initial slip (paper A eqs. 7–9; Kane & Levinson 1985).
+    Whittaker,
+    /// `two-phase`: friction reversed after the slip halts (paper A §3, eqs. 16–23; Keller 1986).
+    TwoPhase,
+    /// `smith`: Smith's 1991 correction factor η on the sliding velocity (paper A §4).
+    Smith,
+    /// `smith-centre`: Smith's η from the centre-of-mass velocity, the literal reading of
+    /// paper A eq. 24 (needs a body, not only contact space).
+    SmithCentre,
+    /// `brach`: Brach 1989, the sticking ratio capped to the friction cone.
+    Brach,
+    /// `newton`: Darboux–Keller integration ended by kinematic restitution `v_n⁺ = −e v_n⁻`.
+    Newton,
+    /// `poisson`: Darboux–Keller integration ended by kinetic restitution `p_f = (1+e) p_c`.
+    Poisson,
+    /// `energetic`: Darboux–Keller integration ended by Stronge's energetic restitution
+    /// `W_r = −e² W_c`.
+    Energetic,
+}
+
+impl LawId {
+    /// The seven laws defined in contact space, in presentation order.
+    pub const CONTACT_SPACE: [LawId; 7] = [
+        LawId::Whittaker,
+        LawId::TwoPhase,
+        LawId::Smith,
+        LawId::Brach,
+        LawId::Newton,
+        LawId::Poisson,
+        LawId::Energetic,
+    ];
+
+    /// Every law, including the body-only `smith-centre`, in presentation order.
+    pub const ALL: [LawId; 8] = [
+        LawId::Whittaker,
+        LawId::TwoPhase,
+        LawId::Smith,
+        LawId::SmithCentre,
+        LawId::Brach,
+        LawId::Newton,
+        LawId::Poisson,
+        LawId::Energetic,
+    ];
+
+    /// The stable id string.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            LawId::Whittaker => "whittaker",
+            LawId::TwoPhase => "two-phase",
+            LawId::Smith => "smith",
+            LawId::SmithCentre => "smith-centre",
+            LawId::Brach => "brach",
+            LawId::Newton => "newton",
+            LawId::Poisson => "poisson",
+            LawId::Energetic => "energetic",
+        }
+    }
+
+    /// Whether the law needs a body (not only `W` and `v⁻`).
+    pub fn needs_body(self) -> bool {
+        matches!(self, LawId::SmithCentre)
+    }
+
+    /// Whether the law is the exact Darboux–Keller integration (newton, poisson, energetic).
+    pub fn is_darboux_keller(self) -> bool {
+        matches!(self, LawId::Newton | LawId::Poisson | LawId::Energetic)
+    }
+
+    /// Resolve a contact-space problem with this law.
+    ///
+    /// `smith-centre` needs a body; in contact space alone it has no meaning, and this
+    /// returns the `smith` (sliding-velocity) result. Use
+    /// [`crate::planar::laws::Smith::centre`] through a body instead.
+    #[inline]
+    pub fn resolve(self, problem: &ContactProblem) -> Resolution {
+        use crate::planar::laws::*;
+        match self {
+            LawId::Whittaker => Whittaker.resolve(problem),
+            LawId::TwoPhase => TwoPhase.resolve(problem),
+            LawId::Smith | LawId::SmithCentre => Smith::SLIP.resolve(problem),
+            LawId::Brach => Brach.resolve(problem),
+            LawId::Newton => Newton.resolve(problem),
+            LawId::Poisson => Poisson.resolve(problem),
+            LawId::Energetic => Energetic.resolve(problem),
+        }
+    }
+}
+
+impl fmt::Display for LawId {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.as_str())
+    }
+}
+
+impl FromStr for LawId {
+    type Err = Error;
+    fn from_str(s: &str) -> Result<Self> {
+        LawId::ALL
+            .iter()
+            .copied()
+            .find(|l| l.as_str() == s)
+            .ok_or_else(|| Error::UnknownLaw {
+                id: s.to_string(),
+                known: LawId::ALL.map(|l| l.as_str()).join(", "),
+            })
+    }
+}
+
+/// A planar impact law: maps a contact-space problem to an outcome or a breakdown.
+///
+/// Laws are pure functions of the problem: no I/O, no allocation.
+pub trait ImpactLaw {
+    /// The law's stable id.
+    fn id(&self) -> LawId;
+    /// Resolve one impact.
+    fn resolve(&self, problem: &ContactProblem) -> Resolution;
+}

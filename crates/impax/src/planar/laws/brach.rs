@@ -1,0 +1,88 @@
+//! `brach`: Brach's 1989 impulse-ratio law.
+//!
+//! Newton restitution on the normal velocity; the friction ratio is the one of the impulse
+//! that leaves no tangential velocity (theory §3),
+//!
+//! ```text
+//! W p* = (−v_t⁻, −(1+e) v_n⁻),   μ0 = p*_t / p*_n,
+//! ```
+//!
+//! used as it is if `|μ0| ≤ μ`, otherwise capped to `μ sign(μ0)` with
+//! `p_n = −(1+e) v_n⁻ / (W_nn + μ sign(μ0) W_tn)`.
+
+use super::{finish, newton_normal_impulse, ImpactLaw};
+use crate::law::LawId;
+use crate::math::sign;
+use crate::planar::path::ImpulsePath;
+use crate::planar::{
+    Breakdown, BreakdownReason, ContactProblem, LawDetail, PhaseKind, Resolution, SlipDirection,
+};
+
+/// Brach's law. See the [module docs](self).
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Brach;
+
+impl ImpactLaw for Brach {
+    fn id(&self) -> LawId {
+        LawId::Brach
+    }
+
+    fn resolve(&self, problem: &ContactProblem) -> Resolution {
+        let law = LawId::Brach;
+        let (a, b, c) = (problem.wtt(), problem.wtn(), problem.wnn());
+        let v = problem.velocity();
+        let mu = problem.friction();
+        let target_n = -(1.0 + problem.restitution()) * v.y;
+        let det = a * c - b * b;
+        // p* = W⁻¹ (−v_t, target_n)
+        let pt_star = (c * -v.x - b * target_n) / det;
+        let pn_star = (-b * -v.x + a * target_n) / det;
+        if !(pn_star > 0.0) {
+            return Err(Breakdown {
+                law,
+                reason: BreakdownReason::NegativeStickingImpulse {
+                    normal_impulse: pn_star,
+                },
+            });
+        }
+        let ratio = pt_star / pn_star;
+        let mut path = ImpulsePath::new(problem);
+        if ratio.abs() <= mu {
+            path.push(PhaseKind::Stick, ratio, f64::INFINITY);
+            return Ok(finish(
+                problem,
+                law,
+                &path,
+                pn_star,
+                LawDetail::Brach {
+                    ratio,
+                    capped: false,
+                },
+                None,
+            ));
+        }
+        let k = mu * sign(ratio);
+        let pf = newton_normal_impulse(problem, k).map_err(|denominator| Breakdown {
+            law,
+            reason: BreakdownReason::NegativeNormalImpulse { denominator },
+        })?;
+        // Friction along −ŝ means slip along −sign(k) (frictionless: the initial slip).
+        let dir = if k != 0.0 {
+            SlipDirection::of(-k)
+        } else {
+            SlipDirection::of(v.x)
+        };
+        path.push(PhaseKind::Slip(dir), k, f64::INFINITY);
+        Ok(finish(
+            problem,
+            law,
+            &path,
+            pf,
+            LawDetail::Brach {
+                ratio,
+                capped: true,
+            },
+            None,
+        ))
+    }
+}

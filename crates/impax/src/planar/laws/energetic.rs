@@ -1,0 +1,56 @@
+//! `energetic`: Darboux–Keller integration ended by Stronge's energetic restitution.
+//!
+//! Termination (Stronge 1991, *Impact Mechanics* 2000; theory §2): the restitution work is
+//! `e²` times the magnitude of the compression work,
+//!
+//! ```text
+//! W_n(p_f) = (1 − e²) W_c,     W_c = ∫₀^{p_c} v_n dp_n < 0.
+//! ```
+//!
+//! On the last segment the normal work is quadratic in `p_n`; its root is taken in the
+//! cancellation-free form. Since `W_n ≤ 0` and friction work `W_t ≤ 0` under Coulomb's law,
+//! `ΔT = W_n + W_t ≤ 0`: this law never gains energy.
+
+use super::darboux_keller::{compression_end, darboux_keller_path};
+use super::{finish, ImpactLaw};
+use crate::law::LawId;
+use crate::planar::{ContactProblem, LawDetail, Resolution};
+
+/// Energetic restitution on the exact Darboux–Keller path.
+///
+/// ```
+/// use impax::planar::{ContactProblem, laws::{ImpactLaw, Energetic}};
+/// let p = ContactProblem::from_entries(2.0, 0.5, 1.5, 0.3, -1.0, 0.3, 0.5).unwrap();
+/// let out = Energetic.resolve(&p).unwrap();
+/// assert!(out.energy_change < 0.0);
+/// assert!((out.work.restitution + 0.25 * out.work.compression).abs() < 1e-15);
+/// ```
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Energetic;
+
+impl ImpactLaw for Energetic {
+    fn id(&self) -> LawId {
+        LawId::Energetic
+    }
+
+    #[inline]
+    fn resolve(&self, problem: &ContactProblem) -> Resolution {
+        let (path, slip_halt) = darboux_keller_path(problem);
+        let pc = compression_end(&path);
+        let e = problem.restitution();
+        let wc = path.normal_work_to(pc);
+        let pf = path
+            .normal_work_reached(pc, -e * e * wc)
+            .expect("the last Darboux–Keller segment is unbounded");
+        Ok(finish(
+            problem,
+            LawId::Energetic,
+            &path,
+            pf,
+            LawDetail::DarbouxKeller {
+                slip_halt: slip_halt.filter(|&ps| ps < pf),
+            },
+            None,
+        ))
+    }
+}

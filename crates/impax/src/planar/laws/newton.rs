@@ -1,0 +1,48 @@
+//! `newton`: Darboux–Keller integration ended by kinematic restitution.
+//!
+//! Termination (theory §2): the first `p_f` after compression with `v_n(p_f) = −e v_n⁻`
+//! (Newton 1686). With slip reversal during restitution this rule can raise the kinetic
+//! energy (Stronge 1991); the outcome then says [`Verdict::EnergyGained`](crate::planar::Verdict).
+
+use super::darboux_keller::darboux_keller_path;
+use super::{finish, ImpactLaw};
+use crate::law::LawId;
+use crate::planar::{ContactProblem, LawDetail, Resolution};
+
+/// Kinematic restitution on the exact Darboux–Keller path.
+///
+/// ```
+/// use impax::planar::{ContactProblem, laws::{ImpactLaw, Newton}};
+/// let a = 30f64.to_radians();
+/// let p = ContactProblem::from_entries(3.5, 0.0, 1.0, a.sin(), -a.cos(), 0.4, 0.7).unwrap();
+/// let out = Newton.resolve(&p).unwrap();
+/// assert!((out.velocity_after.y - 0.7 * a.cos()).abs() < 1e-15);
+/// assert_eq!(out.velocity_after.x, 0.0); // the slip halts and the sphere rolls
+/// ```
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Newton;
+
+impl ImpactLaw for Newton {
+    fn id(&self) -> LawId {
+        LawId::Newton
+    }
+
+    #[inline]
+    fn resolve(&self, problem: &ContactProblem) -> Resolution {
+        let (path, slip_halt) = darboux_keller_path(problem);
+        let target = -problem.restitution() * problem.velocity().y;
+        let pf = path
+            .first_normal_velocity(target)
+            .expect("the last Darboux–Keller segment has dv_n/dp_n > 0");
+        Ok(finish(
+            problem,
+            LawId::Newton,
+            &path,
+            pf,
+            LawDetail::DarbouxKeller {
+                slip_halt: slip_halt.filter(|&ps| ps < pf),
+            },
+            None,
+        ))
+    }
+}

@@ -1,0 +1,43 @@
+//! `poisson`: Darboux–Keller integration ended by kinetic restitution.
+//!
+//! Termination (Poisson 1817; theory §2): `p_f = (1 + e) p_c`, the restitution impulse is `e`
+//! times the compression impulse.
+
+use super::darboux_keller::{compression_end, darboux_keller_path};
+use super::{finish, ImpactLaw};
+use crate::law::LawId;
+use crate::planar::{ContactProblem, LawDetail, Resolution};
+
+/// Kinetic restitution on the exact Darboux–Keller path.
+///
+/// ```
+/// use impax::planar::{ContactProblem, laws::{ImpactLaw, Poisson}};
+/// let p = ContactProblem::from_entries(2.0, 0.5, 1.5, 0.3, -1.0, 0.3, 0.5).unwrap();
+/// let out = Poisson.resolve(&p).unwrap();
+/// let pc = out.compression_impulse.unwrap();
+/// assert!((out.impulse.y - 1.5 * pc).abs() < 1e-15);
+/// ```
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Poisson;
+
+impl ImpactLaw for Poisson {
+    fn id(&self) -> LawId {
+        LawId::Poisson
+    }
+
+    #[inline]
+    fn resolve(&self, problem: &ContactProblem) -> Resolution {
+        let (path, slip_halt) = darboux_keller_path(problem);
+        let pf = (1.0 + problem.restitution()) * compression_end(&path);
+        Ok(finish(
+            problem,
+            LawId::Poisson,
+            &path,
+            pf,
+            LawDetail::DarbouxKeller {
+                slip_halt: slip_halt.filter(|&ps| ps < pf),
+            },
+            None,
+        ))
+    }
+}

@@ -1,0 +1,279 @@
+//! `smith`: Smith's 1991 correction factor η (paper A §4, eqs. 24–27).
+//!
+//! Whittaker's impulse is scaled by
+//!
+//! ```text
+//! η = (u⁺|u⁺| + u⁻|u⁻|) / ((u⁺)² + (u⁻)²) ∈ [−1, 1],     p_t = −μ η p_n,
+//! ```
+//!
+//! where `u` is the sliding (contact-point tangential) velocity before and after, and the
+//! normal impulse follows Newton's restitution, `p_n = −(1+e) v_n⁻ / (W_nn − μ η W_tn)`.
+//! η is signed, so it carries the friction direction (`η = sign(u⁻)` when the slip keeps
+//! its direction, Whittaker's rule). Paper A eq. 24 writes the centre velocity `v_x` while
+//! its text says sliding velocity; [`Smith::centre`] is that literal reading.
+//!
+//! The equation is implicit in η because `u⁺` depends on η. With `u⁺ = u⁻ + g·p` linear in
+//! the impulse (`g = (W_tt, W_tn)` for the slip; `(1/m, 0)` for a body's centre) and
+//! `D(η) = W_nn − μ η W_tn`, `Q(η) = u⁺ D` is linear in η, and each sign case is exact:
+//!
+//! * no reversal, `sign(u⁺) = sign(u⁻) = σ`: `η = σ`;
+//! * reversal: `η ((u⁻)² D² + Q²) = σ ((u⁻)² D² − Q²)`, a cubic in η (eq. 27 for the sphere),
+//!   whose roots in `[−1, 1]` are isolated between the critical points and bisected to the
+//!   last bit;
+//! * `u⁻ = 0`: `η = ±1` with `sign(u⁺) = η`, or the η that leaves `u⁺ = 0`.
+//!
+//! A root always exists when `D > 0` on `[−1, 1]`. When several do, the one with the
+//! largest `σ η` — the least correction of Whittaker's rule — is taken, and the count is
+//! reported in [`LawDetail::Smith`].
+
+use super::{finish, ImpactLaw};
+use crate::law::LawId;
+use crate::math::{quadratic_roots, sign, Vec2};
+use crate::planar::path::ImpulsePath;
+use crate::planar::{
+    Breakdown, BreakdownReason, ContactProblem, LawDetail, PhaseKind, Resolution, SlipDirection,
+    SmithReading,
+};
+
+/// Smith's law with a chosen reference velocity `u(p) = u⁻ + g·p`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Smith {
+    reading: SmithReading,
+    /// `(u⁻, g)` for the centre reading; `None` for the sliding velocity of the problem.
+    reference: Option<(f64, Vec2)>,
+}
+
+impl Smith {
+    /// The sliding-velocity reading (Smith 1991; the `smith` law id).
+    pub const SLIP: Smith = Smith {
+        reading: SmithReading::SlipVelocity,
+        reference: None,
+    };
+
+    /// The literal reading of paper A eq. 24 (`smith-centre`): η from the tangential
+    /// centre-of-mass velocity `u⁻` whose change per unit impulse is `gradient`
+    /// (`(1/m, 0)` for one body on a fixed plane; `(1/m_A + 1/m_B, 0)` for the relative
+    /// centre velocity of two bodies).
+    pub fn centre(u_minus: f64, gradient: Vec2) -> Smith {
+        Smith {
+            reading: SmithReading::CentreVelocity,
+            reference: Some((u_minus, gradient)),
+        }
+    }
+}
+
+impl Default for Smith {
+    fn default() -> Self {
+        Self::SLIP
+    }
+}
+
+/// Evaluate `p[0] + p[1] x + p[2] x² + p[3] x³`.
+#[inline]
+fn horner(p: &[f64; 4], x: f64) -> f64 {
+    ((p[3] * x + p[2]) * x + p[1]) * x + p[0]
+}
+
+/// Real roots of the cubic `p` in `[lo, hi]`, each to the last bit (ascending, deduplicated).
+fn cubic_roots_in(p: &[f64; 4], lo: f64, hi: f64) -> ([f64; 3], usize) {
+    let mut out = [0.0; 3];
+    let mut n = 0;
+    if p.iter().all(|&c| c == 0.0) {
+        return (out, 0);
+    }
+    let mut cuts = [lo, hi, hi, hi];
+    let mut ncuts = 1;
+    let [r1, r2] = quadratic_roots(3.0 * p[3], 2.0 * p[2], p[1]);
+    for r in [r1, r2] {
+        if r > lo && r < hi {
+            cuts[ncuts] = r;
+            ncuts += 1;
+        }
+    }
+    cuts[ncuts] = hi;
+    ncuts += 1;
+    cuts[..ncuts].sort_by(|x, y| x.total_cmp(y));
+    let push = |x: f64, out: &mut [f64; 3], n: &mut usize| {
+        if *n < 3 && (*n == 0 || out[*n - 1] != x) {
+            out[*n] = x;
+            *n += 1;
+        }
+    };
+    for w in cuts[..ncuts].windows(2) {
+        let (mut x0, mut x1) = (w[0], w[1]);
+        let (mut f0, f1) = (horner(p, x0), horner(p, x1));
+        if f0 == 0.0 {
+            push(x0, &mut out, &mut n);
+            continue;
+        }
+        if f1 == 0.0 || f0.signum() == f1.signum() {
+            continue;
+        }
+        loop {
+            let mid = 0.5 * (x0 + x1);
+            if mid <= x0 || mid >= x1 {
+                break;
+            }
+            let fm = horner(p, mid);
+            if fm == 0.0 {
+                x0 = mid;
+                x1 = mid;
+                break;
+            }
+            if fm.signum() == f0.signum() {
+                x0 = mid;
+                f0 = fm;
+            } else {
+                x1 = mid;
+            }
+        }
+        let root = if horner(p, x0).abs() <= horner(p, x1).abs() {
+            x0
+        } else {
+            x1
+        };
+        push(root, &mut out, &mut n);
+    }
+    if horner(p, hi) == 0.0 {
+        push(hi, &mut out, &mut n);
+    }
+    (out, n)
+}
+
+/// Product of two polynomials of degree ≤ 1 → degree ≤ 2 (coefficients ascending).
+#[inline]
+fn mul1(a: [f64; 2], b: [f64; 2]) -> [f64; 3] {
+    [a[0] * b[0], a[0] * b[1] + a[1] * b[0], a[1] * b[1]]
+}
+
+impl ImpactLaw for Smith {
+    fn id(&self) -> LawId {
+        match self.reading {
+            SmithReading::SlipVelocity => LawId::Smith,
+            SmithReading::CentreVelocity => LawId::SmithCentre,
+        }
+    }
+
+    fn resolve(&self, problem: &ContactProblem) -> Resolution {
+        let law = self.id();
+        let (a, b, c) = (problem.wtt(), problem.wtn(), problem.wnn());
+        let v = problem.velocity();
+        let mu = problem.friction();
+        let big_n = -(1.0 + problem.restitution()) * v.y;
+        let (u0, g) = self.reference.unwrap_or((v.x, Vec2::new(a, b)));
+        // D(η) = d[0] + d[1] η ;  Q(η) = u⁺ D = q[0] + q[1] η
+        let d = [c, -mu * b];
+        let q = [u0 * c + big_n * g.y, -mu * (b * u0 + big_n * g.x)];
+        let dval = |eta: f64| d[0] + d[1] * eta;
+        let qval = |eta: f64| q[0] + q[1] * eta;
+        let sigma = sign(u0);
+        let mut cands = [0.0f64; 6];
+        let mut nc = 0;
+        let mut stick_root = None;
+        if sigma != 0.0 {
+            if dval(sigma) > 0.0 && sigma * qval(sigma) >= 0.0 {
+                cands[nc] = sigma;
+                nc += 1;
+            }
+            let uu = u0 * u0;
+            let dd = mul1(d, d);
+            let qq = mul1(q, q);
+            // P(η) = η (U D² + Q²) − σ (U D² − Q²)
+            let aa = [uu * dd[0] + qq[0], uu * dd[1] + qq[1], uu * dd[2] + qq[2]];
+            let bb = [uu * dd[0] - qq[0], uu * dd[1] - qq[1], uu * dd[2] - qq[2]];
+            let poly = [
+                -sigma * bb[0],
+                aa[0] - sigma * bb[1],
+                aa[1] - sigma * bb[2],
+                aa[2],
+            ];
+            let (roots, nr) = cubic_roots_in(&poly, -1.0, 1.0);
+            for &eta in &roots[..nr] {
+                if dval(eta) > 0.0 && sigma * qval(eta) < 0.0 {
+                    cands[nc] = eta;
+                    nc += 1;
+                }
+            }
+        } else {
+            for eta in [1.0, -1.0] {
+                if dval(eta) > 0.0 && eta * qval(eta) > 0.0 {
+                    cands[nc] = eta;
+                    nc += 1;
+                }
+            }
+            let eta = if q[1] != 0.0 {
+                -q[0] / q[1]
+            } else if q[0] == 0.0 {
+                0.0
+            } else {
+                f64::NAN
+            };
+            if (-1.0..=1.0).contains(&eta) && dval(eta) > 0.0 {
+                cands[nc] = eta;
+                nc += 1;
+                stick_root = Some(eta);
+            }
+        }
+        if nc == 0 {
+            // Distinguish a negative normal impulse from a missing root.
+            let reason = if dval(1.0) <= 0.0 || dval(-1.0) <= 0.0 {
+                BreakdownReason::NegativeNormalImpulse {
+                    denominator: dval(1.0).min(dval(-1.0)),
+                }
+            } else {
+                BreakdownReason::NoEtaRoot
+            };
+            return Err(Breakdown { law, reason });
+        }
+        let eta = match stick_root {
+            Some(eta) => eta,
+            None => cands[..nc]
+                .iter()
+                .copied()
+                .fold(f64::NEG_INFINITY, |best, x| {
+                    if sigma * x > sigma * best || best == f64::NEG_INFINITY {
+                        x
+                    } else {
+                        best
+                    }
+                }),
+        };
+        let pf = big_n / dval(eta);
+        let ratio = -mu * eta;
+        let dir = if eta != 0.0 && mu > 0.0 {
+            SlipDirection::of(eta)
+        } else {
+            SlipDirection::of(v.x)
+        };
+        let mut path = ImpulsePath::new(problem);
+        path.push(PhaseKind::Slip(dir), ratio, f64::INFINITY);
+        Ok(finish(
+            problem,
+            law,
+            &path,
+            pf,
+            LawDetail::Smith {
+                eta,
+                roots: nc,
+                reading: self.reading,
+            },
+            None,
+        ))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn cubic_roots_found_to_the_last_bit() {
+        // (x − 0.5)(x + 0.25)(x − 0.9) = x³ − 1.15x² + 0.2x + 0.1125
+        let p = [0.1125, 0.2, -1.15, 1.0];
+        let (r, n) = cubic_roots_in(&p, -1.0, 1.0);
+        assert_eq!(n, 3);
+        for (x, y) in r.iter().zip([-0.25, 0.5, 0.9]) {
+            assert!((x - y).abs() < 1e-15, "{x} vs {y}");
+        }
+    }
+}

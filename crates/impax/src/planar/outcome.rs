@@ -1,0 +1,374 @@
+//! What every planar law returns: the impulse, velocities, work split, phases and a verdict.
+
+use crate::law::LawId;
+use crate::math::Vec2;
+use std::fmt;
+
+/// Direction of tangential slip, `sign(v_t)`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum SlipDirection {
+    /// `v_t > 0`: friction acts along `−t`.
+    Positive,
+    /// `v_t < 0`: friction acts along `+t`.
+    Negative,
+    /// `v_t = 0` at the start of an algebraic law: no friction direction is defined, the law
+    /// applies no friction.
+    None,
+}
+
+impl SlipDirection {
+    /// Direction of `v_t`.
+    #[inline]
+    pub fn of(vt: f64) -> Self {
+        if vt > 0.0 {
+            Self::Positive
+        } else if vt < 0.0 {
+            Self::Negative
+        } else {
+            Self::None
+        }
+    }
+    /// `+1`, `−1` or `0`.
+    #[inline]
+    pub fn sign(self) -> f64 {
+        match self {
+            Self::Positive => 1.0,
+            Self::Negative => -1.0,
+            Self::None => 0.0,
+        }
+    }
+}
+
+/// A regime of the contact during the impact.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum PhaseKind {
+    /// Slip with Coulomb friction `dp_t = −μ ŝ dp_n`.
+    Slip(SlipDirection),
+    /// Stick: `v_t = 0` held by a friction ratio `|dp_t/dp_n| ≤ μ`.
+    Stick,
+}
+
+impl PhaseKind {
+    /// Short label: `slip+`, `slip-`, `no-slip` or `stick`.
+    pub fn label(self) -> &'static str {
+        match self {
+            PhaseKind::Slip(SlipDirection::Positive) => "slip+",
+            PhaseKind::Slip(SlipDirection::Negative) => "slip-",
+            PhaseKind::Slip(SlipDirection::None) => "no-slip",
+            PhaseKind::Stick => "stick",
+        }
+    }
+}
+
+impl fmt::Display for PhaseKind {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.label())
+    }
+}
+
+/// One phase of the impact and the normal impulse `p_n` at which it ends.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Phase {
+    /// The regime.
+    pub kind: PhaseKind,
+    /// Normal impulse at the end of the phase.
+    pub ends_at: f64,
+}
+
+/// The phase sequence of one impact (at most [`Phases::CAPACITY`] phases; no allocation).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Phases {
+    items: [Phase; Phases::CAPACITY],
+    len: usize,
+}
+
+impl Phases {
+    /// The most phases a planar law produces (slip, then stick or reversed slip).
+    pub const CAPACITY: usize = 3;
+
+    /// No phases.
+    pub const fn new() -> Self {
+        Self {
+            items: [Phase {
+                kind: PhaseKind::Stick,
+                ends_at: 0.0,
+            }; Self::CAPACITY],
+            len: 0,
+        }
+    }
+
+    /// Append a phase; if it has the same kind as the last one, extend that one instead.
+    ///
+    /// # Panics
+    /// Never for the planar laws, which produce at most [`Phases::CAPACITY`] phases; a
+    /// programming error otherwise.
+    pub fn push(&mut self, kind: PhaseKind, ends_at: f64) {
+        if self.len > 0 && self.items[self.len - 1].kind == kind {
+            self.items[self.len - 1].ends_at = ends_at;
+            return;
+        }
+        assert!(self.len < Self::CAPACITY, "too many phases");
+        self.items[self.len] = Phase { kind, ends_at };
+        self.len += 1;
+    }
+
+    /// The phases as a slice.
+    pub fn as_slice(&self) -> &[Phase] {
+        &self.items[..self.len]
+    }
+
+    /// Number of phases.
+    pub fn len(&self) -> usize {
+        self.len
+    }
+
+    /// Whether there are no phases.
+    pub fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+
+    /// Labels joined by ` → `, e.g. `slip+ → stick`.
+    pub fn summary(&self) -> String {
+        let labels: Vec<&str> = self.as_slice().iter().map(|p| p.kind.label()).collect();
+        labels.join(" → ")
+    }
+}
+
+impl Default for Phases {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// The energy audit of an impact: `ΔT = W_c + W_r + W_t` (theory §1).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct WorkSplit {
+    /// Normal work during compression `W_c = ∫₀^{p_c} v_n dp_n ≤ 0`.
+    pub compression: f64,
+    /// Normal work during restitution `W_r = ∫_{p_c}^{p_f} v_n dp_n`.
+    pub restitution: f64,
+    /// Friction work `W_t = ∫ v_t dp_t`.
+    pub friction: f64,
+}
+
+impl WorkSplit {
+    /// Total normal work `W_n = W_c + W_r`.
+    pub fn normal(&self) -> f64 {
+        self.compression + self.restitution
+    }
+    /// `W_n + W_t`, which equals `ΔT`.
+    pub fn total(&self) -> f64 {
+        self.normal() + self.friction
+    }
+}
+
+/// The overall judgement of a law's result.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Verdict {
+    /// No energy gained and the law's assumptions hold.
+    Consistent,
+    /// The kinetic energy rose: Kane's paradox.
+    EnergyGained,
+    /// The law's own assumption is contradicted by its result (see [`Inconsistency`]).
+    InconsistentAssumption,
+}
+
+impl Verdict {
+    /// Stable id used in JSON: `consistent`, `energy-gained`, `inconsistent-assumption`.
+    pub fn id(self) -> &'static str {
+        match self {
+            Verdict::Consistent => "consistent",
+            Verdict::EnergyGained => "energy-gained",
+            Verdict::InconsistentAssumption => "inconsistent-assumption",
+        }
+    }
+}
+
+/// An assumption of a law that its own result contradicts.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Inconsistency {
+    /// Friction was held against the initial slip but the slip reversed during the impact
+    /// (Whittaker, Smith at `η = ±1`): friction did positive work in the end part.
+    SlipReversed {
+        /// Tangential contact velocity after the impact.
+        slip_after: f64,
+    },
+    /// The two-phase scheme assumed the slip reverses after it halts, but the final slip
+    /// has the initial direction (paper A §3: `v_Px⁺ > 0`).
+    ReversalDidNotHappen {
+        /// Tangential contact velocity after the impact.
+        slip_after: f64,
+    },
+}
+
+impl Inconsistency {
+    /// Stable id: `slip-reversed` or `reversal-did-not-happen`.
+    pub fn id(&self) -> &'static str {
+        match self {
+            Inconsistency::SlipReversed { .. } => "slip-reversed",
+            Inconsistency::ReversalDidNotHappen { .. } => "reversal-did-not-happen",
+        }
+    }
+}
+
+impl fmt::Display for Inconsistency {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Inconsistency::SlipReversed { slip_after } => write!(
+                f,
+                "friction kept against the initial slip, but the slip reversed (v_t+ = {slip_after:.6})"
+            ),
+            Inconsistency::ReversalDidNotHappen { slip_after } => write!(
+                f,
+                "assumed the slip reverses after it halts, but v_t+ = {slip_after:.6} keeps the initial direction"
+            ),
+        }
+    }
+}
+
+/// Which velocity Smith's correction factor `η` is built from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum SmithReading {
+    /// The sliding (contact-point tangential) velocity, as Smith 1991 and paper A's text.
+    SlipVelocity,
+    /// The centre-of-mass tangential velocity, the literal reading of paper A eq. 24.
+    CentreVelocity,
+}
+
+/// Law-specific numbers worth reporting.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum LawDetail {
+    /// Nothing beyond the common record.
+    None,
+    /// Two-phase: the normal impulse at which the friction direction was switched
+    /// (`None` when the slip does not halt and the scheme reduces to Whittaker's).
+    TwoPhase {
+        /// `I'_y` of paper A eq. 21.
+        switch_impulse: Option<f64>,
+    },
+    /// Smith: the correction factor and how it was chosen.
+    Smith {
+        /// `η` in `[−1, 1]` (signed: it carries the friction direction).
+        eta: f64,
+        /// Number of admissible roots of the η equation in `[−1, 1]`.
+        roots: usize,
+        /// The reading of eq. 24 used.
+        reading: SmithReading,
+    },
+    /// Brach: the sticking ratio and whether it was capped to the cone.
+    Brach {
+        /// `μ0 = p_t/p_n` of the impulse that leaves no tangential velocity.
+        ratio: f64,
+        /// Whether `|μ0| > μ` so that `μ sign(μ0)` was used.
+        capped: bool,
+    },
+    /// Darboux–Keller integration: the normal impulse at which slip halted, if it did.
+    DarbouxKeller {
+        /// `p_s`, the end of the initial slip.
+        slip_halt: Option<f64>,
+    },
+}
+
+/// The result of one impact law on one [`ContactProblem`](super::ContactProblem).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Outcome {
+    /// Which law produced it.
+    pub law: LawId,
+    /// Impulse on body A, `(p_t, p_n)`.
+    pub impulse: Vec2,
+    /// Contact velocity after, `v⁺ = v⁻ + W p`.
+    pub velocity_after: Vec2,
+    /// Normal impulse at the end of compression (`v_n = 0`), if reached on the law's path.
+    pub compression_impulse: Option<f64>,
+    /// Work split along the law's impulse path.
+    pub work: WorkSplit,
+    /// `ΔT = v⁻·p + ½ pᵀ W p` (exact for any impulse; equals `work.total()`).
+    pub energy_change: f64,
+    /// Phase sequence.
+    pub phases: Phases,
+    /// Headline verdict: energy gained takes precedence over an inconsistency.
+    pub verdict: Verdict,
+    /// The law's contradicted assumption, if any (reported even when energy is gained).
+    pub inconsistency: Option<Inconsistency>,
+    /// Law-specific detail.
+    pub detail: LawDetail,
+}
+
+/// Why a law produced no admissible result.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum BreakdownReason {
+    /// The law's normal impulse would be negative (or unbounded): the denominator of
+    /// `p_n = −(1+e) v_n⁻ / denominator` is not positive.
+    NegativeNormalImpulse {
+        /// The denominator, e.g. `W_nn − μ s0 W_tn` for Whittaker.
+        denominator: f64,
+    },
+    /// The two-phase scheme finds no split: the switch would come after the impact ends.
+    NoConsistentSplit {
+        /// The switch impulse `p'`.
+        switch_impulse: f64,
+        /// The total normal impulse the second phase would need.
+        total_impulse: f64,
+    },
+    /// Smith's equation for `η` has no admissible root.
+    NoEtaRoot,
+    /// Brach's sticking impulse has a negative normal component.
+    NegativeStickingImpulse {
+        /// Its normal component.
+        normal_impulse: f64,
+    },
+}
+
+impl BreakdownReason {
+    /// Stable id.
+    pub fn id(&self) -> &'static str {
+        match self {
+            BreakdownReason::NegativeNormalImpulse { .. } => "negative-normal-impulse",
+            BreakdownReason::NoConsistentSplit { .. } => "no-consistent-split",
+            BreakdownReason::NoEtaRoot => "no-eta-root",
+            BreakdownReason::NegativeStickingImpulse { .. } => "negative-sticking-impulse",
+        }
+    }
+}
+
+impl fmt::Display for BreakdownReason {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            BreakdownReason::NegativeNormalImpulse { denominator } => write!(
+                f,
+                "the rule needs a negative normal impulse (denominator {denominator:.6} ≤ 0)"
+            ),
+            BreakdownReason::NoConsistentSplit {
+                switch_impulse,
+                total_impulse,
+            } => write!(
+                f,
+                "no consistent two-phase split (switch at p_n = {switch_impulse:.6}, total {total_impulse:.6})"
+            ),
+            BreakdownReason::NoEtaRoot => f.write_str("Smith's η equation has no admissible root"),
+            BreakdownReason::NegativeStickingImpulse { normal_impulse } => write!(
+                f,
+                "the sticking impulse has a negative normal component ({normal_impulse:.6})"
+            ),
+        }
+    }
+}
+
+/// A law that cannot produce a physical result for this problem. Reported as such, never
+/// as numbers.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Breakdown {
+    /// Which law broke down.
+    pub law: LawId,
+    /// Why.
+    pub reason: BreakdownReason,
+}
+
+impl fmt::Display for Breakdown {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}: {}", self.law, self.reason)
+    }
+}
+
+/// What a law returns: an outcome or a breakdown.
+pub type Resolution = Result<Outcome, Breakdown>;

@@ -1,0 +1,229 @@
+//! Piecewise-linear impulse paths in contact space.
+//!
+//! Every planar law, algebraic or incremental, moves the impulse along a polyline in the
+//! `(p_t, p_n)` plane parameterised by the normal impulse `p_n`: on each segment the friction
+//! ratio `k = dp_t/dp_n` is constant, so the contact velocity
+//! `v(p_n) = v_start + (W_tt k + W_tn, W_tn k + W_nn) (p_n − p_start)` is linear, the normal
+//! work `∫ v_n dp_n` quadratic, and every event (halt of slip, end of compression, each
+//! termination rule) is the root of a linear or quadratic equation: exact, with no tolerance.
+
+use super::outcome::{PhaseKind, Phases};
+use super::ContactProblem;
+use crate::math::Vec2;
+
+/// One straight piece of an impulse path.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Segment {
+    /// Regime on this piece.
+    pub kind: PhaseKind,
+    /// Friction ratio `k = dp_t/dp_n`.
+    pub ratio: f64,
+    /// Normal impulse at the start.
+    pub start: f64,
+    /// Normal impulse at the end (`f64::INFINITY` for the last, open piece).
+    pub end: f64,
+    /// Contact velocity at the start.
+    pub v_start: Vec2,
+    /// Tangential impulse at the start.
+    pub pt_start: f64,
+    /// `dv/dp_n` on this piece.
+    pub slope: Vec2,
+}
+
+impl Segment {
+    #[inline]
+    fn velocity_at(&self, pn: f64) -> Vec2 {
+        self.v_start + self.slope * (pn - self.start)
+    }
+    /// `∫ v_n dp_n` from the segment start to `pn`.
+    #[inline]
+    fn normal_work_to(&self, pn: f64) -> f64 {
+        let x = pn - self.start;
+        x * (self.v_start.y + 0.5 * self.slope.y * x)
+    }
+    /// `∫ v_t dp_t = k ∫ v_t dp_n` from the segment start to `pn`.
+    #[inline]
+    fn friction_work_to(&self, pn: f64) -> f64 {
+        let x = pn - self.start;
+        self.ratio * x * (self.v_start.x + 0.5 * self.slope.x * x)
+    }
+}
+
+/// A polyline impulse path of at most [`ImpulsePath::CAPACITY`] segments, built in order.
+#[derive(Debug, Clone, Copy)]
+pub struct ImpulsePath {
+    a: f64,
+    b: f64,
+    c: f64,
+    segs: [Segment; ImpulsePath::CAPACITY],
+    len: usize,
+}
+
+impl ImpulsePath {
+    /// Most segments a planar law needs.
+    pub const CAPACITY: usize = 3;
+
+    /// An empty path starting at `p = 0`, `v = v⁻`.
+    pub fn new(problem: &ContactProblem) -> Self {
+        let v = problem.velocity();
+        let blank = Segment {
+            kind: PhaseKind::Stick,
+            ratio: 0.0,
+            start: 0.0,
+            end: 0.0,
+            v_start: v,
+            pt_start: 0.0,
+            slope: Vec2::zeros(),
+        };
+        Self {
+            a: problem.wtt(),
+            b: problem.wtn(),
+            c: problem.wnn(),
+            segs: [blank; Self::CAPACITY],
+            len: 0,
+        }
+    }
+
+    /// `dv/dp_n` for friction ratio `k`: `W (k, 1)`.
+    #[inline]
+    pub fn slope_for(&self, ratio: f64) -> Vec2 {
+        Vec2::new(self.a * ratio + self.b, self.b * ratio + self.c)
+    }
+
+    /// Append a segment with ratio `k` ending at normal impulse `end` (≥ the current end).
+    pub fn push(&mut self, kind: PhaseKind, ratio: f64, end: f64) {
+        let (start, v_start, pt_start) = if self.len == 0 {
+            (0.0, self.segs[0].v_start, 0.0)
+        } else {
+            let last = &self.segs[self.len - 1];
+            (
+                last.end,
+                last.velocity_at(last.end),
+                last.pt_start + last.ratio * (last.end - last.start),
+            )
+        };
+        assert!(self.len < Self::CAPACITY, "impulse path capacity exceeded");
+        self.segs[self.len] = Segment {
+            kind,
+            ratio,
+            start,
+            end,
+            v_start,
+            pt_start,
+            slope: self.slope_for(ratio),
+        };
+        self.len += 1;
+    }
+
+    /// Segments so far.
+    pub fn segments(&self) -> &[Segment] {
+        &self.segs[..self.len]
+    }
+
+    /// Index of the segment containing `pn` (the last one if beyond).
+    #[inline]
+    fn index_of(&self, pn: f64) -> usize {
+        let mut i = 0;
+        while i + 1 < self.len && pn > self.segs[i].end {
+            i += 1;
+        }
+        i
+    }
+
+    /// Contact velocity at normal impulse `pn`.
+    pub fn velocity_at(&self, pn: f64) -> Vec2 {
+        self.segs[self.index_of(pn)].velocity_at(pn)
+    }
+
+    /// Impulse `(p_t, p_n)` at normal impulse `pn`.
+    pub fn impulse_at(&self, pn: f64) -> Vec2 {
+        let s = &self.segs[self.index_of(pn)];
+        Vec2::new(s.pt_start + s.ratio * (pn - s.start), pn)
+    }
+
+    /// Normal work `∫₀^{pn} v_n dp_n`.
+    pub fn normal_work_to(&self, pn: f64) -> f64 {
+        let mut w = 0.0;
+        for s in self.segments() {
+            if pn <= s.end {
+                return w + s.normal_work_to(pn);
+            }
+            w += s.normal_work_to(s.end);
+        }
+        w
+    }
+
+    /// Friction work `∫₀^{pn} v_t dp_t`.
+    pub fn friction_work_to(&self, pn: f64) -> f64 {
+        let mut w = 0.0;
+        for s in self.segments() {
+            if pn <= s.end {
+                return w + s.friction_work_to(pn);
+            }
+            w += s.friction_work_to(s.end);
+        }
+        w
+    }
+
+    /// First normal impulse at which `v_n` reaches `target` from below, if the path does
+    /// (used for the end of compression, `target = 0`, and Newton's rule, `−e v_n⁻`).
+    pub fn first_normal_velocity(&self, target: f64) -> Option<f64> {
+        for s in self.segments() {
+            let gap = target - s.v_start.y;
+            if gap <= 0.0 {
+                return Some(s.start);
+            }
+            if s.slope.y > 0.0 {
+                let x = gap / s.slope.y;
+                if s.start + x <= s.end {
+                    return Some(s.start + x);
+                }
+            }
+        }
+        None
+    }
+
+    /// Normal impulse `P ≥ from` at which the normal work since `from` reaches `work ≥ 0`,
+    /// assuming `v_n ≥ 0` from `from` on (true after compression).
+    pub fn normal_work_reached(&self, from: f64, work: f64) -> Option<f64> {
+        let mut remaining = work;
+        for s in self.segments() {
+            if s.end < from {
+                continue;
+            }
+            let start = s.start.max(from);
+            let v0 = s.velocity_at(start).y;
+            let len = s.end - start;
+            let seg_work = if len.is_finite() {
+                len * (v0 + 0.5 * s.slope.y * len)
+            } else {
+                f64::INFINITY
+            };
+            if remaining <= seg_work {
+                // Solve v0 x + ½ k x² = remaining with the cancellation-free root.
+                let disc = (v0 * v0 + 2.0 * s.slope.y * remaining).max(0.0);
+                let denom = v0 + disc.sqrt();
+                let x = if denom > 0.0 {
+                    2.0 * remaining / denom
+                } else {
+                    0.0
+                };
+                return Some(start + x.min(len));
+            }
+            remaining -= seg_work;
+        }
+        None
+    }
+
+    /// The phases of the path truncated at `pn`.
+    pub fn phases_to(&self, pn: f64) -> Phases {
+        let mut phases = Phases::new();
+        for s in self.segments() {
+            if s.start >= pn && !phases.is_empty() {
+                break;
+            }
+            phases.push(s.kind, s.end.min(pn));
+        }
+        phases
+    }
+}

@@ -1,0 +1,211 @@
+//! The planar contact-space impact problem `(W, v⁻, μ, e)`.
+
+use crate::error::{finite, Error, Result};
+use crate::math::{Mat2, Vec2};
+
+/// A validated planar impact problem in contact space.
+///
+/// During an impact the configuration is frozen and the contact velocity is affine in the
+/// impulse `p` applied to body A (theory §1):
+///
+/// ```text
+/// v(p) = v⁻ + W p,     W = J M⁻¹ Jᵀ = [[a, b], [b, c]],   a = W_tt, b = W_tn, c = W_nn.
+/// ```
+///
+/// Conventions: tangent first, normal last; the normal points out of the struck surface;
+/// approach means `v_n⁻ < 0`; the impulse is the one on body A and `p_n ≥ 0`.
+///
+/// ```
+/// use impax::planar::ContactProblem;
+/// use impax::math::{Mat2, Vec2};
+/// // The seed's sphere (m = 1): W = diag(7/2, 1), α = 30°, v0 = 1, γ = 0.
+/// let a = 30f64.to_radians();
+/// let p = ContactProblem::new(Mat2::new(3.5, 0.0, 0.0, 1.0), Vec2::new(a.sin(), -a.cos()), 0.4, 0.7)
+///     .unwrap();
+/// assert_eq!(p.wtt(), 3.5);
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ContactProblem {
+    a: f64,
+    b: f64,
+    c: f64,
+    v: Vec2,
+    mu: f64,
+    e: f64,
+}
+
+/// Relative tolerance on the asymmetry of `W` accepted as round-off.
+const SYMMETRY_TOL: f64 = 1e-12;
+
+impl ContactProblem {
+    /// Validate and build a problem.
+    ///
+    /// Errors (each names its field): a non-finite entry; `W` not symmetric (beyond round-off)
+    /// or not positive definite; `v_n ≥ 0`; `μ < 0`; `e ∉ [0, 1]`.
+    pub fn new(w: Mat2, v: Vec2, friction: f64, restitution: f64) -> Result<Self> {
+        for (i, j, name) in [
+            (0, 0, "w[t,t]"),
+            (0, 1, "w[t,n]"),
+            (1, 0, "w[n,t]"),
+            (1, 1, "w[n,n]"),
+        ] {
+            finite(name, w[(i, j)])?;
+        }
+        finite("v[t]", v.x)?;
+        finite("v[n]", v.y)?;
+        finite("friction", friction)?;
+        finite("restitution", restitution)?;
+        let (a, c) = (w[(0, 0)], w[(1, 1)]);
+        let (upper, lower) = (w[(0, 1)], w[(1, 0)]);
+        let scale = a.abs().max(c.abs()).max(upper.abs()).max(f64::MIN_POSITIVE);
+        if (upper - lower).abs() > SYMMETRY_TOL * scale {
+            return Err(Error::NotSymmetric {
+                field: "w".into(),
+                upper,
+                lower,
+            });
+        }
+        let b = 0.5 * (upper + lower);
+        if a <= 0.0 {
+            return Err(Error::NotPositiveDefinite {
+                field: "w".into(),
+                reason: format!("W_tt = {a} is not positive"),
+            });
+        }
+        if c <= 0.0 {
+            return Err(Error::NotPositiveDefinite {
+                field: "w".into(),
+                reason: format!("W_nn = {c} is not positive"),
+            });
+        }
+        let det = a * c - b * b;
+        if det <= 0.0 || det <= 1e-14 * a * c {
+            return Err(Error::NotPositiveDefinite {
+                field: "w".into(),
+                reason: format!("det W = {det} is not positive (W_tt W_nn − W_tn² must be > 0)"),
+            });
+        }
+        if v.y >= 0.0 {
+            return Err(Error::NotApproaching {
+                field: "v".into(),
+                value: v.y,
+            });
+        }
+        if friction < 0.0 {
+            return Err(Error::OutOfRange {
+                field: "friction".into(),
+                value: friction,
+                reason: "the friction coefficient must be ≥ 0".into(),
+            });
+        }
+        if !(0.0..=1.0).contains(&restitution) {
+            return Err(Error::OutOfRange {
+                field: "restitution".into(),
+                value: restitution,
+                reason: "the coefficient of restitution must be in [0, 1]".into(),
+            });
+        }
+        Ok(Self {
+            a,
+            b,
+            c,
+            v,
+            mu: friction,
+            e: restitution,
+        })
+    }
+
+    /// Build from the three independent entries `(W_tt, W_tn, W_nn)` and `(v_t, v_n)`.
+    pub fn from_entries(
+        wtt: f64,
+        wtn: f64,
+        wnn: f64,
+        vt: f64,
+        vn: f64,
+        friction: f64,
+        restitution: f64,
+    ) -> Result<Self> {
+        Self::new(
+            Mat2::new(wtt, wtn, wtn, wnn),
+            Vec2::new(vt, vn),
+            friction,
+            restitution,
+        )
+    }
+
+    /// `W_tt` (theory's `a`).
+    #[inline]
+    pub fn wtt(&self) -> f64 {
+        self.a
+    }
+    /// `W_tn` (theory's `b`).
+    #[inline]
+    pub fn wtn(&self) -> f64 {
+        self.b
+    }
+    /// `W_nn` (theory's `c`).
+    #[inline]
+    pub fn wnn(&self) -> f64 {
+        self.c
+    }
+    /// The matrix `W`.
+    pub fn w(&self) -> Mat2 {
+        Mat2::new(self.a, self.b, self.b, self.c)
+    }
+    /// Pre-impact contact velocity `(v_t⁻, v_n⁻)`.
+    #[inline]
+    pub fn velocity(&self) -> Vec2 {
+        self.v
+    }
+    /// Coulomb friction coefficient `μ`.
+    #[inline]
+    pub fn friction(&self) -> f64 {
+        self.mu
+    }
+    /// Coefficient of restitution `e`.
+    #[inline]
+    pub fn restitution(&self) -> f64 {
+        self.e
+    }
+
+    /// Contact velocity after an impulse: `v⁻ + W p`.
+    #[inline]
+    pub fn velocity_after(&self, p: Vec2) -> Vec2 {
+        Vec2::new(
+            self.v.x + self.a * p.x + self.b * p.y,
+            self.v.y + self.b * p.x + self.c * p.y,
+        )
+    }
+
+    /// Exact kinetic-energy change of any impulse: `ΔT = v⁻·p + ½ pᵀ W p = ½ (v⁻ + v⁺)·p`.
+    #[inline]
+    pub fn energy_change(&self, p: Vec2) -> f64 {
+        let wp = Vec2::new(self.a * p.x + self.b * p.y, self.b * p.x + self.c * p.y);
+        self.v.dot(&p) + 0.5 * p.dot(&wp)
+    }
+
+    /// Contact-space kinetic energy of the approach, `½ v⁻ᵀ W⁻¹ v⁻`: the most energy any
+    /// impulse can remove (reached by the impulse that stops the contact point). Used as
+    /// the scale for "energy gained" decisions.
+    #[inline]
+    pub fn approach_energy(&self) -> f64 {
+        let det = self.a * self.c - self.b * self.b;
+        let (vt, vn) = (self.v.x, self.v.y);
+        0.5 * (self.c * vt * vt - 2.0 * self.b * vt * vn + self.a * vn * vn) / det
+    }
+
+    /// The same problem with the tangent reversed (`t → −t`): `W_tn → −W_tn`, `v_t → −v_t`.
+    pub fn mirrored(&self) -> Self {
+        Self {
+            b: -self.b,
+            v: Vec2::new(-self.v.x, self.v.y),
+            ..*self
+        }
+    }
+
+    /// The same problem with another friction coefficient and restitution (unchecked
+    /// ranges are re-validated).
+    pub fn with_coefficients(&self, friction: f64, restitution: f64) -> Result<Self> {
+        Self::new(self.w(), self.v, friction, restitution)
+    }
+}
