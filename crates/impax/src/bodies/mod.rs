@@ -1,1 +1,21 @@
-//! Planar bodies.
+//! Planar bodies: from a body's state to the contact-space problem `(W, v⁻)` and from the
+//! impulse back to body velocities, with the energy split into translational and rotational
+//! parts (paper A §5).
+//!
+//! * [`RigidBody2`]: any rigid body given mass, central moment of inertia and the contact
+//!   point relative to the centre of mass (in the contact frame);
+//! * shapes that build one: [`sphere`] and [`disc`], [`rod`], [`ellipse`];
+//! * [`PlanarImpact`]: one body against a fixed surface, or two free bodies
+//!   (`W = W_A + W_B`).
+
+mod ellipse;
+mod impact;
+mod rigid;
+mod rod;
+mod sphere;
+
+pub use ellipse::ellipse;
+pub use impact::{BodyOutcome, EnergyParts, PlanarImpact};
+pub use rigid::{BodyState2, RigidBody2, Side};
+pub use rod::rod;
+pub use sphere::{disc, sphere, spin_state};
