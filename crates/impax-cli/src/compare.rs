@@ -1,0 +1,158 @@
+//! `impax compare`: every law side by side on one body impact.
+
+use crate::cli::CompareArgs;
+use crate::fmt::{signed, Table};
+use crate::input::{CliError, CliResult};
+use crate::json;
+use crate::scenario::{self, Scenario};
+use impax::planar::Verdict;
+use serde_json::json;
+
+pub fn run(args: &CompareArgs, out: &mut Vec<u8>) -> CliResult<()> {
+    let sc = scenario::load(args)?;
+    let problem = sc.impact.problem(sc.friction, sc.restitution)?;
+    let results: Vec<_> = sc
+        .laws
+        .iter()
+        .map(|&law| (law, sc.impact.resolve(law, &problem)))
+        .collect();
+    let text = if args.json {
+        let two = sc.impact.other.is_some();
+        let entries: Vec<_> = results
+            .iter()
+            .map(|(_, r)| match r {
+                Ok(b) => json::body_entry(b, sc.t0, two),
+                Err(b) => serde_json::Value::Object(json::breakdown_fields(
+                    b,
+                    "contact_velocity_after",
+                    true,
+                )),
+            })
+            .collect();
+        let before = sc.impact.energy_before();
+        let doc = json!({
+            "scenario": sc.description,
+            "problem": json::problem(&problem),
+            "energy_before": before.total(),
+            "t0": sc.t0,
+            "results": entries,
+        });
+        serde_json::to_string_pretty(&doc).map_err(CliError::failure)? + "\n"
+    } else {
+        table(&sc, &problem, &results)
+    };
+    out.extend_from_slice(text.as_bytes());
+    Ok(())
+}
+
+fn table(
+    sc: &Scenario,
+    problem: &impax::planar::ContactProblem,
+    results: &[(
+        impax::LawId,
+        Result<impax::bodies::BodyOutcome, impax::planar::Breakdown>,
+    )],
+) -> String {
+    let s = sc.scale;
+    let (hx, hy, hw) = if s.normalised {
+        ("vx+/v0", "vy+/v0", "ω+r/v0")
+    } else {
+        ("vx+", "vy+", "ω+")
+    };
+    let mut t = Table::new(&[
+        ("law", false),
+        (hx, true),
+        (hy, true),
+        (hw, true),
+        ("vt+", true),
+        ("ΔT/T0", true),
+        ("phases", false),
+        ("verdict", false),
+    ]);
+    let mut notes = Vec::new();
+    for (law, r) in results {
+        match r {
+            Ok(b) => {
+                let o = &b.outcome;
+                let v = b.body_after.velocity / s.speed;
+                let w = b.body_after.omega * s.length / s.speed;
+                let verdict = match o.verdict {
+                    Verdict::Consistent => "consistent".to_string(),
+                    Verdict::EnergyGained => "ENERGY GAINED (Kane's paradox)".to_string(),
+                    Verdict::InconsistentAssumption => "inconsistent assumption".to_string(),
+                };
+                if let Some(i) = o.inconsistency {
+                    notes.push(format!("{law}: {i}"));
+                }
+                let phases: Vec<String> = o
+                    .phases
+                    .as_slice()
+                    .iter()
+                    .map(|p| format!("{}@{:.4}", p.kind.label(), p.ends_at))
+                    .collect();
+                t.row(vec![
+                    law.to_string(),
+                    signed(v.x, 5),
+                    signed(v.y, 5),
+                    signed(w, 5),
+                    signed(o.velocity_after.x / s.speed, 5),
+                    signed(o.energy_change / sc.t0, 5),
+                    phases.join(" → "),
+                    if o.inconsistency.is_some() && o.verdict == Verdict::EnergyGained {
+                        format!("{verdict}; inconsistent assumption")
+                    } else {
+                        verdict
+                    },
+                ]);
+            }
+            Err(b) => {
+                let dash = "—".to_string();
+                t.row(vec![
+                    law.to_string(),
+                    dash.clone(),
+                    dash.clone(),
+                    dash.clone(),
+                    dash.clone(),
+                    dash.clone(),
+                    dash,
+                    "BREAKDOWN".to_string(),
+                ]);
+                notes.push(format!("{law}: breakdown: {}", b.reason));
+            }
+        }
+    }
+    let v = problem.velocity();
+    let mut text = format!(
+        "impax compare — {}, μ = {}, e = {}\ncontact space: W = [[{}, {}], [{}, {}]], v⁻ = ({}, {}); T0 = {}\n\n",
+        sc.description,
+        sc.friction,
+        sc.restitution,
+        g(problem.wtt()),
+        g(problem.wtn()),
+        g(problem.wtn()),
+        g(problem.wnn()),
+        g(v.x),
+        g(v.y),
+        g(sc.t0),
+    );
+    text.push_str(&t.render());
+    text.push_str("\nphases: regime@normal impulse at its end; vt+: slip velocity after");
+    if s.normalised {
+        text.push_str(" (/v0)");
+    }
+    text.push('\n');
+    for n in notes {
+        text.push_str(&format!("note — {n}\n"));
+    }
+    text
+}
+
+/// Short general format for header numbers.
+fn g(x: f64) -> String {
+    let r = (x * 1e6).round() / 1e6;
+    if r == 0.0 {
+        "0".into()
+    } else {
+        format!("{r}")
+    }
+}

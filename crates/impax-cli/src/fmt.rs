@@ -1,0 +1,74 @@
+//! Text formatting: numbers and aligned tables.
+
+/// Fixed-point with sign, `-0` shown as `0`.
+pub fn signed(x: f64, decimals: usize) -> String {
+    let s = format!("{:+.*}", decimals, x);
+    let zero = format!("{:+.*}", decimals, 0.0);
+    let neg_zero = format!("-{}", &zero[1..]);
+    if s == neg_zero {
+        zero
+    } else {
+        s
+    }
+}
+
+/// A plain table with left-aligned text columns and right-aligned numeric columns.
+pub struct Table {
+    header: Vec<String>,
+    right: Vec<bool>,
+    rows: Vec<Vec<String>>,
+}
+
+impl Table {
+    pub fn new(columns: &[(&str, bool)]) -> Self {
+        Self {
+            header: columns.iter().map(|c| c.0.to_string()).collect(),
+            right: columns.iter().map(|c| c.1).collect(),
+            rows: Vec::new(),
+        }
+    }
+
+    pub fn row(&mut self, cells: Vec<String>) {
+        self.rows.push(cells);
+    }
+
+    pub fn render(&self) -> String {
+        let n = self.header.len();
+        let width = |i: usize| {
+            std::iter::once(&self.header[i])
+                .chain(self.rows.iter().map(|r| &r[i]))
+                .map(|s| s.chars().count())
+                .max()
+                .unwrap_or(0)
+        };
+        let widths: Vec<usize> = (0..n).map(width).collect();
+        let line = |cells: &[String]| {
+            let mut s = String::new();
+            for (i, c) in cells.iter().enumerate() {
+                let pad = widths[i].saturating_sub(c.chars().count());
+                let last = i + 1 == n;
+                if self.right[i] {
+                    s.push_str(&" ".repeat(pad));
+                    s.push_str(c);
+                } else {
+                    s.push_str(c);
+                    if !last {
+                        s.push_str(&" ".repeat(pad));
+                    }
+                }
+                if !last {
+                    s.push_str("  ");
+                }
+            }
+            s.trim_end().to_string() + "\n"
+        };
+        let mut out = line(&self.header);
+        let total: usize = widths.iter().sum::<usize>() + 2 * (n - 1);
+        out.push_str(&"-".repeat(total));
+        out.push('\n');
+        for r in &self.rows {
+            out.push_str(&line(r));
+        }
+        out
+    }
+}

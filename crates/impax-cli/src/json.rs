@@ -1,0 +1,141 @@
+//! JSON records of outcomes (the schema is documented in README.md, "JSON output").
+
+use impax::bodies::BodyOutcome;
+use impax::planar::{Breakdown, ContactProblem, LawDetail, Outcome, SmithReading};
+use serde_json::{json, Map, Value};
+
+/// JSON numbers: `-0` printed as `0`.
+pub fn num(x: f64) -> Value {
+    json!(if x == 0.0 { 0.0 } else { x })
+}
+
+fn detail(d: &LawDetail) -> Value {
+    match *d {
+        LawDetail::None => Value::Null,
+        LawDetail::TwoPhase { switch_impulse } => json!({ "switch_impulse": switch_impulse }),
+        LawDetail::Smith {
+            eta,
+            roots,
+            reading,
+        } => json!({
+            "eta": eta,
+            "roots": roots,
+            "reading": match reading {
+                SmithReading::SlipVelocity => "slip-velocity",
+                SmithReading::CentreVelocity => "centre-velocity",
+            },
+        }),
+        LawDetail::Brach { ratio, capped } => json!({ "ratio": ratio, "capped": capped }),
+        LawDetail::DarbouxKeller { slip_halt } => json!({ "slip_halt": slip_halt }),
+    }
+}
+
+/// The contact-space fields of an outcome; `velocity_key` names the after-velocity field.
+pub fn outcome_fields(o: &Outcome, velocity_key: &str) -> Map<String, Value> {
+    let mut m = Map::new();
+    m.insert("law".into(), json!(o.law.as_str()));
+    m.insert("verdict".into(), json!(o.verdict.id()));
+    m.insert(
+        "impulse".into(),
+        json!({ "t": num(o.impulse.x), "n": num(o.impulse.y) }),
+    );
+    m.insert(
+        velocity_key.into(),
+        json!({ "t": num(o.velocity_after.x), "n": num(o.velocity_after.y) }),
+    );
+    m.insert(
+        "compression_impulse".into(),
+        o.compression_impulse.map_or(Value::Null, num),
+    );
+    m.insert(
+        "work".into(),
+        json!({
+            "compression": num(o.work.compression),
+            "restitution": num(o.work.restitution),
+            "friction": num(o.work.friction),
+        }),
+    );
+    m.insert("energy_change".into(), num(o.energy_change));
+    m.insert(
+        "phases".into(),
+        Value::Array(
+            o.phases
+                .as_slice()
+                .iter()
+                .map(|p| json!({ "kind": p.kind.label(), "ends_at": num(p.ends_at) }))
+                .collect(),
+        ),
+    );
+    m.insert(
+        "inconsistency".into(),
+        o.inconsistency.map_or(
+            Value::Null,
+            |i| json!({ "id": i.id(), "message": i.to_string() }),
+        ),
+    );
+    m.insert("detail".into(), detail(&o.detail));
+    m
+}
+
+/// A breakdown entry: the law, `verdict = "breakdown"`, the reason, and every number null.
+pub fn breakdown_fields(b: &Breakdown, velocity_key: &str, body: bool) -> Map<String, Value> {
+    let mut m = Map::new();
+    m.insert("law".into(), json!(b.law.as_str()));
+    m.insert("verdict".into(), json!("breakdown"));
+    m.insert(
+        "breakdown".into(),
+        json!({ "id": b.reason.id(), "message": b.reason.to_string() }),
+    );
+    let mut keys = vec![
+        "impulse",
+        velocity_key,
+        "compression_impulse",
+        "work",
+        "energy_change",
+        "inconsistency",
+        "detail",
+    ];
+    if body {
+        keys.extend(["body_velocity_after", "energy_change_ratio", "energy_split"]);
+    }
+    for k in keys {
+        m.insert(k.into(), Value::Null);
+    }
+    m.insert("phases".into(), json!([]));
+    m
+}
+
+/// A `compare` entry for one law applied to a body scenario.
+pub fn body_entry(r: &BodyOutcome, t0: f64, two_bodies: bool) -> Value {
+    let mut m = outcome_fields(&r.outcome, "contact_velocity_after");
+    let state = |s: &impax::bodies::BodyState2| json!({ "vx": num(s.velocity.x), "vy": num(s.velocity.y), "omega": num(s.omega) });
+    m.insert("body_velocity_after".into(), state(&r.body_after));
+    if two_bodies {
+        m.insert(
+            "other_body_velocity_after".into(),
+            r.other_after.as_ref().map_or(Value::Null, state),
+        );
+    }
+    m.insert(
+        "energy_change_ratio".into(),
+        num(r.outcome.energy_change / t0),
+    );
+    m.insert(
+        "energy_split".into(),
+        json!({
+            "translational": num(r.energy_change.translational),
+            "rotational": num(r.energy_change.rotational),
+        }),
+    );
+    Value::Object(m)
+}
+
+/// The contact-space problem as JSON.
+pub fn problem(p: &ContactProblem) -> Value {
+    json!({
+        "w": [[p.wtt(), p.wtn()], [p.wtn(), p.wnn()]],
+        "v": { "t": num(p.velocity().x), "n": num(p.velocity().y) },
+        "friction": p.friction(),
+        "restitution": p.restitution(),
+    })
+}
