@@ -236,7 +236,7 @@ fn build_body(
         let v0 = finite_field(&f("speed"), spec.speed.unwrap_or(1.0))?;
         let alpha = finite_field(&f("alpha_deg"), spec.alpha_deg.unwrap_or(0.0))?;
         let gamma = finite_field(&f("spin_ratio"), spec.spin_ratio.unwrap_or(0.0))?;
-        if !(v0 > 0.0) {
+        if v0 <= 0.0 {
             return Err(CliError::input(format!(
                 "{}: must be > 0, got {v0}",
                 f("speed")

@@ -37,7 +37,7 @@ impl ImpactLaw for Brach {
         // p* = W⁻¹ (−v_t, target_n)
         let pt_star = (c * -v.x - b * target_n) / det;
         let pn_star = (-b * -v.x + a * target_n) / det;
-        if !(pn_star > 0.0) {
+        if pn_star.is_nan() || pn_star <= 0.0 {
             return Err(Breakdown {
                 law,
                 reason: BreakdownReason::NegativeStickingImpulse {

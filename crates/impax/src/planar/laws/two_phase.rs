@@ -73,7 +73,7 @@ impl ImpactLaw for TwoPhase {
         }
         let den = problem.wnn() + mu * s0 * b;
         let total = (-(1.0 + problem.restitution()) * v.y + 2.0 * mu * s0 * b * switch) / den;
-        if !(den > 0.0) || !total.is_finite() {
+        if den.is_nan() || den <= 0.0 || !total.is_finite() {
             return Err(Breakdown {
                 law,
                 reason: BreakdownReason::NegativeNormalImpulse { denominator: den },
