@@ -46,16 +46,29 @@ impl From<impax::Error> for CliError {
 
 pub type CliResult<T> = Result<T, CliError>;
 
-/// The first meaningful line of a clap error, without the `error: ` prefix duplicated.
+/// A clap error as one line: its first paragraph joined, without usage and tips.
 pub fn one_line_clap_error(err: &clap::Error) -> String {
     let rendered = err.render().to_string();
-    let line = rendered
-        .lines()
-        .map(str::trim)
-        .find(|l| !l.is_empty())
-        .unwrap_or("invalid arguments");
+    let mut parts = Vec::new();
+    for line in rendered.lines().map(str::trim) {
+        if line.is_empty() {
+            if parts.is_empty() {
+                continue;
+            }
+            break;
+        }
+        if line.starts_with("Usage:") || line.starts_with("tip:") {
+            break;
+        }
+        parts.push(line);
+    }
+    let line = if parts.is_empty() {
+        "invalid arguments".to_string()
+    } else {
+        parts.join(" ")
+    };
     if line.starts_with("error:") {
-        line.to_string()
+        line
     } else {
         format!("error: {line}")
     }

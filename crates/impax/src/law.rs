@@ -79,16 +79,20 @@ impl LawId {
 
     /// Resolve a contact-space problem with this law.
     ///
-    /// `smith-centre` needs a body; in contact space alone it has no meaning, and this
-    /// returns the `smith` (sliding-velocity) result. Use
-    /// [`crate::planar::laws::Smith::centre`] through a body instead.
+    /// `smith-centre` needs a body's centre velocity, which contact space does not have: it
+    /// returns [`BreakdownReason::NeedsBody`](crate::planar::BreakdownReason::NeedsBody). Use
+    /// [`crate::bodies::PlanarImpact::resolve`] (or [`crate::planar::laws::Smith::centre`]).
     #[inline]
     pub fn resolve(self, problem: &ContactProblem) -> Resolution {
         use crate::planar::laws::*;
         match self {
             LawId::Whittaker => Whittaker.resolve(problem),
             LawId::TwoPhase => TwoPhase.resolve(problem),
-            LawId::Smith | LawId::SmithCentre => Smith::SLIP.resolve(problem),
+            LawId::Smith => Smith::SLIP.resolve(problem),
+            LawId::SmithCentre => Err(crate::planar::Breakdown {
+                law: self,
+                reason: crate::planar::BreakdownReason::NeedsBody,
+            }),
             LawId::Brach => Brach.resolve(problem),
             LawId::Newton => Newton.resolve(problem),
             LawId::Poisson => Poisson.resolve(problem),

@@ -1,6 +1,6 @@
 //! A planar impact of one body on a fixed surface, or of two free bodies.
 
-use super::rigid::{BodyState2, RigidBody2};
+use super::rigid::{sum_or_zero, BodyState2, RigidBody2};
 use crate::error::Result;
 use crate::law::{ImpactLaw, LawId};
 use crate::math::Vec2;
@@ -78,13 +78,17 @@ impl PlanarImpact {
         w
     }
 
-    /// Relative contact velocity `v_A − v_B` at the contact point.
+    /// Relative contact velocity `v_A − v_B` at the contact point (a difference below its
+    /// rounding error is exactly zero, see [`RigidBody2::contact_velocity`]).
     pub fn contact_velocity(&self) -> Vec2 {
-        let mut v = self.body.0.contact_velocity(&self.body.1);
-        if let Some((b, s)) = &self.other {
-            v -= b.contact_velocity(s);
+        let v = self.body.0.contact_velocity(&self.body.1);
+        match &self.other {
+            None => v,
+            Some((b, s)) => {
+                let w = b.contact_velocity(s);
+                Vec2::new(sum_or_zero(v.x, -w.x), sum_or_zero(v.y, -w.y))
+            }
         }
-        v
     }
 
     /// The contact-space problem with friction `μ` and restitution `e` (validated).

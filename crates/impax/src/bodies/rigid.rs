@@ -3,6 +3,17 @@
 use crate::error::{finite, Error, Result};
 use crate::math::{cross2, Mat2, Vec2};
 
+/// `a + b`, or exactly zero when the sum is below its rounding error `4 ε (|a| + |b|)`.
+#[inline]
+pub(crate) fn sum_or_zero(a: f64, b: f64) -> f64 {
+    let s = a + b;
+    if s.abs() <= 4.0 * f64::EPSILON * (a.abs() + b.abs()) {
+        0.0
+    } else {
+        s
+    }
+}
+
 /// Which side of the body touches: body A strikes a surface below it (`Below`, contact at
 /// the support point along `−n`); the struck body B is met from above (`Above`, along `+n`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -114,10 +125,15 @@ impl RigidBody2 {
     }
 
     /// Velocity of the material point at the contact: `v + ω × r`.
+    ///
+    /// Each component is a sum of two terms; a sum smaller than its own rounding error
+    /// (`4 ε (|a| + |b|)`) is returned as exactly zero, so that a state meant to have no
+    /// slip (e.g. `γ = −sin α` for the seed's sphere, where `sin 30°` is not exactly ½ in
+    /// floating point) is not given a spurious slip direction by round-off.
     pub fn contact_velocity(&self, s: &BodyState2) -> Vec2 {
         Vec2::new(
-            s.velocity.x - s.omega * self.contact.y,
-            s.velocity.y + s.omega * self.contact.x,
+            sum_or_zero(s.velocity.x, -s.omega * self.contact.y),
+            sum_or_zero(s.velocity.y, s.omega * self.contact.x),
         )
     }
 

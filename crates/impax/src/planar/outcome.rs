@@ -312,6 +312,9 @@ pub enum BreakdownReason {
     },
     /// Smith's equation for `η` has no admissible root.
     NoEtaRoot,
+    /// The law reads a body's centre velocity (`smith-centre`) and was given only a
+    /// contact-space problem.
+    NeedsBody,
     /// Brach's sticking impulse has a negative normal component.
     NegativeStickingImpulse {
         /// Its normal component.
@@ -326,6 +329,7 @@ impl BreakdownReason {
             BreakdownReason::NegativeNormalImpulse { .. } => "negative-normal-impulse",
             BreakdownReason::NoConsistentSplit { .. } => "no-consistent-split",
             BreakdownReason::NoEtaRoot => "no-eta-root",
+            BreakdownReason::NeedsBody => "needs-body",
             BreakdownReason::NegativeStickingImpulse { .. } => "negative-sticking-impulse",
         }
     }
@@ -346,6 +350,9 @@ impl fmt::Display for BreakdownReason {
                 "no consistent two-phase split (switch at p_n = {switch_impulse:.6}, total {total_impulse:.6})"
             ),
             BreakdownReason::NoEtaRoot => f.write_str("Smith's η equation has no admissible root"),
+            BreakdownReason::NeedsBody => {
+                f.write_str("the law reads a body's centre velocity; contact space has none")
+            }
             BreakdownReason::NegativeStickingImpulse { normal_impulse } => write!(
                 f,
                 "the sticking impulse has a negative normal component ({normal_impulse:.6})"

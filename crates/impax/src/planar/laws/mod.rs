@@ -1,4 +1,4 @@
-//! The planar impact laws, one file each, all behind [`ImpactLaw`](crate::law::ImpactLaw).
+//! The planar impact laws, one file each, all behind [`ImpactLaw`].
 //!
 //! | id | file | rule |
 //! |---|---|---|

@@ -268,8 +268,8 @@ mod tests {
 
     #[test]
     fn cubic_roots_found_to_the_last_bit() {
-        // (x − 0.5)(x + 0.25)(x − 0.9) = x³ − 1.15x² + 0.2x + 0.1125
-        let p = [0.1125, 0.2, -1.15, 1.0];
+        // (x − 0.5)(x + 0.25)(x − 0.9) = x³ − 1.15x² + 0.1x + 0.1125
+        let p = [0.1125, 0.1, -1.15, 1.0];
         let (r, n) = cubic_roots_in(&p, -1.0, 1.0);
         assert_eq!(n, 3);
         for (x, y) in r.iter().zip([-0.25, 0.5, 0.9]) {
