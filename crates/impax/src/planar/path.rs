@@ -115,6 +115,14 @@ impl ImpulsePath {
         self.len += 1;
     }
 
+    /// Append a segment that starts where the previous one brought the slip to rest: its
+    /// starting tangential velocity is exactly zero (the halt is defined by `v_t = 0`; the
+    /// recomputed `v_t` would carry round-off).
+    pub fn push_from_rest(&mut self, kind: PhaseKind, ratio: f64, end: f64) {
+        self.push(kind, ratio, end);
+        self.segs[self.len - 1].v_start.x = 0.0;
+    }
+
     /// Segments so far.
     pub fn segments(&self) -> &[Segment] {
         &self.segs[..self.len]

@@ -45,10 +45,10 @@ pub fn darboux_keller_path(problem: &ContactProblem) -> (ImpulsePath, Option<f64
     }
     // v_t = 0 here: stick if the cone holds it, else slip resumes along sign(b).
     if b.abs() <= mu * a {
-        path.push(PhaseKind::Stick, -b / a, f64::INFINITY);
+        path.push_from_rest(PhaseKind::Stick, -b / a, f64::INFINITY);
     } else {
         let s1 = SlipDirection::of(b);
-        path.push(PhaseKind::Slip(s1), -mu * s1.sign(), f64::INFINITY);
+        path.push_from_rest(PhaseKind::Slip(s1), -mu * s1.sign(), f64::INFINITY);
     }
     (path, halt)
 }

@@ -67,7 +67,8 @@ pub(crate) fn finish(
     inconsistency: Option<Inconsistency>,
 ) -> Outcome {
     let impulse = path.impulse_at(pf);
-    let velocity_after = problem.velocity_after(impulse);
+    // From the path: exact zeros where the slip halted (equal to v⁻ + W p up to round-off).
+    let velocity_after = path.velocity_at(pf);
     let compression_impulse = path.first_normal_velocity(0.0).filter(|&pc| pc <= pf);
     let compression = path.normal_work_to(compression_impulse.unwrap_or(pf));
     let work = WorkSplit {

@@ -94,7 +94,7 @@ impl ImpactLaw for TwoPhase {
             SlipDirection::Positive
         };
         path.push(PhaseKind::Slip(dir), k1, switch);
-        path.push(PhaseKind::Slip(reversed), -k1, f64::INFINITY);
+        path.push_from_rest(PhaseKind::Slip(reversed), -k1, f64::INFINITY);
         let slip_after = path.velocity_at(total).x;
         let inconsistency =
             (slip_after * s0 > 0.0).then_some(Inconsistency::ReversalDidNotHappen { slip_after });
