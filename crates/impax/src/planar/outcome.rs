@@ -315,11 +315,6 @@ pub enum BreakdownReason {
     /// The law reads a body's centre velocity (`smith-centre`) and was given only a
     /// contact-space problem.
     NeedsBody,
-    /// Brach's sticking impulse has a negative normal component.
-    NegativeStickingImpulse {
-        /// Its normal component.
-        normal_impulse: f64,
-    },
 }
 
 impl BreakdownReason {
@@ -330,7 +325,6 @@ impl BreakdownReason {
             BreakdownReason::NoConsistentSplit { .. } => "no-consistent-split",
             BreakdownReason::NoEtaRoot => "no-eta-root",
             BreakdownReason::NeedsBody => "needs-body",
-            BreakdownReason::NegativeStickingImpulse { .. } => "negative-sticking-impulse",
         }
     }
 }
@@ -353,10 +347,6 @@ impl fmt::Display for BreakdownReason {
             BreakdownReason::NeedsBody => {
                 f.write_str("the law reads a body's centre velocity; contact space has none")
             }
-            BreakdownReason::NegativeStickingImpulse { normal_impulse } => write!(
-                f,
-                "the sticking impulse has a negative normal component ({normal_impulse:.6})"
-            ),
         }
     }
 }

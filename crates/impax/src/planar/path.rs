@@ -49,6 +49,25 @@ impl Segment {
     }
 }
 
+/// Everything the outcome record needs from a path ended at `p_f`, gathered in one pass.
+#[derive(Debug, Clone, Copy)]
+pub struct PathSummary {
+    /// Impulse at `p_f`.
+    pub impulse: Vec2,
+    /// Contact velocity at `p_f`.
+    pub velocity: Vec2,
+    /// First `p_n ≤ p_f` with `v_n = 0`, if any.
+    pub compression_impulse: Option<f64>,
+    /// Normal work up to the end of compression (or to `p_f` if compression does not end).
+    pub compression_work: f64,
+    /// Normal work up to `p_f`.
+    pub normal_work: f64,
+    /// Friction work up to `p_f`.
+    pub friction_work: f64,
+    /// Phases up to `p_f`.
+    pub phases: Phases,
+}
+
 /// A polyline impulse path of at most [`ImpulsePath::CAPACITY`] segments, built in order.
 #[derive(Debug, Clone, Copy)]
 pub struct ImpulsePath {
@@ -221,6 +240,52 @@ impl ImpulsePath {
             remaining -= seg_work;
         }
         None
+    }
+
+    /// Impulse, velocity, compression, works and phases of the path ended at `pf`, in one
+    /// pass over the segments.
+    #[inline]
+    pub fn summarize(&self, pf: f64) -> PathSummary {
+        let mut out = PathSummary {
+            impulse: Vec2::new(0.0, pf),
+            velocity: self.segs[0].v_start,
+            compression_impulse: None,
+            compression_work: 0.0,
+            normal_work: 0.0,
+            friction_work: 0.0,
+            phases: Phases::new(),
+        };
+        for (i, s) in self.segments().iter().enumerate() {
+            let last = i + 1 == self.len || pf <= s.end;
+            let end = if last { pf } else { s.end };
+            let len = end - s.start;
+            if out.compression_impulse.is_none() {
+                if s.v_start.y >= 0.0 {
+                    out.compression_impulse = Some(s.start);
+                    out.compression_work = out.normal_work;
+                } else if s.slope.y > 0.0 {
+                    // Compare absolute impulses, computed as in `first_normal_velocity`, so
+                    // that a termination at the end of compression (e = 0) finds it exactly.
+                    let pc = s.start + -s.v_start.y / s.slope.y;
+                    if pc <= end {
+                        out.compression_impulse = Some(pc);
+                        out.compression_work = out.normal_work + s.normal_work_to(pc);
+                    }
+                }
+            }
+            out.normal_work += s.normal_work_to(end);
+            out.friction_work += s.friction_work_to(end);
+            out.phases.push(s.kind, end);
+            if last {
+                out.impulse.x = s.pt_start + s.ratio * len;
+                out.velocity = s.v_start + s.slope * len;
+                break;
+            }
+        }
+        if out.compression_impulse.is_none() {
+            out.compression_work = out.normal_work;
+        }
+        out
     }
 
     /// The phases of the path truncated at `pn`.

@@ -41,7 +41,8 @@ impl ContactProblem {
     /// Validate and build a problem.
     ///
     /// Errors (each names its field): a non-finite entry; `W` not symmetric (beyond round-off)
-    /// or not positive definite; `v_n ≥ 0`; `μ < 0`; `e ∉ [0, 1]`.
+    /// or not positive definite; `v_n ≥ 0`; `μ < 0`; `e ∉ [0, 1]`; a velocity so large
+    /// for `W` that the approach energy `½ v⁻ᵀ W⁻¹ v⁻` overflows.
     pub fn new(w: Mat2, v: Vec2, friction: f64, restitution: f64) -> Result<Self> {
         for (i, j, name) in [
             (0, 0, "w[t,t]"),
@@ -105,14 +106,27 @@ impl ContactProblem {
                 reason: "the coefficient of restitution must be in [0, 1]".into(),
             });
         }
-        Ok(Self {
+        let problem = Self {
             a,
             b,
             c,
             v,
             mu: friction,
             e: restitution,
-        })
+        };
+        // Every impulse and work of an impact is bounded by the approach energy scale; if
+        // that overflows the numbers cannot be represented.
+        let energy = problem.approach_energy();
+        if !energy.is_finite() {
+            return Err(Error::OutOfRange {
+                field: "v".into(),
+                value: v.norm(),
+                reason: format!(
+                    "too large for W: the approach energy ½ vᵀW⁻¹v = {energy} is not representable"
+                ),
+            });
+        }
+        Ok(problem)
     }
 
     /// Build from the three independent entries `(W_tt, W_tn, W_nn)` and `(v_t, v_n)`.

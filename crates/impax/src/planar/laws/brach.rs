@@ -8,7 +8,9 @@
 //! ```
 //!
 //! used as it is if `|μ0| ≤ μ`, otherwise capped to `μ sign(μ0)` with
-//! `p_n = −(1+e) v_n⁻ / (W_nn + μ sign(μ0) W_tn)`.
+//! `p_n = −(1+e) v_n⁻ / (W_nn + μ sign(μ0) W_tn)`. When `p*_n ≤ 0` no compressive impulse
+//! stops the slip; the ratio is taken as beyond the cone, `μ sign(p*_t)` (with `μ = 0`:
+//! frictionless Newton restitution, as every law gives without friction).
 
 use super::{finish, newton_normal_impulse, ImpactLaw};
 use crate::law::LawId;
@@ -37,19 +39,18 @@ impl ImpactLaw for Brach {
         // p* = W⁻¹ (−v_t, target_n)
         let pt_star = (c * -v.x - b * target_n) / det;
         let pn_star = (-b * -v.x + a * target_n) / det;
-        if pn_star.is_nan() || pn_star <= 0.0 {
-            return Err(Breakdown {
-                law,
-                reason: BreakdownReason::NegativeStickingImpulse {
-                    normal_impulse: pn_star,
-                },
-            });
-        }
-        let ratio = pt_star / pn_star;
+        // With p*_n ≤ 0 no compressive impulse can stop the slip: the ratio is beyond any
+        // cone, in the direction of p*_t.
+        let sticking = pn_star > 0.0;
+        let ratio = if sticking {
+            pt_star / pn_star
+        } else {
+            f64::INFINITY * sign(pt_star)
+        };
         let mut path = ImpulsePath::new(problem);
-        if ratio.abs() <= mu {
+        if sticking && ratio.abs() <= mu {
             path.push(PhaseKind::Stick, ratio, f64::INFINITY);
-            return Ok(finish(
+            let mut out = finish(
                 problem,
                 law,
                 &path,
@@ -59,7 +60,10 @@ impl ImpactLaw for Brach {
                     capped: false,
                 },
                 None,
-            ));
+            );
+            // p* is defined by v_t⁺ = 0: keep that exact rather than its round-off.
+            out.velocity_after.x = 0.0;
+            return Ok(out);
         }
         let k = mu * sign(ratio);
         let pf = newton_normal_impulse(problem, k).map_err(|denominator| Breakdown {

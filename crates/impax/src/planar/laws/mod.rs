@@ -32,15 +32,39 @@ use super::outcome::{Inconsistency, LawDetail, Outcome, Verdict, WorkSplit};
 use super::path::ImpulsePath;
 use super::ContactProblem;
 use crate::law::LawId;
+use crate::math::Vec2;
 
 /// Relative tolerance, on the scale of [`ContactProblem::approach_energy`], above which a
 /// rise of kinetic energy is reported as a gain (below it is round-off).
 pub const ENERGY_GAIN_TOL: f64 = 1e-12;
 
-/// Whether `energy_change` is a real gain for this problem (beyond round-off).
+/// Whether `energy_change = ΔT` of the impulse `p` (taking `v⁻` to `v⁺`) is a real gain.
+///
+/// A gain must exceed both [`ENERGY_GAIN_TOL`] times the approach energy
+/// `½ v⁻ᵀ W⁻¹ v⁻` and the round-off of `ΔT = ½ (v⁻ + v⁺)·p` itself,
+/// `8 ε ½ (|v⁻|·|p| + |v⁺|·|p|)` (componentwise), which dominates for ill-conditioned `W`.
 #[inline]
-pub fn is_energy_gain(problem: &ContactProblem, energy_change: f64) -> bool {
-    energy_change > ENERGY_GAIN_TOL * problem.approach_energy()
+pub fn is_energy_gain(
+    problem: &ContactProblem,
+    energy_change: f64,
+    p: Vec2,
+    v_after: Vec2,
+) -> bool {
+    if energy_change <= 0.0 {
+        return false;
+    }
+    let v = problem.velocity();
+    let round_off = 4.0
+        * f64::EPSILON
+        * ((v.x.abs() + v_after.x.abs()) * p.x.abs() + (v.y.abs() + v_after.y.abs()) * p.y.abs());
+    if energy_change <= round_off {
+        return false;
+    }
+    // ΔT > tol · ½ v⁻ᵀ W⁻¹ v⁻, multiplied through by det W > 0 (no division on the hot path).
+    let (a, b, c) = (problem.wtt(), problem.wtn(), problem.wnn());
+    let det = a * c - b * b;
+    energy_change * det
+        > ENERGY_GAIN_TOL * 0.5 * (c * v.x * v.x - 2.0 * b * v.x * v.y + a * v.y * v.y)
 }
 
 /// The normal impulse Newton's rule asks of a straight path with friction ratio `k`:
@@ -66,18 +90,18 @@ pub(crate) fn finish(
     detail: LawDetail,
     inconsistency: Option<Inconsistency>,
 ) -> Outcome {
-    let impulse = path.impulse_at(pf);
-    // From the path: exact zeros where the slip halted (equal to v⁻ + W p up to round-off).
-    let velocity_after = path.velocity_at(pf);
-    let compression_impulse = path.first_normal_velocity(0.0).filter(|&pc| pc <= pf);
-    let compression = path.normal_work_to(compression_impulse.unwrap_or(pf));
+    let sum = path.summarize(pf);
+    let impulse = sum.impulse;
     let work = WorkSplit {
-        compression,
-        restitution: path.normal_work_to(pf) - compression,
-        friction: path.friction_work_to(pf),
+        compression: sum.compression_work,
+        restitution: sum.normal_work - sum.compression_work,
+        friction: sum.friction_work,
     };
-    let energy_change = problem.energy_change(impulse);
-    let verdict = if is_energy_gain(problem, energy_change) {
+    // ΔT = ½ (v⁻ + v⁺)·p with v⁺ from the path (exact zeros at a halt): better conditioned
+    // than v⁻·p + ½ pᵀ W p, to which it is identical.
+    let v_minus = problem.velocity();
+    let energy_change = 0.5 * (v_minus + sum.velocity).dot(&impulse);
+    let verdict = if is_energy_gain(problem, energy_change, impulse, sum.velocity) {
         Verdict::EnergyGained
     } else if inconsistency.is_some() {
         Verdict::InconsistentAssumption
@@ -87,11 +111,12 @@ pub(crate) fn finish(
     Outcome {
         law,
         impulse,
-        velocity_after,
-        compression_impulse,
+        // From the path: exact zeros where the slip halted (equal to v⁻ + W p up to round-off).
+        velocity_after: sum.velocity,
+        compression_impulse: sum.compression_impulse,
         work,
         energy_change,
-        phases: path.phases_to(pf),
+        phases: sum.phases,
         verdict,
         inconsistency,
         detail,

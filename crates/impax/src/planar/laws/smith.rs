@@ -69,13 +69,16 @@ impl Default for Smith {
 }
 
 /// Evaluate `p[0] + p[1] x + p[2] x² + p[3] x³`.
-#[inline]
+#[cfg(test)]
 fn horner(p: &[f64; 4], x: f64) -> f64 {
     ((p[3] * x + p[2]) * x + p[1]) * x + p[0]
 }
 
-/// Real roots of the cubic `p` in `[lo, hi]`, each to the last bit (ascending, deduplicated).
-fn cubic_roots_in(p: &[f64; 4], lo: f64, hi: f64) -> ([f64; 3], usize) {
+/// Real roots of the cubic with monomial coefficients `p` in `[lo, hi]`, each to the last
+/// bit (ascending, deduplicated). `f` evaluates the same cubic, possibly in a better
+/// conditioned (factored) form: the monomials only place the critical points that split
+/// `[lo, hi]` into monotone pieces and guide Newton; every sign test uses `f`.
+fn cubic_roots_in(p: &[f64; 4], f: impl Fn(f64) -> f64, lo: f64, hi: f64) -> ([f64; 3], usize) {
     let mut out = [0.0; 3];
     let mut n = 0;
     if p.iter().all(|&c| c == 0.0) {
@@ -100,8 +103,8 @@ fn cubic_roots_in(p: &[f64; 4], lo: f64, hi: f64) -> ([f64; 3], usize) {
         }
     };
     for w in cuts[..ncuts].windows(2) {
-        let (mut x0, mut x1) = (w[0], w[1]);
-        let (mut f0, f1) = (horner(p, x0), horner(p, x1));
+        let (x0, x1) = (w[0], w[1]);
+        let (f0, f1) = (f(x0), f(x1));
         if f0 == 0.0 {
             push(x0, &mut out, &mut n);
             continue;
@@ -109,35 +112,53 @@ fn cubic_roots_in(p: &[f64; 4], lo: f64, hi: f64) -> ([f64; 3], usize) {
         if f1 == 0.0 || f0.signum() == f1.signum() {
             continue;
         }
-        loop {
-            let mid = 0.5 * (x0 + x1);
-            if mid <= x0 || mid >= x1 {
-                break;
-            }
-            let fm = horner(p, mid);
-            if fm == 0.0 {
-                x0 = mid;
-                x1 = mid;
-                break;
-            }
-            if fm.signum() == f0.signum() {
-                x0 = mid;
-                f0 = fm;
-            } else {
-                x1 = mid;
-            }
-        }
-        let root = if horner(p, x0).abs() <= horner(p, x1).abs() {
-            x0
-        } else {
-            x1
-        };
-        push(root, &mut out, &mut n);
+        push(monotone_root(p, &f, x0, x1, f0), &mut out, &mut n);
     }
-    if horner(p, hi) == 0.0 {
+    if f(hi) == 0.0 {
         push(hi, &mut out, &mut n);
     }
     (out, n)
+}
+
+/// The root of the cubic `p` in `[x0, x1]`, where `p` is monotone and changes sign
+/// (`f0 = p(x0)`): safeguarded Newton (a bisection step whenever Newton leaves the bracket
+/// or stalls), to the last bit in a handful of iterations.
+fn monotone_root(
+    p: &[f64; 4],
+    eval: &impl Fn(f64) -> f64,
+    mut x0: f64,
+    mut x1: f64,
+    f0: f64,
+) -> f64 {
+    let s0 = f0.signum();
+    let mut x = 0.5 * (x0 + x1);
+    for _ in 0..200 {
+        let f = eval(x);
+        if f == 0.0 {
+            return x;
+        }
+        if f.signum() == s0 {
+            x0 = x;
+        } else {
+            x1 = x;
+        }
+        let df = (3.0 * p[3] * x + 2.0 * p[2]) * x + p[1];
+        let newton = x - f / df;
+        let next = if newton > x0 && newton < x1 {
+            newton
+        } else {
+            0.5 * (x0 + x1)
+        };
+        if next == x || x1 - x0 <= 2.0 * f64::EPSILON * x0.abs().max(x1.abs()) {
+            // Converged: the better of the bracket ends and the iterate.
+            return [x0, x1, next]
+                .into_iter()
+                .min_by(|a, b| eval(*a).abs().total_cmp(&eval(*b).abs()))
+                .unwrap_or(next);
+        }
+        x = next;
+    }
+    x
 }
 
 /// Product of two polynomials of degree ≤ 1 → degree ≤ 2 (coefficients ascending).
@@ -187,7 +208,14 @@ impl ImpactLaw for Smith {
                 aa[1] - sigma * bb[2],
                 aa[2],
             ];
-            let (roots, nr) = cubic_roots_in(&poly, -1.0, 1.0);
+            // The same cubic in factored form, far better conditioned near a pole of p_n
+            // (small D) than its monomials.
+            let factored = |eta: f64| {
+                let (dv, qv) = (dval(eta), qval(eta));
+                let (ud, qq) = (uu * dv * dv, qv * qv);
+                eta * (ud + qq) - sigma * (ud - qq)
+            };
+            let (roots, nr) = cubic_roots_in(&poly, factored, -1.0, 1.0);
             for &eta in &roots[..nr] {
                 if dval(eta) > 0.0 && sigma * qval(eta) < 0.0 {
                     cands[nc] = eta;
@@ -270,7 +298,7 @@ mod tests {
     fn cubic_roots_found_to_the_last_bit() {
         // (x − 0.5)(x + 0.25)(x − 0.9) = x³ − 1.15x² + 0.1x + 0.1125
         let p = [0.1125, 0.1, -1.15, 1.0];
-        let (r, n) = cubic_roots_in(&p, -1.0, 1.0);
+        let (r, n) = cubic_roots_in(&p, |x| horner(&p, x), -1.0, 1.0);
         assert_eq!(n, 3);
         for (x, y) in r.iter().zip([-0.25, 0.5, 0.9]) {
             assert!((x - y).abs() < 1e-15, "{x} vs {y}");
