@@ -84,7 +84,7 @@ pub struct Phases {
 
 impl Phases {
     /// The most phases a planar law produces (slip, then stick or reversed slip).
-    pub const CAPACITY: usize = 3;
+    pub const CAPACITY: usize = 2;
 
     /// No phases.
     pub const fn new() -> Self {

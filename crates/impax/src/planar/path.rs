@@ -68,6 +68,35 @@ pub struct PathSummary {
     pub phases: Phases,
 }
 
+/// The summary of a straight path `p = p_n (k, 1)`, `0 ≤ p_n ≤ p_f`, in closed form: the
+/// algebraic laws' single segment, without building an [`ImpulsePath`].
+#[inline]
+pub fn line_summary(problem: &ContactProblem, kind: PhaseKind, ratio: f64, pf: f64) -> PathSummary {
+    let (a, b, c) = (problem.wtt(), problem.wtn(), problem.wnn());
+    let v = problem.velocity();
+    let slope = Vec2::new(a * ratio + b, b * ratio + c);
+    let normal_work = pf * (v.y + 0.5 * slope.y * pf);
+    let (compression_impulse, compression_work) = if v.y >= 0.0 {
+        (Some(0.0), 0.0)
+    } else if slope.y > 0.0 && -v.y / slope.y <= pf {
+        let pc = -v.y / slope.y;
+        (Some(pc), pc * (v.y + 0.5 * slope.y * pc))
+    } else {
+        (None, normal_work)
+    };
+    let mut phases = Phases::new();
+    phases.push(kind, pf);
+    PathSummary {
+        impulse: Vec2::new(ratio * pf, pf),
+        velocity: v + slope * pf,
+        compression_impulse,
+        compression_work,
+        normal_work,
+        friction_work: ratio * pf * (v.x + 0.5 * slope.x * pf),
+        phases,
+    }
+}
+
 /// A polyline impulse path of at most [`ImpulsePath::CAPACITY`] segments, built in order.
 #[derive(Debug, Clone, Copy)]
 pub struct ImpulsePath {
@@ -80,7 +109,7 @@ pub struct ImpulsePath {
 
 impl ImpulsePath {
     /// Most segments a planar law needs.
-    pub const CAPACITY: usize = 3;
+    pub const CAPACITY: usize = 2;
 
     /// An empty path starting at `p = 0`, `v = v⁻`.
     pub fn new(problem: &ContactProblem) -> Self {

@@ -12,10 +12,9 @@
 //! stops the slip; the ratio is taken as beyond the cone, `μ sign(p*_t)` (with `μ = 0`:
 //! frictionless Newton restitution, as every law gives without friction).
 
-use super::{finish, newton_normal_impulse, ImpactLaw};
+use super::{finish_line, newton_normal_impulse, ImpactLaw};
 use crate::law::LawId;
 use crate::math::sign;
-use crate::planar::path::ImpulsePath;
 use crate::planar::{
     Breakdown, BreakdownReason, ContactProblem, LawDetail, PhaseKind, Resolution, SlipDirection,
 };
@@ -47,13 +46,12 @@ impl ImpactLaw for Brach {
         } else {
             f64::INFINITY * sign(pt_star)
         };
-        let mut path = ImpulsePath::new(problem);
         if sticking && ratio.abs() <= mu {
-            path.push(PhaseKind::Stick, ratio, f64::INFINITY);
-            let mut out = finish(
+            let mut out = finish_line(
                 problem,
                 law,
-                &path,
+                PhaseKind::Stick,
+                ratio,
                 pn_star,
                 LawDetail::Brach {
                     ratio,
@@ -76,11 +74,11 @@ impl ImpactLaw for Brach {
         } else {
             SlipDirection::of(v.x)
         };
-        path.push(PhaseKind::Slip(dir), k, f64::INFINITY);
-        Ok(finish(
+        Ok(finish_line(
             problem,
             law,
-            &path,
+            PhaseKind::Slip(dir),
+            k,
             pf,
             LawDetail::Brach {
                 ratio,

@@ -28,8 +28,8 @@ pub use smith::Smith;
 pub use two_phase::TwoPhase;
 pub use whittaker::Whittaker;
 
-use super::outcome::{Inconsistency, LawDetail, Outcome, Verdict, WorkSplit};
-use super::path::ImpulsePath;
+use super::outcome::{Inconsistency, LawDetail, Outcome, PhaseKind, Verdict, WorkSplit};
+use super::path::{line_summary, ImpulsePath, PathSummary};
 use super::ContactProblem;
 use crate::law::LawId;
 use crate::math::Vec2;
@@ -90,7 +90,37 @@ pub(crate) fn finish(
     detail: LawDetail,
     inconsistency: Option<Inconsistency>,
 ) -> Outcome {
-    let sum = path.summarize(pf);
+    assemble(problem, law, path.summarize(pf), detail, inconsistency)
+}
+
+/// As [`finish`] for a straight path `p = p_n (ratio, 1)` (the algebraic laws).
+#[inline]
+pub(crate) fn finish_line(
+    problem: &ContactProblem,
+    law: LawId,
+    kind: PhaseKind,
+    ratio: f64,
+    pf: f64,
+    detail: LawDetail,
+    inconsistency: Option<Inconsistency>,
+) -> Outcome {
+    assemble(
+        problem,
+        law,
+        line_summary(problem, kind, ratio, pf),
+        detail,
+        inconsistency,
+    )
+}
+
+#[inline]
+fn assemble(
+    problem: &ContactProblem,
+    law: LawId,
+    sum: PathSummary,
+    detail: LawDetail,
+    inconsistency: Option<Inconsistency>,
+) -> Outcome {
     let impulse = sum.impulse;
     let work = WorkSplit {
         compression: sum.compression_work,
@@ -99,8 +129,7 @@ pub(crate) fn finish(
     };
     // ΔT = ½ (v⁻ + v⁺)·p with v⁺ from the path (exact zeros at a halt): better conditioned
     // than v⁻·p + ½ pᵀ W p, to which it is identical.
-    let v_minus = problem.velocity();
-    let energy_change = 0.5 * (v_minus + sum.velocity).dot(&impulse);
+    let energy_change = 0.5 * (problem.velocity() + sum.velocity).dot(&impulse);
     let verdict = if is_energy_gain(problem, energy_change, impulse, sum.velocity) {
         Verdict::EnergyGained
     } else if inconsistency.is_some() {

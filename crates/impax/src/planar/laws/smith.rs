@@ -26,10 +26,9 @@
 //! largest `σ η` — the least correction of Whittaker's rule — is taken, and the count is
 //! reported in [`LawDetail::Smith`].
 
-use super::{finish, ImpactLaw};
+use super::{finish_line, ImpactLaw};
 use crate::law::LawId;
 use crate::math::{quadratic_roots, sign, Vec2};
-use crate::planar::path::ImpulsePath;
 use crate::planar::{
     Breakdown, BreakdownReason, ContactProblem, LawDetail, PhaseKind, Resolution, SlipDirection,
     SmithReading,
@@ -149,9 +148,12 @@ fn monotone_root(
         } else {
             0.5 * (x0 + x1)
         };
-        if next == x || x1 - x0 <= 2.0 * f64::EPSILON * x0.abs().max(x1.abs()) {
+        // Converged when the step or the bracket is at the last bit of x; near η = 0 an
+        // absolute floor (1e-9 · ε) stops the chase of round-off noise.
+        let tol = 2.0 * f64::EPSILON * x.abs().max(1e-9);
+        if (next - x).abs() <= tol || x1 - x0 <= tol {
             // Converged: the better of the bracket ends and the iterate.
-            return [x0, x1, next]
+            return [x, next]
                 .into_iter()
                 .min_by(|a, b| eval(*a).abs().total_cmp(&eval(*b).abs()))
                 .unwrap_or(next);
@@ -215,7 +217,23 @@ impl ImpactLaw for Smith {
                 let (ud, qq) = (uu * dv * dv, qv * qv);
                 eta * (ud + qq) - sigma * (ud - qq)
             };
-            let (roots, nr) = cubic_roots_in(&poly, factored, -1.0, 1.0);
+            // Only the reversal region σ Q(η) < 0 (Q linear) can hold admissible roots:
+            // search there, skipping the inadmissible ones (η = 0 is one whenever u⁺ = u⁻).
+            let (mut lo, mut hi) = (-1.0f64, 1.0f64);
+            let slope = sigma * q[1];
+            let zero = -q[0] / q[1];
+            if slope > 0.0 {
+                hi = hi.min(zero);
+            } else if slope < 0.0 {
+                lo = lo.max(zero);
+            } else if sigma * q[0] >= 0.0 {
+                hi = lo - 1.0; // no reversal anywhere
+            }
+            let (roots, nr) = if lo < hi {
+                cubic_roots_in(&poly, factored, lo, hi)
+            } else {
+                ([0.0; 3], 0)
+            };
             for &eta in &roots[..nr] {
                 if dval(eta) > 0.0 && sigma * qval(eta) < 0.0 {
                     cands[nc] = eta;
@@ -273,12 +291,11 @@ impl ImpactLaw for Smith {
         } else {
             SlipDirection::of(v.x)
         };
-        let mut path = ImpulsePath::new(problem);
-        path.push(PhaseKind::Slip(dir), ratio, f64::INFINITY);
-        Ok(finish(
+        Ok(finish_line(
             problem,
             law,
-            &path,
+            PhaseKind::Slip(dir),
+            ratio,
             pf,
             LawDetail::Smith {
                 eta,

@@ -23,7 +23,7 @@
 //! Whittaker's about the sticking impulse `p_t = −v_t⁻/W_tt`, so the two rules give the
 //! *same* `ΔT`.
 
-use super::{finish, newton_normal_impulse, ImpactLaw};
+use super::{finish, finish_line, newton_normal_impulse, ImpactLaw};
 use crate::law::LawId;
 use crate::planar::path::ImpulsePath;
 use crate::planar::{
@@ -52,18 +52,17 @@ impl ImpactLaw for TwoPhase {
         let switch = -v.x / dvt;
         let halts = dir != SlipDirection::None && mu > 0.0 && switch.is_finite() && switch > 0.0;
         let whittaker = newton_normal_impulse(problem, k1);
-        let mut path = ImpulsePath::new(problem);
         if !halts || matches!(whittaker, Ok(pw) if pw <= switch) {
             // The slip does not halt before Whittaker's impulse ends: one phase.
             let pf = whittaker.map_err(|denominator| Breakdown {
                 law,
                 reason: BreakdownReason::NegativeNormalImpulse { denominator },
             })?;
-            path.push(PhaseKind::Slip(dir), k1, f64::INFINITY);
-            return Ok(finish(
+            return Ok(finish_line(
                 problem,
                 law,
-                &path,
+                PhaseKind::Slip(dir),
+                k1,
                 pf,
                 LawDetail::TwoPhase {
                     switch_impulse: None,
@@ -93,6 +92,7 @@ impl ImpactLaw for TwoPhase {
         } else {
             SlipDirection::Positive
         };
+        let mut path = ImpulsePath::new(problem);
         path.push(PhaseKind::Slip(dir), k1, switch);
         path.push_from_rest(PhaseKind::Slip(reversed), -k1, f64::INFINITY);
         let slip_after = path.velocity_at(total).x;

@@ -12,9 +12,8 @@
 //! slip during the impact; when the slip has reversed by the end, the outcome carries
 //! [`Inconsistency::SlipReversed`], and the energy may rise (Kane's paradox).
 
-use super::{finish, newton_normal_impulse, ImpactLaw};
+use super::{finish_line, newton_normal_impulse, ImpactLaw};
 use crate::law::LawId;
-use crate::planar::path::ImpulsePath;
 use crate::planar::{
     Breakdown, BreakdownReason, ContactProblem, Inconsistency, LawDetail, PhaseKind, Resolution,
     SlipDirection,
@@ -46,17 +45,17 @@ impl ImpactLaw for Whittaker {
             law: LawId::Whittaker,
             reason: BreakdownReason::NegativeNormalImpulse { denominator },
         })?;
-        let mut path = ImpulsePath::new(problem);
-        path.push(PhaseKind::Slip(dir), ratio, f64::INFINITY);
-        let slip_after = path.velocity_at(pf).x;
+        let v = problem.velocity();
+        let slip_after = v.x + (problem.wtt() * ratio + problem.wtn()) * pf;
         let inconsistency = (dir != SlipDirection::None
             && problem.friction() > 0.0
             && slip_after * dir.sign() < 0.0)
             .then_some(Inconsistency::SlipReversed { slip_after });
-        Ok(finish(
+        Ok(finish_line(
             problem,
             LawId::Whittaker,
-            &path,
+            PhaseKind::Slip(dir),
+            ratio,
             pf,
             LawDetail::None,
             inconsistency,
