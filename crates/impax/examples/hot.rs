@@ -9,10 +9,12 @@ fn main() {
         .unwrap_or_else(|| "energetic".into())
         .parse()
         .expect("a law id");
-    let n: usize = args.next().map_or(10_000_000, |s| s.parse().expect("a count"));
+    let n: usize = args
+        .next()
+        .map_or(10_000_000, |s| s.parse().expect("a count"));
     let a = 30f64.to_radians();
-    let p = ContactProblem::from_entries(3.5, 0.0, 1.0, a.sin(), -a.cos(), 0.4, 0.7)
-        .expect("valid");
+    let p =
+        ContactProblem::from_entries(3.5, 0.0, 1.0, a.sin(), -a.cos(), 0.4, 0.7).expect("valid");
     let t = std::time::Instant::now();
     let mut acc = 0.0;
     for _ in 0..n {

@@ -112,6 +112,7 @@ impl ImpulsePath {
     pub const CAPACITY: usize = 2;
 
     /// An empty path starting at `p = 0`, `v = v⁻`.
+    #[inline(always)]
     pub fn new(problem: &ContactProblem) -> Self {
         let v = problem.velocity();
         let blank = Segment {
@@ -139,6 +140,7 @@ impl ImpulsePath {
     }
 
     /// Append a segment with ratio `k` ending at normal impulse `end` (≥ the current end).
+    #[inline(always)]
     pub fn push(&mut self, kind: PhaseKind, ratio: f64, end: f64) {
         let (start, v_start, pt_start) = if self.len == 0 {
             (0.0, self.segs[0].v_start, 0.0)
@@ -166,6 +168,7 @@ impl ImpulsePath {
     /// Append a segment that starts where the previous one brought the slip to rest: its
     /// starting tangential velocity is exactly zero (the halt is defined by `v_t = 0`; the
     /// recomputed `v_t` would carry round-off).
+    #[inline(always)]
     pub fn push_from_rest(&mut self, kind: PhaseKind, ratio: f64, end: f64) {
         self.push(kind, ratio, end);
         self.segs[self.len - 1].v_start.x = 0.0;
@@ -198,6 +201,7 @@ impl ImpulsePath {
     }
 
     /// Normal work `∫₀^{pn} v_n dp_n`.
+    #[inline]
     pub fn normal_work_to(&self, pn: f64) -> f64 {
         let mut w = 0.0;
         for s in self.segments() {
@@ -223,6 +227,7 @@ impl ImpulsePath {
 
     /// First normal impulse at which `v_n` reaches `target` from below, if the path does
     /// (used for the end of compression, `target = 0`, and Newton's rule, `−e v_n⁻`).
+    #[inline]
     pub fn first_normal_velocity(&self, target: f64) -> Option<f64> {
         for s in self.segments() {
             let gap = target - s.v_start.y;
@@ -241,6 +246,7 @@ impl ImpulsePath {
 
     /// Normal impulse `P ≥ from` at which the normal work since `from` reaches `work ≥ 0`,
     /// assuming `v_n ≥ 0` from `from` on (true after compression).
+    #[inline]
     pub fn normal_work_reached(&self, from: f64, work: f64) -> Option<f64> {
         let mut remaining = work;
         for s in self.segments() {
@@ -273,7 +279,7 @@ impl ImpulsePath {
 
     /// Impulse, velocity, compression, works and phases of the path ended at `pf`, in one
     /// pass over the segments.
-    #[inline]
+    #[inline(always)]
     pub fn summarize(&self, pf: f64) -> PathSummary {
         let mut out = PathSummary {
             impulse: Vec2::new(0.0, pf),

@@ -11,8 +11,8 @@
 //! cancellation-free form. Since `W_n ≤ 0` and friction work `W_t ≤ 0` under Coulomb's law,
 //! `ΔT = W_n + W_t ≤ 0`: this law never gains energy.
 
-use super::darboux_keller::{compression_end, darboux_keller_path};
-use super::{finish, ImpactLaw};
+use super::darboux_keller::DarbouxKellerPath;
+use super::{assemble, ImpactLaw};
 use crate::law::LawId;
 use crate::planar::{ContactProblem, LawDetail, Resolution};
 
@@ -35,20 +35,16 @@ impl ImpactLaw for Energetic {
 
     #[inline]
     fn resolve(&self, problem: &ContactProblem) -> Resolution {
-        let (path, slip_halt) = darboux_keller_path(problem);
-        let pc = compression_end(&path);
+        let path = DarbouxKellerPath::new(problem);
+        let pc = path.first_normal_velocity(0.0);
         let e = problem.restitution();
-        let wc = path.normal_work_to(pc);
-        let pf = path
-            .normal_work_reached(pc, -e * e * wc)
-            .expect("the last Darboux–Keller segment is unbounded");
-        Ok(finish(
+        let pf = path.restitution_work_reached(pc, -e * e * path.normal_work_to(pc));
+        Ok(assemble(
             problem,
             LawId::Energetic,
-            &path,
-            pf,
+            path.summarize(pf),
             LawDetail::DarbouxKeller {
-                slip_halt: slip_halt.filter(|&ps| ps < pf),
+                slip_halt: path.slip_halt().filter(|&ps| ps < pf),
             },
             None,
         ))

@@ -114,7 +114,7 @@ pub(crate) fn finish_line(
 }
 
 #[inline]
-fn assemble(
+pub(crate) fn assemble(
     problem: &ContactProblem,
     law: LawId,
     sum: PathSummary,

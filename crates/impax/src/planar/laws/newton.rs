@@ -4,8 +4,8 @@
 //! (Newton 1686). With slip reversal during restitution this rule can raise the kinetic
 //! energy (Stronge 1991); the outcome then says [`Verdict::EnergyGained`](crate::planar::Verdict).
 
-use super::darboux_keller::darboux_keller_path;
-use super::{finish, ImpactLaw};
+use super::darboux_keller::DarbouxKellerPath;
+use super::{assemble, ImpactLaw};
 use crate::law::LawId;
 use crate::planar::{ContactProblem, LawDetail, Resolution};
 
@@ -29,18 +29,14 @@ impl ImpactLaw for Newton {
 
     #[inline]
     fn resolve(&self, problem: &ContactProblem) -> Resolution {
-        let (path, slip_halt) = darboux_keller_path(problem);
-        let target = -problem.restitution() * problem.velocity().y;
-        let pf = path
-            .first_normal_velocity(target)
-            .expect("the last Darboux–Keller segment has dv_n/dp_n > 0");
-        Ok(finish(
+        let path = DarbouxKellerPath::new(problem);
+        let pf = path.first_normal_velocity(-problem.restitution() * problem.velocity().y);
+        Ok(assemble(
             problem,
             LawId::Newton,
-            &path,
-            pf,
+            path.summarize(pf),
             LawDetail::DarbouxKeller {
-                slip_halt: slip_halt.filter(|&ps| ps < pf),
+                slip_halt: path.slip_halt().filter(|&ps| ps < pf),
             },
             None,
         ))

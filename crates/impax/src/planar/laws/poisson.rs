@@ -3,8 +3,8 @@
 //! Termination (Poisson 1817; theory §2): `p_f = (1 + e) p_c`, the restitution impulse is `e`
 //! times the compression impulse.
 
-use super::darboux_keller::{compression_end, darboux_keller_path};
-use super::{finish, ImpactLaw};
+use super::darboux_keller::DarbouxKellerPath;
+use super::{assemble, ImpactLaw};
 use crate::law::LawId;
 use crate::planar::{ContactProblem, LawDetail, Resolution};
 
@@ -27,15 +27,14 @@ impl ImpactLaw for Poisson {
 
     #[inline]
     fn resolve(&self, problem: &ContactProblem) -> Resolution {
-        let (path, slip_halt) = darboux_keller_path(problem);
-        let pf = (1.0 + problem.restitution()) * compression_end(&path);
-        Ok(finish(
+        let path = DarbouxKellerPath::new(problem);
+        let pf = (1.0 + problem.restitution()) * path.first_normal_velocity(0.0);
+        Ok(assemble(
             problem,
             LawId::Poisson,
-            &path,
-            pf,
+            path.summarize(pf),
             LawDetail::DarbouxKeller {
-                slip_halt: slip_halt.filter(|&ps| ps < pf),
+                slip_halt: path.slip_halt().filter(|&ps| ps < pf),
             },
             None,
         ))
