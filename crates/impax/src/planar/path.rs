@@ -194,89 +194,6 @@ impl ImpulsePath {
         self.segs[self.index_of(pn)].velocity_at(pn)
     }
 
-    /// Impulse `(p_t, p_n)` at normal impulse `pn`.
-    pub fn impulse_at(&self, pn: f64) -> Vec2 {
-        let s = &self.segs[self.index_of(pn)];
-        Vec2::new(s.pt_start + s.ratio * (pn - s.start), pn)
-    }
-
-    /// Normal work `∫₀^{pn} v_n dp_n`.
-    #[inline]
-    pub fn normal_work_to(&self, pn: f64) -> f64 {
-        let mut w = 0.0;
-        for s in self.segments() {
-            if pn <= s.end {
-                return w + s.normal_work_to(pn);
-            }
-            w += s.normal_work_to(s.end);
-        }
-        w
-    }
-
-    /// Friction work `∫₀^{pn} v_t dp_t`.
-    pub fn friction_work_to(&self, pn: f64) -> f64 {
-        let mut w = 0.0;
-        for s in self.segments() {
-            if pn <= s.end {
-                return w + s.friction_work_to(pn);
-            }
-            w += s.friction_work_to(s.end);
-        }
-        w
-    }
-
-    /// First normal impulse at which `v_n` reaches `target` from below, if the path does
-    /// (used for the end of compression, `target = 0`, and Newton's rule, `−e v_n⁻`).
-    #[inline]
-    pub fn first_normal_velocity(&self, target: f64) -> Option<f64> {
-        for s in self.segments() {
-            let gap = target - s.v_start.y;
-            if gap <= 0.0 {
-                return Some(s.start);
-            }
-            if s.slope.y > 0.0 {
-                let x = gap / s.slope.y;
-                if s.start + x <= s.end {
-                    return Some(s.start + x);
-                }
-            }
-        }
-        None
-    }
-
-    /// Normal impulse `P ≥ from` at which the normal work since `from` reaches `work ≥ 0`,
-    /// assuming `v_n ≥ 0` from `from` on (true after compression).
-    #[inline]
-    pub fn normal_work_reached(&self, from: f64, work: f64) -> Option<f64> {
-        let mut remaining = work;
-        for s in self.segments() {
-            if s.end < from {
-                continue;
-            }
-            let start = s.start.max(from);
-            let v0 = s.velocity_at(start).y;
-            let len = s.end - start;
-            let seg_work = if len.is_finite() {
-                len * (v0 + 0.5 * s.slope.y * len)
-            } else {
-                f64::INFINITY
-            };
-            if remaining <= seg_work {
-                // Solve v0 x + ½ k x² = remaining with the cancellation-free root.
-                let disc = (v0 * v0 + 2.0 * s.slope.y * remaining).max(0.0);
-                let denom = v0 + disc.sqrt();
-                let x = if denom > 0.0 {
-                    2.0 * remaining / denom
-                } else {
-                    0.0
-                };
-                return Some(start + x.min(len));
-            }
-            remaining -= seg_work;
-        }
-        None
-    }
-
     /// Impulse, velocity, compression, works and phases of the path ended at `pf`, in one
     /// pass over the segments.
     #[inline(always)]
@@ -321,17 +238,5 @@ impl ImpulsePath {
             out.compression_work = out.normal_work;
         }
         out
-    }
-
-    /// The phases of the path truncated at `pn`.
-    pub fn phases_to(&self, pn: f64) -> Phases {
-        let mut phases = Phases::new();
-        for s in self.segments() {
-            if s.start >= pn && !phases.is_empty() {
-                break;
-            }
-            phases.push(s.kind, s.end.min(pn));
-        }
-        phases
     }
 }
