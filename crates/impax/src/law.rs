@@ -101,6 +101,17 @@ impl LawId {
     }
 }
 
+impl LawId {
+    /// Resolve a spatial (3D) contact-space problem with this law.
+    #[inline]
+    pub fn resolve3(
+        self,
+        problem: &crate::spatial::ContactProblem3,
+    ) -> crate::spatial::Resolution3 {
+        crate::spatial::laws::resolve(self, problem)
+    }
+}
+
 impl fmt::Display for LawId {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(self.as_str())

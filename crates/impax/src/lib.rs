@@ -33,6 +33,7 @@ pub mod law;
 pub mod math;
 pub mod paper;
 pub mod planar;
+pub mod spatial;
 
 pub use error::{Error, Result};
 pub use law::{ImpactLaw, LawId};

@@ -7,6 +7,11 @@ pub type Vec2 = nalgebra::Vector2<f64>;
 /// A 2×2 matrix, e.g. the planar contact-space inverse inertia `W`.
 pub type Mat2 = nalgebra::Matrix2<f64>;
 
+/// A spatial vector: `(t1, t2, n)` in the contact frame, or `(x, y, z)` for a body.
+pub type Vec3 = nalgebra::Vector3<f64>;
+/// A 3×3 matrix, e.g. the spatial contact-space inverse inertia `W` or an inertia tensor.
+pub type Mat3 = nalgebra::Matrix3<f64>;
+
 /// Sign of `x` as `-1.0`, `0.0` or `1.0` (unlike [`f64::signum`], zero maps to zero).
 #[inline]
 pub fn sign(x: f64) -> f64 {

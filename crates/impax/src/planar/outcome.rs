@@ -312,6 +312,11 @@ pub enum BreakdownReason {
     },
     /// Smith's equation for `η` has no admissible root.
     NoEtaRoot,
+    /// The normal velocity cannot reach the termination: the bodies would not separate
+    /// (a numerically degenerate problem).
+    NoSeparation,
+    /// The law is defined for planar problems only (`two-phase`, `smith`, `smith-centre`).
+    PlanarOnly,
     /// The law reads a body's centre velocity (`smith-centre`) and was given only a
     /// contact-space problem.
     NeedsBody,
@@ -325,6 +330,8 @@ impl BreakdownReason {
             BreakdownReason::NoConsistentSplit { .. } => "no-consistent-split",
             BreakdownReason::NoEtaRoot => "no-eta-root",
             BreakdownReason::NeedsBody => "needs-body",
+            BreakdownReason::NoSeparation => "no-separation",
+            BreakdownReason::PlanarOnly => "planar-only",
         }
     }
 }
@@ -344,6 +351,10 @@ impl fmt::Display for BreakdownReason {
                 "no consistent two-phase split (switch at p_n = {switch_impulse:.6}, total {total_impulse:.6})"
             ),
             BreakdownReason::NoEtaRoot => f.write_str("Smith's η equation has no admissible root"),
+            BreakdownReason::NoSeparation => {
+                f.write_str("the normal velocity cannot reach the termination: no separation")
+            }
+            BreakdownReason::PlanarOnly => f.write_str("the law is defined for planar impacts only"),
             BreakdownReason::NeedsBody => {
                 f.write_str("the law reads a body's centre velocity; contact space has none")
             }

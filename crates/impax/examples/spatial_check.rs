@@ -1,0 +1,78 @@
+//! Quick check: planar problems embedded in 3D against the planar closed form.
+use impax::{planar::ContactProblem, spatial::ContactProblem3, LawId};
+
+fn main() {
+    let mut state = 12345u64;
+    let mut next = move || {
+        state = state.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = state;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let mut worst = 0.0f64;
+    let mut steps = 0u64;
+    let n = 2000;
+    for _ in 0..n {
+        let (l11, l21, l22) = (0.2 + 2.0 * next(), 2.0 * next() - 1.0, 0.2 + 2.0 * next());
+        let (a, b, c) = (l11 * l11, l11 * l21, l21 * l21 + l22 * l22);
+        let p = match ContactProblem::from_entries(
+            a,
+            b,
+            c,
+            4.0 * next() - 2.0,
+            -0.05 - 2.0 * next(),
+            2.0 * next(),
+            next(),
+        ) {
+            Ok(p) => p,
+            Err(_) => continue,
+        };
+        let p3 = ContactProblem3::from_planar(&p, 1.0 + next()).unwrap();
+        for law in [
+            LawId::Newton,
+            LawId::Poisson,
+            LawId::Energetic,
+            LawId::Whittaker,
+            LawId::Brach,
+        ] {
+            let o2 = law.resolve(&p);
+            let o3 = law.resolve3(&p3);
+            match (o2, o3) {
+                (Ok(x), Ok(y)) => {
+                    let s = x.impulse.norm().max(1e-300);
+                    let d = ((x.impulse.x - y.impulse.x)
+                        .abs()
+                        .max((x.impulse.y - y.impulse.z).abs())
+                        + y.impulse.y.abs())
+                        / s;
+                    if d > worst {
+                        worst = d;
+                        if d > 1e-9 {
+                            println!(
+                                "{law} dev {d:e} {p:?}\n  2d {:?} {}\n  3d {:?} {}",
+                                x.impulse,
+                                x.phases.summary(),
+                                y.impulse,
+                                y.phases.summary()
+                            );
+                        }
+                    }
+                    if let impax::spatial::Detail3::DarbouxKeller { steps: s, .. } = y.detail {
+                        steps += s as u64;
+                    }
+                }
+                (Err(_), Err(_)) => {}
+                (a, b) => println!(
+                    "{law} mismatch {:?} vs {:?}",
+                    a.map(|o| o.impulse),
+                    b.map(|o| o.impulse)
+                ),
+            }
+        }
+    }
+    println!(
+        "worst relative deviation {worst:e}; mean steps {}",
+        steps as f64 / (3 * n) as f64
+    );
+}

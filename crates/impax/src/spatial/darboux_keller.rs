@@ -1,0 +1,728 @@
+//! The spatial Darboux–Keller integration in normal impulse (theory §2, "Spatial").
+//!
+//! Three stages, each exact or integrated to near machine precision:
+//!
+//! 1. **Initial slip** (when `v_t⁻ ≠ 0`): with `ŝ = v_t/|v_t|` and `g = w_tn − μ W_tt ŝ`,
+//!    ```text
+//!    dv_t/dp_n = g,  dv_n/dp_n = w_nn − μ w_tn·ŝ,  dp_t/dp_n = −μ ŝ,
+//!    dW_n/dp_n = v_n,  dW_t/dp_n = −μ |v_t|,
+//!    ```
+//!    integrated by an adaptive Dormand–Prince 5(4) method in `p_n`. The direction field is
+//!    singular at `σ = |v_t| → 0`, so near a halt the independent variable becomes
+//!    `u = ln σ` (decreasing), in which the system is smooth all the way:
+//!    ```text
+//!    dφ/du = (ŝ × g)/(ŝ·g),  dp_n/du = σ/(ŝ·g),  d(·)/du = d(·)/dp_n · dp_n/du,
+//!    ```
+//!    integrated until `σ` has shrunk by `e⁻⁴⁰`; the remaining impulse `σ/|ŝ·g|` is added in
+//!    closed form. No small epsilon decides the halt.
+//! 2. **Stick** if `|W_tt⁻¹ w_tn| ≤ μ`: `dv_n/dp_n = w_nn − w_tnᵀ W_tt⁻¹ w_tn`, linear;
+//! 3. otherwise **resumed slip** at once along the unique centrifugal invariant ray
+//!    `(λ' I + μ W_tt) ŝ = w_tn`, `λ' > 0` ([`resumption_direction`]): straight, linear.
+//!
+//! Events: the end of compression (`v_n = 0`), the termination of the law (`newton`
+//! `v_n = −e v_n⁻`; `poisson` `p_n = (1+e) p_c`; `energetic` `W_n = (1 − e²) W_c`), and a
+//! second compression (jamb: `v_n` falls back to zero after compression ended; reported).
+//! Each is located on the discrete solution by re-stepping from the step's start
+//! (Illinois iteration), to near machine precision; in the linear stages they are exact.
+
+use super::invariant::{resumption_direction, sticking_ratio};
+use super::outcome::{Phase3Kind, Phases3};
+use super::rk::dopri_step;
+use super::ContactProblem3;
+use crate::math::{Mat2, Vec2, Vec3};
+use crate::planar::BreakdownReason;
+
+/// The termination rule of a Darboux–Keller law.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Termination {
+    /// `v_n(p_f) = −e v_n⁻`.
+    Newton,
+    /// `p_f = (1 + e) p_c`.
+    Poisson,
+    /// `W_n(p_f) = (1 − e²) W_c`.
+    Energetic,
+}
+
+/// Relative tolerance of the adaptive integration.
+pub const RTOL: f64 = 1e-13;
+
+/// How far below the switch the logarithmic stage integrates (`σ` shrinks by `e^-40`).
+const LOG_SPAN: f64 = 40.0;
+
+/// The result of the integration.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PathEnd {
+    /// Impulse at the end.
+    pub impulse: Vec3,
+    /// Contact velocity at the end.
+    pub velocity: Vec3,
+    /// End of (the first) compression, if reached.
+    pub compression_impulse: Option<f64>,
+    /// Normal work in compression.
+    pub compression_work: f64,
+    /// Normal work to the end.
+    pub normal_work: f64,
+    /// Friction work to the end.
+    pub friction_work: f64,
+    /// Phases.
+    pub phases: Phases3,
+    /// Where the initial slip halted.
+    pub slip_halt: Option<f64>,
+    /// Where a second compression began.
+    pub second_compression: Option<f64>,
+    /// Accepted integration steps.
+    pub steps: u32,
+}
+
+/// The moving point of the integration, whatever the independent variable.
+#[derive(Debug, Clone, Copy)]
+struct Point {
+    p: f64,
+    vt: Vec2,
+    vn: f64,
+    pt: Vec2,
+    wn: f64,
+    wt: f64,
+}
+
+/// Event bookkeeping shared by the stages.
+struct Events {
+    term: Termination,
+    e: f64,
+    target: f64,
+    pc: Option<f64>,
+    wc: f64,
+    second: Option<f64>,
+}
+
+impl Events {
+    /// The termination function, increasing through zero at the end (only after `p_c`).
+    #[inline]
+    fn terminal(&self, pt: &Point) -> f64 {
+        match self.term {
+            Termination::Newton => pt.vn - self.target,
+            Termination::Poisson => pt.p - (1.0 + self.e) * self.pc.unwrap_or(f64::INFINITY),
+            Termination::Energetic => pt.wn - (1.0 - self.e * self.e) * self.wc,
+        }
+    }
+}
+
+/// Find `θ ∈ (0, 1]` with `g(θ) = 0` given `g(0) < 0 ≤ g(1)` (Illinois false position).
+fn locate(mut g: impl FnMut(f64) -> f64, g0: f64, g1: f64) -> f64 {
+    let (mut a, mut fa, mut b, mut fb) = (0.0f64, g0, 1.0f64, g1);
+    let mut side = 0;
+    for _ in 0..100 {
+        if fb == 0.0 || (b - a).abs() <= 4.0 * f64::EPSILON * b.abs().max(a.abs()) {
+            break;
+        }
+        let mut c = (a * fb - b * fa) / (fb - fa);
+        if !(c > a.min(b) && c < a.max(b)) {
+            c = 0.5 * (a + b);
+        }
+        let fc = g(c);
+        if fc == 0.0 {
+            return c;
+        }
+        if (fc < 0.0) == (fa < 0.0) {
+            a = c;
+            fa = fc;
+            if side == -1 {
+                fb *= 0.5;
+            }
+            side = -1;
+        } else {
+            b = c;
+            fb = fc;
+            if side == 1 {
+                fa *= 0.5;
+            }
+            side = 1;
+        }
+    }
+    b
+}
+
+/// Scales for the error control: velocity, impulse, work.
+#[derive(Clone, Copy)]
+struct Scales {
+    v: f64,
+    p: f64,
+    w: f64,
+}
+
+#[inline]
+fn error_norm<const N: usize>(
+    err: &[f64; N],
+    y0: &[f64; N],
+    y1: &[f64; N],
+    atol: &[f64; N],
+) -> f64 {
+    let mut m = 0.0f64;
+    for i in 0..N {
+        let sc = atol[i] + RTOL * y0[i].abs().max(y1[i].abs());
+        m = m.max((err[i] / sc).abs());
+    }
+    m
+}
+
+/// Integrate the Darboux–Keller equations of `problem` to the termination `term`, calling
+/// `observe(p_n, v)` at every accepted point (for hodographs).
+pub fn integrate(
+    problem: &ContactProblem3,
+    term: Termination,
+    observe: &mut impl FnMut(f64, Vec3),
+) -> Result<PathEnd, BreakdownReason> {
+    let wtt: Mat2 = problem.wtt();
+    let wtn = problem.wtn();
+    let wnn = problem.wnn();
+    let mu = problem.friction();
+    let e = problem.restitution();
+    let v0 = problem.velocity();
+    let mut ev = Events {
+        term,
+        e,
+        target: -e * v0.z,
+        pc: None,
+        wc: 0.0,
+        second: None,
+    };
+    let scales = {
+        let v = v0.norm();
+        let p = (1.0 + e) * (-v0.z) / wnn
+            + v0.xy().norm() / (mu * wtt.norm()).max(f64::MIN_POSITIVE).max(wnn);
+        Scales { v, p, w: v * p }
+    };
+    let mut pt = Point {
+        p: 0.0,
+        vt: v0.xy(),
+        vn: v0.z,
+        pt: Vec2::zeros(),
+        wn: 0.0,
+        wt: 0.0,
+    };
+    observe(0.0, v0);
+    let mut phases = Phases3::new();
+    let mut steps = 0u32;
+    let mut slip_halt = None;
+    let phi0 = v0.y.atan2(v0.x);
+
+    // ---- Stage 1: initial slip ----
+    if pt.vt.x != 0.0 || pt.vt.y != 0.0 {
+        let stage = slip_stage(
+            &wtt, wtn, wnn, mu, scales, &mut pt, &mut ev, &mut steps, observe,
+        )?;
+        match stage {
+            SlipEnd::Terminated { phi } => {
+                phases.push(
+                    Phase3Kind::Slip {
+                        from: phi0,
+                        to: phi,
+                    },
+                    pt.p,
+                );
+                return Ok(finish(&pt, &ev, phases, None, steps));
+            }
+            SlipEnd::Halted { phi } => {
+                phases.push(
+                    Phase3Kind::Slip {
+                        from: phi0,
+                        to: phi,
+                    },
+                    pt.p,
+                );
+                slip_halt = Some(pt.p);
+            }
+        }
+    }
+
+    // ---- Stage 2: stick or resumed slip, linear in p_n ----
+    let lambda = sticking_ratio(problem);
+    let piece = if lambda.norm() <= mu {
+        Linear {
+            kind: Phase3Kind::Stick,
+            ratio: lambda,
+            dir: Vec2::zeros(),
+            sigma: 0.0,
+            dsigma: 0.0,
+            length: f64::INFINITY,
+        }
+    } else {
+        let (s, rate) = resumption_direction(problem).ok_or(BreakdownReason::NoSeparation)?;
+        Linear {
+            kind: Phase3Kind::Resumed {
+                angle: s.y.atan2(s.x),
+            },
+            ratio: -mu * s,
+            dir: s,
+            sigma: 0.0,
+            dsigma: rate,
+            length: f64::INFINITY,
+        }
+    };
+    let kind = piece.kind;
+    match linear_piece(&piece, &mut pt, &mut ev, wnn, wtn, mu)? {
+        true => {
+            observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
+            phases.push(kind, pt.p);
+            Ok(finish(&pt, &ev, phases, slip_halt, steps))
+        }
+        false => Err(BreakdownReason::NoSeparation),
+    }
+}
+
+/// A straight piece of the path: friction ratio `ratio`, slip `σ dir` with `σ` changing at
+/// rate `dsigma` from `sigma`, of normal-impulse length `length`.
+struct Linear {
+    kind: Phase3Kind,
+    ratio: Vec2,
+    dir: Vec2,
+    sigma: f64,
+    dsigma: f64,
+    length: f64,
+}
+
+/// Advance along a straight piece in closed form, locating the end of compression, a second
+/// compression and the termination exactly. Returns `true` if the law terminated in the
+/// piece (`pt` is then the end point), `false` if the piece was run to its end.
+fn linear_piece(
+    piece: &Linear,
+    pt: &mut Point,
+    ev: &mut Events,
+    wnn: f64,
+    wtn: Vec2,
+    mu: f64,
+) -> Result<bool, BreakdownReason> {
+    let kn = wnn + wtn.dot(&piece.ratio);
+    let start = *pt;
+    let at = |x: f64| -> Point {
+        Point {
+            p: start.p + x,
+            vt: piece.dir * (piece.sigma + piece.dsigma * x),
+            vn: start.vn + kn * x,
+            pt: start.pt + piece.ratio * x,
+            wn: start.wn + x * (start.vn + 0.5 * kn * x),
+            wt: start.wt - mu * x * (piece.sigma + 0.5 * piece.dsigma * x),
+        }
+    };
+    // Smallest x ≥ 0 past the minimum of the work with v x + ½ kn x² = w.
+    let work_root = |v: f64, w: f64| -> Option<f64> {
+        let disc = v * v + 2.0 * kn * w;
+        if disc < 0.0 || kn <= 0.0 && v <= 0.0 {
+            return None;
+        }
+        let sq = disc.max(0.0).sqrt();
+        let x = if v >= 0.0 {
+            if v + sq > 0.0 {
+                2.0 * w / (v + sq)
+            } else {
+                0.0
+            }
+        } else {
+            (-v + sq) / kn
+        };
+        (x >= 0.0).then_some(x)
+    };
+    if ev.pc.is_none() {
+        if kn > 0.0 {
+            let x = -start.vn / kn;
+            if x <= piece.length {
+                let c = at(x);
+                ev.pc = Some(c.p);
+                ev.wc = c.wn;
+            }
+        }
+        if ev.pc.is_none() {
+            if !piece.length.is_finite() {
+                return Err(BreakdownReason::NoSeparation);
+            }
+            *pt = at(piece.length);
+            return Ok(false);
+        }
+    } else if ev.second.is_none() && start.vn > 0.0 && kn < 0.0 {
+        let x = -start.vn / kn;
+        if x <= piece.length {
+            ev.second = Some(start.p + x);
+        }
+    }
+    let pc = ev.pc.expect("set above");
+    let x_end = match ev.term {
+        Termination::Newton => {
+            if kn > 0.0 {
+                Some(((ev.target - start.vn) / kn).max(0.0))
+            } else if start.vn >= ev.target {
+                Some(0.0)
+            } else {
+                None
+            }
+        }
+        Termination::Poisson => Some(((1.0 + ev.e) * pc - start.p).max(0.0)),
+        Termination::Energetic => {
+            let need = (1.0 - ev.e * ev.e) * ev.wc - start.wn;
+            if need <= 0.0 && start.p >= pc && start.vn >= 0.0 {
+                Some(0.0)
+            } else {
+                work_root(start.vn, need)
+            }
+        }
+    };
+    match x_end {
+        Some(x) if x <= piece.length => {
+            *pt = at(x);
+            Ok(true)
+        }
+        _ if piece.length.is_finite() => {
+            *pt = at(piece.length);
+            Ok(false)
+        }
+        _ => Err(BreakdownReason::NoSeparation),
+    }
+}
+
+fn finish(pt: &Point, ev: &Events, phases: Phases3, slip_halt: Option<f64>, steps: u32) -> PathEnd {
+    let pc = ev.pc.filter(|&pc| pc <= pt.p);
+    PathEnd {
+        impulse: Vec3::new(pt.pt.x, pt.pt.y, pt.p),
+        velocity: Vec3::new(pt.vt.x, pt.vt.y, pt.vn),
+        compression_impulse: pc,
+        compression_work: if pc.is_some() { ev.wc } else { pt.wn },
+        normal_work: pt.wn,
+        friction_work: pt.wt,
+        phases,
+        slip_halt: slip_halt.filter(|&s| s < pt.p),
+        second_compression: ev.second,
+        steps,
+    }
+}
+
+enum SlipEnd {
+    Terminated { phi: f64 },
+    Halted { phi: f64 },
+}
+
+/// Check the events between two points (`a` before, `b` after a step); returns the first
+/// event's kind and a closure-free description: 0 = compression end, 1 = termination,
+/// 2 = second compression.
+#[inline]
+fn first_event(ev: &Events, a: &Point, b: &Point) -> Option<(u8, f64, f64)> {
+    if ev.pc.is_none() {
+        if b.vn >= 0.0 && a.vn < 0.0 {
+            return Some((0, a.vn, b.vn));
+        }
+        return None;
+    }
+    let (ga, gb) = (ev.terminal(a), ev.terminal(b));
+    let term = ga < 0.0 && gb >= 0.0;
+    let second = ev.second.is_none() && a.vn > 0.0 && b.vn <= 0.0;
+    match (term, second) {
+        (true, _) => Some((1, ga, gb)),
+        (false, true) => Some((2, -a.vn, -b.vn)),
+        _ => None,
+    }
+}
+
+#[allow(clippy::too_many_arguments)]
+fn slip_stage(
+    wtt: &Mat2,
+    wtn: Vec2,
+    wnn: f64,
+    mu: f64,
+    sc: Scales,
+    pt: &mut Point,
+    ev: &mut Events,
+    steps: &mut u32,
+    observe: &mut impl FnMut(f64, Vec3),
+) -> Result<SlipEnd, BreakdownReason> {
+    // State in p-mode: [vt1, vt2, vn, pt1, pt2, wn, wt].
+    let fp = |_p: f64, y: &[f64; 7]| -> [f64; 7] {
+        let vt = Vec2::new(y[0], y[1]);
+        let sigma = vt.norm();
+        let s = vt / sigma;
+        let g = wtn - mu * (wtt * s);
+        [
+            g.x,
+            g.y,
+            wnn - mu * wtn.dot(&s),
+            -mu * s.x,
+            -mu * s.y,
+            y[2],
+            -mu * sigma,
+        ]
+    };
+    // State in u-mode (u = ln σ): [φ, p, vn, pt1, pt2, wn, wt].
+    let fu = |u: f64, z: &[f64; 7]| -> [f64; 7] {
+        let sigma = u.exp();
+        let s = Vec2::new(z[0].cos(), z[0].sin());
+        let g = wtn - mu * (wtt * s);
+        let q = s.dot(&g);
+        let f = s.x * g.y - s.y * g.x;
+        let dp = sigma / q;
+        [
+            f / q,
+            dp,
+            (wnn - mu * wtn.dot(&s)) * dp,
+            -mu * s.x * dp,
+            -mu * s.y * dp,
+            z[2] * dp,
+            -mu * sigma * dp,
+        ]
+    };
+    let to_y = |p: &Point| [p.vt.x, p.vt.y, p.vn, p.pt.x, p.pt.y, p.wn, p.wt];
+    let from_y = |p: f64, y: &[f64; 7]| Point {
+        p,
+        vt: Vec2::new(y[0], y[1]),
+        vn: y[2],
+        pt: Vec2::new(y[3], y[4]),
+        wn: y[5],
+        wt: y[6],
+    };
+    let from_z = |u: f64, z: &[f64; 7]| Point {
+        p: z[1],
+        vt: u.exp() * Vec2::new(z[0].cos(), z[0].sin()),
+        vn: z[2],
+        pt: Vec2::new(z[3], z[4]),
+        wn: z[5],
+        wt: z[6],
+    };
+    let atol_p = [
+        RTOL * sc.v,
+        RTOL * sc.v,
+        RTOL * sc.v,
+        RTOL * sc.p,
+        RTOL * sc.p,
+        RTOL * sc.w,
+        RTOL * sc.w,
+    ];
+    let sigma0 = pt.vt.norm();
+    // The rest of the slip is a straight run into the origin when the direction is (to the
+    // last bit of the result) on an invariant ray: the remaining impulse σ/|ŝ·g| times the
+    // angular offset from the ray is below 1e-16 of the impulse scale. Returns (ŝ, ŝ·g).
+    let straight_tail = |vt: Vec2| -> Option<(Vec2, f64)> {
+        let sigma = vt.norm();
+        let s = vt / sigma;
+        let g = wtn - mu * (wtt * s);
+        let q = s.dot(&g);
+        if q >= 0.0 {
+            return None;
+        }
+        let f = s.x * g.y - s.y * g.x;
+        let gn = g.norm();
+        let est = (f.abs() / gn) * (1.0 + gn / -q) * (1.0 + mu) * sigma / -q;
+        (est <= 1e-16 * sc.p).then_some((s, q))
+    };
+    // Run the straight tail in closed form to the halt (or to an event inside it).
+    let run_tail =
+        |pt: &mut Point, ev: &mut Events, s: Vec2, q: f64| -> Result<SlipEnd, BreakdownReason> {
+            let sigma = pt.vt.norm();
+            let phi = s.y.atan2(s.x);
+            let piece = Linear {
+                kind: Phase3Kind::Stick,
+                ratio: -mu * s,
+                dir: s,
+                sigma,
+                dsigma: q,
+                length: sigma / -q,
+            };
+            if linear_piece(&piece, pt, ev, wnn, wtn, mu)? {
+                Ok(SlipEnd::Terminated { phi })
+            } else {
+                pt.vt = Vec2::zeros();
+                Ok(SlipEnd::Halted { phi })
+            }
+        };
+    let mut h = 0.05 * sc.p;
+    let max_steps = 200_000u32;
+    loop {
+        // ---------------- p-mode ----------------
+        let mut y = to_y(pt);
+        let mut k = fp(pt.p, &y);
+        let mut switch_to_log = false;
+        while *steps < max_steps {
+            if let Some((s, q)) = straight_tail(pt.vt) {
+                let end = run_tail(pt, ev, s, q)?;
+                observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
+                return Ok(end);
+            }
+            let sigma = pt.vt.norm();
+            let s = pt.vt / sigma;
+            let q = s.dot(&(wtn - mu * (wtt * s)));
+            // Go logarithmic once the slip is small and shrinking.
+            if sigma < 0.05 * sigma0 && q < 0.0 {
+                switch_to_log = true;
+                break;
+            }
+            // Never step past the predicted halt.
+            if q < 0.0 {
+                h = h.min(0.5 * sigma / -q);
+            }
+            let (y1, k1, err) = dopri_step(&fp, pt.p, &y, &k, h);
+            let en = error_norm(&err, &y, &y1, &atol_p);
+            if en.is_nan() || en > 1.0 {
+                h *= if en.is_finite() {
+                    (0.9 * en.powf(-0.2)).max(0.2)
+                } else {
+                    0.2
+                };
+                if h <= 1e-300 {
+                    return Err(BreakdownReason::NoSeparation);
+                }
+                continue;
+            }
+            let b = from_y(pt.p + h, &y1);
+            if let Some((kind, ga, gb)) = first_event(ev, pt, &b) {
+                let (p0, y0, k0, h0) = (pt.p, y, k, h);
+                let g = |theta: f64| -> f64 {
+                    let (yt, _, _) = dopri_step(&fp, p0, &y0, &k0, theta * h0);
+                    let c = from_y(p0 + theta * h0, &yt);
+                    match kind {
+                        0 => c.vn,
+                        1 => ev.terminal(&c),
+                        _ => -c.vn,
+                    }
+                };
+                let theta = locate(g, ga, gb);
+                let (yt, kt, _) = dopri_step(&fp, p0, &y0, &k0, theta * h0);
+                *pt = from_y(p0 + theta * h0, &yt);
+                *steps += 1;
+                observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
+                y = yt;
+                k = kt;
+                match kind {
+                    0 => {
+                        pt.vn = 0.0;
+                        y[2] = 0.0;
+                        ev.pc = Some(pt.p);
+                        ev.wc = pt.wn;
+                        if ev.terminal(pt) >= 0.0 {
+                            return Ok(SlipEnd::Terminated {
+                                phi: pt.vt.y.atan2(pt.vt.x),
+                            });
+                        }
+                    }
+                    1 => {
+                        return Ok(SlipEnd::Terminated {
+                            phi: pt.vt.y.atan2(pt.vt.x),
+                        })
+                    }
+                    _ => {
+                        ev.second = Some(pt.p);
+                    }
+                }
+                continue;
+            }
+            *pt = b;
+            y = y1;
+            k = k1;
+            *steps += 1;
+            observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
+            h *= (0.9 * en.max(1e-10).powf(-0.2)).min(5.0);
+        }
+        if !switch_to_log {
+            return Err(BreakdownReason::NoSeparation);
+        }
+        // ---------------- u-mode (u = ln σ, decreasing) ----------------
+        let u_start = pt.vt.norm().ln();
+        let u_end = u_start - LOG_SPAN;
+        let mut u = u_start;
+        let mut z = [
+            pt.vt.y.atan2(pt.vt.x),
+            pt.p,
+            pt.vn,
+            pt.pt.x,
+            pt.pt.y,
+            pt.wn,
+            pt.wt,
+        ];
+        let atol_u = [
+            RTOL,
+            RTOL * sc.p,
+            RTOL * sc.v,
+            RTOL * sc.p,
+            RTOL * sc.p,
+            RTOL * sc.w,
+            RTOL * sc.w,
+        ];
+        let mut kz = fu(u, &z);
+        let mut hu = -0.25f64;
+        let mut back_to_p = false;
+        while u > u_end && *steps < max_steps {
+            let hstep = hu.max(u_end - u);
+            let (z1, k1, err) = dopri_step(&fu, u, &z, &kz, hstep);
+            let en = error_norm(&err, &z, &z1, &atol_u);
+            if en.is_nan() || en > 1.0 {
+                hu *= if en.is_finite() {
+                    (0.9 * en.powf(-0.2)).max(0.2)
+                } else {
+                    0.2
+                };
+                continue;
+            }
+            let b = from_z(u + hstep, &z1);
+            if let Some((kind, ga, gb)) = first_event(ev, pt, &b) {
+                let (u0, z0, k0) = (u, z, kz);
+                let g = |theta: f64| -> f64 {
+                    let (zt, _, _) = dopri_step(&fu, u0, &z0, &k0, theta * hstep);
+                    let c = from_z(u0 + theta * hstep, &zt);
+                    match kind {
+                        0 => c.vn,
+                        1 => ev.terminal(&c),
+                        _ => -c.vn,
+                    }
+                };
+                let theta = locate(g, ga, gb);
+                let (zt, kt, _) = dopri_step(&fu, u0, &z0, &k0, theta * hstep);
+                u = u0 + theta * hstep;
+                z = zt;
+                kz = kt;
+                *pt = from_z(u, &z);
+                *steps += 1;
+                observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
+                match kind {
+                    0 => {
+                        pt.vn = 0.0;
+                        z[2] = 0.0;
+                        ev.pc = Some(pt.p);
+                        ev.wc = pt.wn;
+                        if ev.terminal(pt) >= 0.0 {
+                            return Ok(SlipEnd::Terminated { phi: z[0] });
+                        }
+                    }
+                    1 => return Ok(SlipEnd::Terminated { phi: z[0] }),
+                    _ => ev.second = Some(pt.p),
+                }
+                continue;
+            }
+            u += hstep;
+            z = z1;
+            kz = k1;
+            *pt = b;
+            *steps += 1;
+            observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
+            if let Some((s, q)) = straight_tail(pt.vt) {
+                let end = run_tail(pt, ev, s, q)?;
+                observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
+                return Ok(end);
+            }
+            // The slip must keep shrinking; otherwise return to p-mode.
+            let s = Vec2::new(z[0].cos(), z[0].sin());
+            let q = s.dot(&(wtn - mu * (wtt * s)));
+            if q >= -1e-3 * (wtn.norm() + mu * wtt.norm()) {
+                back_to_p = true;
+                break;
+            }
+            hu *= (0.9 * en.max(1e-10).powf(-0.2)).min(5.0);
+        }
+        if back_to_p {
+            h = 0.05 * pt.vt.norm().max(f64::MIN_POSITIVE);
+            continue;
+        }
+        // σ has shrunk by e^-40: the rest is a straight run at the last bit of the result.
+        let s = Vec2::new(z[0].cos(), z[0].sin());
+        let q = s.dot(&(wtn - mu * (wtt * s)));
+        if q >= 0.0 {
+            return Err(BreakdownReason::NoSeparation);
+        }
+        let end = run_tail(pt, ev, s, q)?;
+        observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
+        return Ok(end);
+    }
+}

@@ -1,0 +1,240 @@
+//! The spatial laws: `whittaker` and `brach` in closed form, `newton`, `poisson` and
+//! `energetic` by the Darboux–Keller integration ([`super::darboux_keller`]).
+
+use super::darboux_keller::{integrate, PathEnd, Termination};
+use super::outcome::{Detail3, Outcome3, Phase3Kind, Phases3, Resolution3};
+use super::ContactProblem3;
+use crate::law::LawId;
+use crate::math::{Vec2, Vec3};
+use crate::planar::laws::ENERGY_GAIN_TOL;
+use crate::planar::{Breakdown, BreakdownReason, Inconsistency, Verdict, WorkSplit};
+
+/// Whether `ΔT` is a real gain: beyond `ENERGY_GAIN_TOL` of the approach energy and beyond
+/// the round-off of `½ (v⁻ + v⁺)·p`.
+pub fn is_energy_gain3(
+    problem: &ContactProblem3,
+    energy_change: f64,
+    p: Vec3,
+    v_after: Vec3,
+) -> bool {
+    if energy_change <= 0.0 {
+        return false;
+    }
+    let v = problem.velocity();
+    let round_off = 4.0 * f64::EPSILON * (v.abs() + v_after.abs()).dot(&p.abs());
+    energy_change > round_off && energy_change > ENERGY_GAIN_TOL * problem.approach_energy()
+}
+
+fn assemble(
+    problem: &ContactProblem3,
+    law: LawId,
+    end: &PathEnd,
+    detail: Detail3,
+    inconsistency: Option<Inconsistency>,
+) -> Outcome3 {
+    let energy_change = 0.5 * (problem.velocity() + end.velocity).dot(&end.impulse);
+    let verdict = if is_energy_gain3(problem, energy_change, end.impulse, end.velocity) {
+        Verdict::EnergyGained
+    } else if inconsistency.is_some() {
+        Verdict::InconsistentAssumption
+    } else {
+        Verdict::Consistent
+    };
+    Outcome3 {
+        law,
+        impulse: end.impulse,
+        velocity_after: end.velocity,
+        compression_impulse: end.compression_impulse,
+        work: WorkSplit {
+            compression: end.compression_work,
+            restitution: end.normal_work - end.compression_work,
+            friction: end.friction_work,
+        },
+        energy_change,
+        phases: end.phases,
+        verdict,
+        inconsistency,
+        detail,
+    }
+}
+
+/// The closed-form record of a straight path `p = p_n (k, 1)` (`k` a 2-vector).
+fn straight(problem: &ContactProblem3, law: LawId, kind: Phase3Kind, k: Vec2, pf: f64) -> PathEnd {
+    let w = problem.w();
+    let v = problem.velocity();
+    let slope = w * Vec3::new(k.x, k.y, 1.0);
+    let normal_work = pf * (v.z + 0.5 * slope.z * pf);
+    let (pc, wc) = if slope.z > 0.0 && -v.z / slope.z <= pf {
+        let pc = -v.z / slope.z;
+        (Some(pc), pc * (v.z + 0.5 * slope.z * pc))
+    } else {
+        (None, normal_work)
+    };
+    let friction_work = pf * (k.x * (v.x + 0.5 * slope.x * pf) + k.y * (v.y + 0.5 * slope.y * pf));
+    let mut phases = Phases3::new();
+    phases.push(kind, pf);
+    let _ = law;
+    PathEnd {
+        impulse: Vec3::new(k.x * pf, k.y * pf, pf),
+        velocity: v + slope * pf,
+        compression_impulse: pc,
+        compression_work: wc,
+        normal_work,
+        friction_work,
+        phases,
+        slip_halt: None,
+        second_compression: None,
+        steps: 0,
+    }
+}
+
+/// `p_n = −(1+e) v_n⁻ / (w_nn + w_tn·k)` for a straight path with ratio `k`.
+fn newton_pn(problem: &ContactProblem3, law: LawId, k: Vec2) -> Result<f64, Breakdown> {
+    let den = problem.wnn() + problem.wtn().dot(&k);
+    let pf = -(1.0 + problem.restitution()) * problem.velocity().z / den;
+    if den > 0.0 && pf.is_finite() {
+        Ok(pf)
+    } else {
+        Err(Breakdown {
+            law,
+            reason: BreakdownReason::NegativeNormalImpulse { denominator: den },
+        })
+    }
+}
+
+/// `whittaker` in 3D: Coulomb friction on the total impulse, along the initial slip
+/// direction `ŝ0`: `p = p_n (−μ ŝ0, 1)`, `p_n = −(1+e) v_n⁻ / (w_nn − μ w_tn·ŝ0)`.
+pub fn whittaker(problem: &ContactProblem3) -> Resolution3 {
+    let law = LawId::Whittaker;
+    let vt = problem.velocity().xy();
+    let sigma = vt.norm();
+    let (s0, kind) = if sigma > 0.0 {
+        let s = vt / sigma;
+        let a = s.y.atan2(s.x);
+        (s, Phase3Kind::Slip { from: a, to: a })
+    } else {
+        (Vec2::zeros(), Phase3Kind::NoSlip)
+    };
+    let k = -problem.friction() * s0;
+    let pf = newton_pn(problem, law, k)?;
+    let end = straight(problem, law, kind, k, pf);
+    let slip_after = end.velocity.xy().dot(&s0);
+    let inconsistency = (sigma > 0.0 && problem.friction() > 0.0 && slip_after < 0.0)
+        .then_some(Inconsistency::SlipReversed { slip_after });
+    Ok(assemble(problem, law, &end, Detail3::None, inconsistency))
+}
+
+/// `brach` in 3D: the impulse `p* = W⁻¹ (−v_t⁻, −(1+e) v_n⁻)` that leaves no tangential
+/// velocity, used if its ratio `|p*_t|/p*_n ≤ μ`; otherwise the ratio is capped to the cone
+/// along `p*_t`: `p_t = μ p_n p*_t/|p*_t|` with Newton's restitution.
+pub fn brach(problem: &ContactProblem3) -> Resolution3 {
+    let law = LawId::Brach;
+    let v = problem.velocity();
+    let mu = problem.friction();
+    let target = Vec3::new(-v.x, -v.y, -(1.0 + problem.restitution()) * v.z);
+    let star = problem
+        .w()
+        .cholesky()
+        .map(|c| c.solve(&target))
+        .ok_or(Breakdown {
+            law,
+            reason: BreakdownReason::NoSeparation,
+        })?;
+    let pt = star.xy();
+    let sticking = star.z > 0.0;
+    let ratio = if sticking {
+        pt.norm() / star.z
+    } else {
+        f64::INFINITY
+    };
+    if sticking && ratio <= mu {
+        let mut end = straight(problem, law, Phase3Kind::Stick, pt / star.z, star.z);
+        end.velocity.x = 0.0;
+        end.velocity.y = 0.0;
+        return Ok(assemble(
+            problem,
+            law,
+            &end,
+            Detail3::Brach {
+                ratio,
+                capped: false,
+            },
+            None,
+        ));
+    }
+    let dir = if pt.norm() > 0.0 {
+        pt / pt.norm()
+    } else {
+        Vec2::zeros()
+    };
+    let k = mu * dir;
+    let pf = newton_pn(problem, law, k)?;
+    let a = (-dir.y).atan2(-dir.x);
+    let kind = if mu > 0.0 && pt.norm() > 0.0 {
+        Phase3Kind::Slip { from: a, to: a }
+    } else {
+        Phase3Kind::NoSlip
+    };
+    let end = straight(problem, law, kind, k, pf);
+    Ok(assemble(
+        problem,
+        law,
+        &end,
+        Detail3::Brach {
+            ratio,
+            capped: true,
+        },
+        None,
+    ))
+}
+
+/// `newton`, `poisson` or `energetic` in 3D by the Darboux–Keller integration, with an
+/// observer called at every accepted point `(p_n, v)` (for hodographs).
+pub fn darboux_keller_observed(
+    problem: &ContactProblem3,
+    law: LawId,
+    observe: &mut impl FnMut(f64, Vec3),
+) -> Resolution3 {
+    let term = match law {
+        LawId::Newton => Termination::Newton,
+        LawId::Poisson => Termination::Poisson,
+        LawId::Energetic => Termination::Energetic,
+        _ => {
+            return Err(Breakdown {
+                law,
+                reason: BreakdownReason::PlanarOnly,
+            })
+        }
+    };
+    let end = integrate(problem, term, observe).map_err(|reason| Breakdown { law, reason })?;
+    let detail = Detail3::DarbouxKeller {
+        slip_halt: end.slip_halt,
+        second_compression: end.second_compression,
+        steps: end.steps,
+    };
+    Ok(assemble(problem, law, &end, detail, None))
+}
+
+/// Resolve a spatial problem with a law (`two-phase`, `smith` and `smith-centre` are planar
+/// only and break down with [`BreakdownReason::PlanarOnly`]).
+pub fn resolve(law: LawId, problem: &ContactProblem3) -> Resolution3 {
+    match law {
+        LawId::Whittaker => whittaker(problem),
+        LawId::Brach => brach(problem),
+        LawId::Newton | LawId::Poisson | LawId::Energetic => {
+            darboux_keller_observed(problem, law, &mut |_, _| {})
+        }
+        LawId::TwoPhase | LawId::Smith | LawId::SmithCentre => Err(Breakdown {
+            law,
+            reason: BreakdownReason::PlanarOnly,
+        }),
+    }
+}
+
+/// The slip-velocity path of a Darboux–Keller law, sampled at every accepted integration
+/// point: `(p_n, v_t1, v_t2, v_n)` (for plots of the hodograph).
+pub fn hodograph(problem: &ContactProblem3, law: LawId) -> Result<Vec<[f64; 4]>, Breakdown> {
+    let mut pts = Vec::new();
+    darboux_keller_observed(problem, law, &mut |p, v| pts.push([p, v.x, v.y, v.z]))?;
+    Ok(pts)
+}

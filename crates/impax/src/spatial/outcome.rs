@@ -1,0 +1,155 @@
+//! What every spatial law returns.
+
+use crate::law::LawId;
+use crate::math::Vec3;
+use crate::planar::{Inconsistency, Verdict, WorkSplit};
+use std::fmt;
+
+/// A regime of the contact during a spatial impact.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Phase3Kind {
+    /// Slip whose direction turns from angle `from` to angle `to` (radians in the tangent
+    /// plane, `atan2(v_t2, v_t1)`); equal angles when it does not swirl.
+    Slip {
+        /// Slip direction at the start of the phase.
+        from: f64,
+        /// Slip direction at the end of the phase.
+        to: f64,
+    },
+    /// Stick: `v_t = 0`, friction ratio `|λ| ≤ μ`.
+    Stick,
+    /// Slip resumed at once after the halt along the centrifugal invariant ray at `angle`.
+    Resumed {
+        /// Angle of the ray.
+        angle: f64,
+    },
+    /// No slip at the start and no friction (algebraic laws with `v_t⁻ = 0`).
+    NoSlip,
+}
+
+impl Phase3Kind {
+    /// Short label: `slip`, `stick`, `resumed-slip`, `no-slip`.
+    pub fn label(&self) -> &'static str {
+        match self {
+            Phase3Kind::Slip { .. } => "slip",
+            Phase3Kind::Stick => "stick",
+            Phase3Kind::Resumed { .. } => "resumed-slip",
+            Phase3Kind::NoSlip => "no-slip",
+        }
+    }
+}
+
+impl fmt::Display for Phase3Kind {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Phase3Kind::Slip { from, to } => {
+                write!(f, "slip({:.1}°→{:.1}°)", from.to_degrees(), to.to_degrees())
+            }
+            Phase3Kind::Resumed { angle } => write!(f, "resumed-slip({:.1}°)", angle.to_degrees()),
+            other => f.write_str(other.label()),
+        }
+    }
+}
+
+/// One phase and the normal impulse at which it ends.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Phase3 {
+    /// The regime.
+    pub kind: Phase3Kind,
+    /// Normal impulse at the end of the phase.
+    pub ends_at: f64,
+}
+
+/// The phases of a spatial impact (at most two: slip, then stick or resumed slip).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Phases3 {
+    items: [Phase3; 2],
+    len: usize,
+}
+
+impl Phases3 {
+    /// No phases.
+    pub const fn new() -> Self {
+        Self {
+            items: [Phase3 {
+                kind: Phase3Kind::Stick,
+                ends_at: 0.0,
+            }; 2],
+            len: 0,
+        }
+    }
+    /// Append a phase (silently ignored beyond two, which no law produces).
+    pub fn push(&mut self, kind: Phase3Kind, ends_at: f64) {
+        if self.len < 2 {
+            self.items[self.len] = Phase3 { kind, ends_at };
+            self.len += 1;
+        }
+    }
+    /// The phases.
+    pub fn as_slice(&self) -> &[Phase3] {
+        &self.items[..self.len]
+    }
+    /// Labels joined by ` → `.
+    pub fn summary(&self) -> String {
+        let v: Vec<String> = self.as_slice().iter().map(|p| p.kind.to_string()).collect();
+        v.join(" → ")
+    }
+}
+
+impl Default for Phases3 {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// Law-specific numbers of a spatial outcome.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Detail3 {
+    /// Nothing more.
+    None,
+    /// Brach: the sticking ratio's magnitude and whether it was capped.
+    Brach {
+        /// `|μ0| = |p*_t| / p*_n`.
+        ratio: f64,
+        /// Whether `|μ0| > μ`.
+        capped: bool,
+    },
+    /// Darboux–Keller integration.
+    DarbouxKeller {
+        /// Normal impulse at which the initial slip halted, if it did before the end.
+        slip_halt: Option<f64>,
+        /// Normal impulse at which a second compression began (`v_n` fell back to zero
+        /// after the end of the first compression: jamb), if it did.
+        second_compression: Option<f64>,
+        /// Accepted integration steps.
+        steps: u32,
+    },
+}
+
+/// The result of one law on one [`ContactProblem3`](super::ContactProblem3).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Outcome3 {
+    /// Which law.
+    pub law: LawId,
+    /// Impulse on body A, `(p_t1, p_t2, p_n)`.
+    pub impulse: Vec3,
+    /// Contact velocity after.
+    pub velocity_after: Vec3,
+    /// Normal impulse at the end of (the first) compression, if reached.
+    pub compression_impulse: Option<f64>,
+    /// Work split (compression, restitution, friction).
+    pub work: WorkSplit,
+    /// `ΔT`.
+    pub energy_change: f64,
+    /// Phases.
+    pub phases: Phases3,
+    /// Headline verdict.
+    pub verdict: Verdict,
+    /// A contradicted assumption, if any.
+    pub inconsistency: Option<Inconsistency>,
+    /// Law-specific detail.
+    pub detail: Detail3,
+}
+
+/// What a spatial law returns.
+pub type Resolution3 = Result<Outcome3, crate::planar::Breakdown>;
