@@ -28,6 +28,7 @@
 
 pub mod analysis;
 pub mod bodies;
+pub mod bodies3;
 pub mod error;
 pub mod law;
 pub mod math;
