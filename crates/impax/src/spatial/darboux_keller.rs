@@ -546,7 +546,9 @@ fn slip_stage(
             let s = pt.vt / sigma;
             let q = s.dot(&(wtn - mu * (wtt * s)));
             // Go logarithmic once the slip is small and shrinking.
-            if sigma < 0.05 * sigma0 && q < 0.0 {
+            // (Hysteresis: enter only where the shrink rate is a good part of |g|.)
+            let gnorm = (wtn - mu * (wtt * s)).norm();
+            if sigma < 0.05 * sigma0 && q < -0.25 * gnorm {
                 switch_to_log = true;
                 break;
             }
@@ -705,7 +707,7 @@ fn slip_stage(
             // The slip must keep shrinking; otherwise return to p-mode.
             let s = Vec2::new(z[0].cos(), z[0].sin());
             let q = s.dot(&(wtn - mu * (wtt * s)));
-            if q >= -1e-3 * (wtn.norm() + mu * wtt.norm()) {
+            if q >= -0.05 * (wtn - mu * (wtt * s)).norm() {
                 back_to_p = true;
                 break;
             }

@@ -1,0 +1,61 @@
+//! Spatial Darboux–Keller impacts (energetic): one with swirl then stick, one with slip
+//! resumed along the centrifugal ray, one slipping throughout with swirl, and the sphere
+//! (no swirl; straight run in closed form). Run: `cargo bench -p impax --bench spatial_laws`.
+
+use criterion::{black_box, criterion_group, criterion_main, Criterion};
+use impax::spatial::{ContactProblem3, Detail3};
+use impax::LawId;
+
+/// The benchmark cases, also printed with their phases and step counts.
+pub fn cases() -> Vec<(&'static str, ContactProblem3)> {
+    let w = [2.0, 0.6, 0.3, 1.0, -0.2, 1.5];
+    vec![
+        (
+            "swirl-stick",
+            ContactProblem3::from_upper(w, [0.3, 0.8, -1.0], 0.8, 0.7).unwrap(),
+        ),
+        (
+            "resumption",
+            ContactProblem3::from_upper(
+                [1.0, 0.3, 0.8, 2.0, -0.5, 1.5],
+                [-0.4, 0.3, -1.0],
+                0.3,
+                0.7,
+            )
+            .unwrap(),
+        ),
+        (
+            "swirl-slip",
+            ContactProblem3::from_upper(w, [2.0, -1.5, -1.0], 0.3, 0.7).unwrap(),
+        ),
+        (
+            "sphere",
+            ContactProblem3::from_upper(
+                [3.5, 0.0, 0.0, 3.5, 0.0, 1.0],
+                [0.5, 0.2, -0.866],
+                0.4,
+                0.7,
+            )
+            .unwrap(),
+        ),
+    ]
+}
+
+fn bench(c: &mut Criterion) {
+    let mut g = c.benchmark_group("spatial-energetic");
+    for (name, p) in cases() {
+        let o = LawId::Energetic.resolve3(&p).unwrap();
+        let steps = match o.detail {
+            Detail3::DarbouxKeller { steps, .. } => steps,
+            _ => 0,
+        };
+        eprintln!("{name}: {} ({steps} steps)", o.phases.summary());
+        g.bench_function(name, |b| {
+            b.iter(|| black_box(LawId::Energetic.resolve3(black_box(&p))))
+        });
+    }
+    g.finish();
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);
