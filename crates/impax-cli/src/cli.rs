@@ -20,6 +20,80 @@ pub enum Command {
     Resolve(ResolveArgs),
     /// Reproduce a source paper's numbered results beside impax's values.
     Paper(PaperArgs),
+    /// Sweep scenario fields over a grid or random samples: one CSV row per point and law
+    /// (or a summary), in parallel, streamed with constant memory.
+    Sweep(SweepArgs),
+    /// Draw a 2-parameter sweep as maps, one panel per law: the energy-gain region (sign of
+    /// ΔT), the phase sequence, or any numeric output as a heatmap (PNG or SVG).
+    Map(MapArgs),
+}
+
+/// The points of a sweep and the scenario they vary (shared by `sweep` and `map`).
+#[derive(Debug, Args)]
+pub struct SpaceArgs {
+    /// A TOML scenario file (see README: "Scenario files"); default: the seed's sphere.
+    pub scenario: Option<PathBuf>,
+    /// A grid axis: COUNT values of field NAME from START to STOP inclusive (repeatable; the
+    /// first axis varies slowest). E.g. `--grid alpha-deg=0:90:901`.
+    #[arg(long, value_name = "NAME=START:STOP:COUNT", allow_hyphen_values = true)]
+    pub grid: Vec<String>,
+    /// A random parameter: field NAME uniform in [LO, HI) (repeatable; with --samples).
+    #[arg(long, value_name = "NAME=LO:HI", allow_hyphen_values = true)]
+    pub random: Vec<String>,
+    /// Number of random points (with --random).
+    #[arg(long)]
+    pub samples: Option<u64>,
+    /// Seed of the random points (with --random; default 0).
+    #[arg(long)]
+    pub seed: Option<u64>,
+    /// Fix a field at a value for every point (repeatable), e.g. `--set friction=0.3`.
+    #[arg(long, value_name = "NAME=VALUE", allow_hyphen_values = true)]
+    pub set: Vec<String>,
+    /// Laws, comma separated (default: the file's `laws`, else every law).
+    #[arg(long, value_delimiter = ',')]
+    pub law: Vec<String>,
+    /// Worker threads (default: one per core).
+    #[arg(long)]
+    pub threads: Option<usize>,
+    /// Confirm a sweep of more than 10⁷ impacts (points × laws).
+    #[arg(long)]
+    pub yes: bool,
+    /// No progress bar and no throughput line on stderr.
+    #[arg(long)]
+    pub quiet: bool,
+}
+
+#[derive(Debug, Args)]
+pub struct SweepArgs {
+    #[command(flatten)]
+    pub space: SpaceArgs,
+    /// Output: `csv` (one row per point and law, with a header row) or `summary` (counts by
+    /// verdict and phase sequence and the range of ΔT/T0, per law).
+    #[arg(long, default_value = "csv")]
+    pub format: String,
+    /// CSV output columns after the swept fields and `law`, comma separated (default: all;
+    /// see README: "Sweeps").
+    #[arg(long, value_delimiter = ',')]
+    pub columns: Vec<String>,
+    /// Write to FILE instead of stdout.
+    #[arg(long, value_name = "FILE")]
+    pub out: Option<PathBuf>,
+}
+
+#[derive(Debug, Args)]
+pub struct MapArgs {
+    #[command(flatten)]
+    pub space: SpaceArgs,
+    /// What to draw: `sign` (energy gained or not: Kane's paradox), `sequence` (phase
+    /// sequence), or a numeric CSV column of `impax sweep` (e.g. `energy_ratio`).
+    #[arg(long, default_value = "sign")]
+    pub what: String,
+    /// The picture: FILE.png or FILE.svg.
+    #[arg(long, value_name = "FILE")]
+    pub out: PathBuf,
+    /// Picture size in pixels, WIDTHxHEIGHT (default: from the number of panels).
+    #[arg(long, value_name = "WxH")]
+    pub size: Option<String>,
 }
 
 #[derive(Debug, Args)]
@@ -53,6 +127,10 @@ pub struct CompareArgs {
     /// Print one JSON object instead of the table.
     #[arg(long)]
     pub json: bool,
+    /// Also draw Routh's impulse-space diagram and the energy bars of every law to FILE
+    /// (.png or .svg).
+    #[arg(long, value_name = "FILE")]
+    pub plot: Option<PathBuf>,
 }
 
 #[derive(Debug, Args)]

@@ -4,11 +4,19 @@ use crate::cli::CompareArgs;
 use crate::fmt::{signed, Table};
 use crate::input::{CliError, CliResult};
 use crate::json;
+use crate::plot::{
+    self,
+    energy::EnergyRow,
+    routh::{LawPath, RouthFigure},
+};
 use crate::scenario::{self, Scenario};
 use impax::planar::Verdict;
 use serde_json::json;
 
 pub fn run(args: &CompareArgs, out: &mut Vec<u8>) -> CliResult<()> {
+    if let Some(path) = &args.plot {
+        plot::Format::of("plot", path)?;
+    }
     let sc = scenario::load(args)?;
     let problem = sc.impact.problem(sc.friction, sc.restitution)?;
     let results: Vec<_> = sc
@@ -41,8 +49,67 @@ pub fn run(args: &CompareArgs, out: &mut Vec<u8>) -> CliResult<()> {
     } else {
         table(&sc, &problem, &results)
     };
+    if let Some(path) = &args.plot {
+        draw(&sc, &problem, &results, path)?;
+    }
     out.extend_from_slice(text.as_bytes());
     Ok(())
+}
+
+/// Routh's impulse-space diagram and the energy bars of every law, to `path`.
+fn draw(
+    sc: &Scenario,
+    problem: &impax::planar::ContactProblem,
+    results: &[(
+        impax::LawId,
+        Result<impax::bodies::BodyOutcome, impax::planar::Breakdown>,
+    )],
+    path: &std::path::Path,
+) -> CliResult<()> {
+    let mut paths = Vec::new();
+    let mut energy = Vec::new();
+    for (law, r) in results {
+        match r {
+            Ok(b) => {
+                let o = &b.outcome;
+                paths.push(LawPath::of(problem, o));
+                energy.push(EnergyRow {
+                    law: *law,
+                    values: Some([
+                        o.work.normal() / sc.t0,
+                        o.work.friction / sc.t0,
+                        o.energy_change / sc.t0,
+                        b.energy_change.translational / sc.t0,
+                        b.energy_change.rotational / sc.t0,
+                    ]),
+                });
+            }
+            Err(_) => energy.push(EnergyRow {
+                law: *law,
+                values: None,
+            }),
+        }
+    }
+    let v = problem.velocity();
+    let figure = RouthFigure {
+        title: format!("impax compare — {}", sc.description),
+        subtitle: format!(
+            "μ = {}, e = {}; W = [[{}, {}], [{}, {}]], v⁻ = ({}, {}); T0 = {}",
+            sc.friction,
+            sc.restitution,
+            g(problem.wtt()),
+            g(problem.wtn()),
+            g(problem.wtn()),
+            g(problem.wnn()),
+            g(v.x),
+            g(v.y),
+            g(sc.t0)
+        ),
+        problem: *problem,
+        paths,
+        energy,
+    };
+    plot::render("plot", path, RouthFigure::DEFAULT_SIZE, &figure)
 }
 
 fn table(

@@ -1,17 +1,27 @@
 //! `impax`: rigid-body impact with friction, from the command line.
 //!
 //! Subcommands: `compare` (every law side by side on one body impact; default: the seed's
-//! sphere), `resolve` (a contact-space problem directly), `paper` (reproduction reports).
+//! sphere; `--plot` draws Routh's diagram and energy bars), `resolve` (a contact-space problem
+//! directly), `paper` (reproduction reports), `sweep` (parameter sweeps streamed as CSV),
+//! `map` (maps of a 2-parameter sweep as PNG/SVG).
 //! Bad input of any kind prints one line on stderr and exits with code 2.
 
 mod cli;
+mod columns;
 mod compare;
+mod evaluate;
 mod fmt;
 mod input;
 mod json;
+mod map;
 mod paper;
+mod plot;
+mod progress;
 mod resolve;
 mod scenario;
+mod space;
+mod sweep;
+mod template;
 
 use clap::Parser;
 use std::io::Write;
@@ -49,6 +59,8 @@ fn main() -> ExitCode {
         cli::Command::Compare(args) => compare::run(args, &mut out),
         cli::Command::Resolve(args) => resolve::run(args, &mut out),
         cli::Command::Paper(args) => paper::run(args, &mut out),
+        cli::Command::Sweep(args) => sweep::run(args),
+        cli::Command::Map(args) => map::run(args, &mut out),
     };
     match result {
         Ok(()) => {

@@ -50,30 +50,30 @@ spin_ratio = 0.0
 
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
-struct FileSpec {
-    friction: f64,
-    restitution: f64,
-    laws: Option<Vec<String>>,
-    body: BodySpec,
-    other: Option<BodySpec>,
+pub(crate) struct FileSpec {
+    pub(crate) friction: f64,
+    pub(crate) restitution: f64,
+    pub(crate) laws: Option<Vec<String>>,
+    pub(crate) body: BodySpec,
+    pub(crate) other: Option<BodySpec>,
 }
 
 #[derive(Debug, Clone, Deserialize, Default)]
 #[serde(deny_unknown_fields)]
-struct BodySpec {
-    shape: String,
-    mass: f64,
-    radius: Option<f64>,
-    length: Option<f64>,
-    semi_axes: Option<[f64; 2]>,
-    inertia: Option<f64>,
-    contact: Option<[f64; 2]>,
-    angle_deg: Option<f64>,
-    speed: Option<f64>,
-    alpha_deg: Option<f64>,
-    spin_ratio: Option<f64>,
-    velocity: Option<[f64; 2]>,
-    omega: Option<f64>,
+pub(crate) struct BodySpec {
+    pub(crate) shape: String,
+    pub(crate) mass: f64,
+    pub(crate) radius: Option<f64>,
+    pub(crate) length: Option<f64>,
+    pub(crate) semi_axes: Option<[f64; 2]>,
+    pub(crate) inertia: Option<f64>,
+    pub(crate) contact: Option<[f64; 2]>,
+    pub(crate) angle_deg: Option<f64>,
+    pub(crate) speed: Option<f64>,
+    pub(crate) alpha_deg: Option<f64>,
+    pub(crate) spin_ratio: Option<f64>,
+    pub(crate) velocity: Option<[f64; 2]>,
+    pub(crate) omega: Option<f64>,
 }
 
 /// How results are normalised in the table.
@@ -139,7 +139,7 @@ fn finite_field(field: &str, x: f64) -> CliResult<f64> {
 }
 
 /// Build body, state and scale from a spec. `prefix` is `body` or `other`.
-fn build_body(
+pub(crate) fn build_body(
     spec: &BodySpec,
     prefix: &str,
     side: Side,
@@ -291,13 +291,18 @@ pub fn parse_laws(ids: &[String]) -> CliResult<Vec<LawId>> {
     Ok(laws)
 }
 
-/// Load the scenario of `impax compare`: the file (or the seed), then the flags.
-pub fn load(args: &CompareArgs) -> CliResult<Scenario> {
-    let (source, text) = match &args.scenario {
+/// Read and parse a scenario file (or the seed's scenario).
+pub(crate) fn parse_file(path: Option<&Path>) -> CliResult<FileSpec> {
+    let (source, text) = match path {
         Some(path) => (path.display().to_string(), read(path)?),
         None => ("seed scenario".to_string(), SEED_TOML.to_string()),
     };
-    let mut spec: FileSpec = toml::from_str(&text).map_err(|e| toml_error(&source, &text, &e))?;
+    toml::from_str(&text).map_err(|e| toml_error(&source, &text, &e))
+}
+
+/// Load the scenario of `impax compare`: the file (or the seed), then the flags.
+pub fn load(args: &CompareArgs) -> CliResult<Scenario> {
+    let mut spec = parse_file(args.scenario.as_deref())?;
     // Flag overrides.
     if let Some(x) = args.friction {
         spec.friction = finite_flag("friction", x)?;

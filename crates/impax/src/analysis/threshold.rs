@@ -70,7 +70,8 @@ pub fn whittaker_sphere_energy_ratio(
     x * x + y * c * c - 1.0 - branch * 2.0 * f * gamma * (1.0 + e) * c
 }
 
-/// The energy-gain thresholds of Whittaker's rule for the sphere (paper A eq. 13).
+/// The energy-gain thresholds of Whittaker's rule for the sphere (paper A eq. 13); none
+/// without friction or at grazing incidence (`cos α < 10⁻⁹`).
 pub fn whittaker_sphere_thresholds(
     alpha: f64,
     restitution: f64,
@@ -81,7 +82,9 @@ pub fn whittaker_sphere_thresholds(
     let k = f * (1.0 + e) * c;
     let y = (e * e + 2.5 * f * f * (1.0 + e) * (1.0 + e)) * c * c - 1.0;
     let slope = 2.0 * k;
-    if slope.is_nan() || slope <= 0.0 {
+    // Frictionless, or grazing (cos α → 0, where both roots merge with γ = −sin α and the
+    // formula loses every digit): no threshold.
+    if slope.is_nan() || slope <= 0.0 || c < 1e-9 {
         return SphereThresholds {
             upper: None,
             lower: None,

@@ -1,0 +1,122 @@
+//! One chunk of a sweep: points → contact problems → every law through the batch API.
+
+use crate::space::Setup;
+use impax::analysis::{resolve_problems, ImpactSummary};
+use impax::bodies::PlanarImpact;
+use impax::planar::ContactProblem;
+use impax::LawId;
+use std::ops::Range;
+
+/// The most laws a sweep has (every law once).
+pub const MAX_LAWS: usize = LawId::ALL.len();
+
+/// The first invalid point of a chunk: its index and why.
+#[derive(Debug, Clone)]
+pub struct Invalid {
+    pub index: u64,
+    pub reason: String,
+}
+
+/// What a chunk reports beside its own output.
+#[derive(Debug, Clone, Default)]
+pub struct ChunkNotes {
+    /// Number of invalid points.
+    pub invalid: u64,
+    /// The first one.
+    pub first_invalid: Option<Invalid>,
+}
+
+/// What a visitor sees of a valid point.
+#[derive(Debug, Clone, Copy)]
+pub struct PointView<'a> {
+    /// The energy scale `T0` of the point.
+    pub t0: f64,
+    /// The impact (kept only when asked for: body outputs, `smith-centre`).
+    pub impact: Option<&'a PlanarImpact>,
+}
+
+/// Evaluate the points of `range` and call `visit(index, values, point, summaries)` for each
+/// in order; `summaries[k]` is law `k` of `setup.laws` ([`ImpactSummary::INVALID`] for every
+/// law when the point is invalid, and then `point` is `None`). `keep_impacts` keeps each
+/// point's [`PlanarImpact`] for the visitor (always kept when `smith-centre` is swept).
+pub fn chunk(
+    setup: &Setup,
+    range: Range<u64>,
+    keep_impacts: bool,
+    mut visit: impl FnMut(u64, &[f64], Option<PointView<'_>>, &[ImpactSummary]),
+) -> ChunkNotes {
+    let n = (range.end - range.start) as usize;
+    let d = setup.fields.len();
+    let laws = &setup.laws;
+    let keep = keep_impacts || laws.iter().any(|l| l.needs_body());
+    let mut notes = ChunkNotes::default();
+    let mut template = setup.template.clone();
+    let mut values: Vec<f64> = Vec::with_capacity(n * d);
+    let mut valid: Vec<bool> = Vec::with_capacity(n);
+    let mut problems: Vec<ContactProblem> = Vec::with_capacity(n);
+    let mut t0s: Vec<f64> = Vec::with_capacity(n);
+    let mut impacts: Vec<PlanarImpact> = Vec::with_capacity(if keep { n } else { 0 });
+    setup.space.for_each_in(range.clone(), |i, vals| {
+        values.extend_from_slice(vals);
+        for (f, &x) in setup.fields.iter().zip(vals) {
+            template.set(*f, x);
+        }
+        match template.point() {
+            Ok(p) => {
+                problems.push(p.problem);
+                t0s.push(p.t0);
+                if keep {
+                    impacts.push(p.impact);
+                }
+                valid.push(true);
+            }
+            Err(e) => {
+                valid.push(false);
+                notes.invalid += 1;
+                if notes.first_invalid.is_none() {
+                    notes.first_invalid = Some(Invalid {
+                        index: i,
+                        reason: e.to_string(),
+                    });
+                }
+            }
+        }
+    });
+    let nv = problems.len();
+    // Law-major: summaries[k * nv + j] is law k on valid point j.
+    let mut summaries = vec![ImpactSummary::INVALID; laws.len() * nv];
+    for (k, &law) in laws.iter().enumerate() {
+        let out = &mut summaries[k * nv..(k + 1) * nv];
+        if law.needs_body() {
+            for ((o, imp), p) in out.iter_mut().zip(&impacts).zip(&problems) {
+                *o = match imp.resolve(law, p) {
+                    Ok(b) => ImpactSummary::of(&b.outcome),
+                    Err(_) => ImpactSummary::BREAKDOWN,
+                };
+            }
+        } else {
+            resolve_problems(law, &problems, out).expect("one record per problem");
+        }
+    }
+    let mut row = [ImpactSummary::INVALID; MAX_LAWS];
+    let invalid_row = [ImpactSummary::INVALID; MAX_LAWS];
+    let mut j = 0;
+    for (p, ok) in valid.iter().enumerate() {
+        let vals = &values[p * d..(p + 1) * d];
+        let index = range.start + p as u64;
+        if *ok {
+            for k in 0..laws.len() {
+                row[k] = summaries[k * nv + j];
+            }
+            let view = PointView {
+                t0: t0s[j],
+                impact: impacts.get(j),
+            };
+            visit(index, vals, Some(view), &row[..laws.len()]);
+            j += 1;
+        } else {
+            visit(index, vals, None, &invalid_row[..laws.len()]);
+        }
+    }
+    notes
+}

@@ -1,0 +1,284 @@
+//! `impax sweep`: scenario fields over a grid or random samples, every law, in parallel,
+//! streamed as CSV (or reduced to a summary) with constant memory.
+//!
+//! Rows come in point order (the first `--grid` axis slowest), and for each point in the
+//! order of the laws; chunks are computed in parallel and written in order, so the output is
+//! byte-identical for any `--threads`.
+
+use crate::cli::SweepArgs;
+use crate::columns::{body_after, Column};
+use crate::evaluate::{self, ChunkNotes};
+use crate::fmt::Table;
+use crate::input::{CliError, CliResult};
+use crate::progress::Progress;
+use crate::space::{self, Setup};
+use impax::analysis::{run_ordered, Sequence, Tally};
+use std::io::Write;
+
+/// Points per chunk: large enough to amortise the scheduling, small enough for progress.
+pub const CHUNK_POINTS: u64 = 8192;
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Format {
+    Csv,
+    Summary,
+}
+
+/// Run the sweep, writing straight to stdout or `--out` (not through `main`'s buffer).
+pub fn run(args: &SweepArgs) -> CliResult<()> {
+    let format = match args.format.as_str() {
+        "csv" => Format::Csv,
+        "summary" => Format::Summary,
+        other => {
+            return Err(CliError::input(format!(
+                "--format: unknown format `{other}` (known: csv, summary)"
+            )))
+        }
+    };
+    let columns = if args.columns.is_empty() {
+        Column::ALL.to_vec()
+    } else {
+        if format != Format::Csv {
+            return Err(CliError::input("--columns: applies to --format csv"));
+        }
+        let mut cols = Vec::new();
+        for name in &args.columns {
+            let c = Column::parse(name).ok_or_else(|| {
+                CliError::input(format!(
+                    "--columns: unknown column `{name}` (known: {})",
+                    Column::names()
+                ))
+            })?;
+            if !cols.contains(&c) {
+                cols.push(c);
+            }
+        }
+        cols
+    };
+    let setup = space::setup(&args.space)?;
+    let mut writer: Box<dyn Write + Send> = match &args.out {
+        Some(path) => Box::new(std::io::BufWriter::with_capacity(
+            1 << 20,
+            std::fs::File::create(path).map_err(|e| {
+                CliError::input(format!("--out {}: cannot create: {e}", path.display()))
+            })?,
+        )),
+        None => Box::new(std::io::BufWriter::with_capacity(
+            1 << 20,
+            std::io::stdout(),
+        )),
+    };
+    let quiet = args.space.quiet;
+    let result = space::with_threads(args.space.threads, || match format {
+        Format::Csv => csv(&setup, &columns, &mut writer, quiet),
+        Format::Summary => summary(&setup, &mut writer, quiet),
+    })?;
+    let flushed = result.and_then(|()| writer.flush().map_err(io_error));
+    match flushed {
+        // A closed pipe (`impax sweep … | head`) ends the sweep quietly.
+        Err(e) if e.message == BROKEN_PIPE => Ok(()),
+        other => other,
+    }
+}
+
+const BROKEN_PIPE: &str = "broken pipe";
+
+fn io_error(e: std::io::Error) -> CliError {
+    if e.kind() == std::io::ErrorKind::BrokenPipe {
+        CliError::failure(BROKEN_PIPE)
+    } else {
+        CliError::failure(format!("cannot write the output: {e}"))
+    }
+}
+
+/// Print the first invalid point (if any) on stderr.
+fn note_invalid(setup: &Setup, notes: &ChunkNotes, quiet: bool) {
+    if quiet || notes.invalid == 0 {
+        return;
+    }
+    if let Some(first) = &notes.first_invalid {
+        let mut vals = vec![0.0; setup.fields.len()];
+        setup
+            .space
+            .for_each_in(first.index..first.index + 1, |_, v| vals.copy_from_slice(v));
+        let at: Vec<String> = setup
+            .fields
+            .iter()
+            .zip(&vals)
+            .map(|(f, v)| format!("{}={v}", f.name()))
+            .collect();
+        eprintln!(
+            "impax: note: {} of {} points are invalid (status `invalid`); the first, at {}: {}",
+            notes.invalid,
+            setup.space.len(),
+            at.join(", "),
+            first.reason
+        );
+    }
+}
+
+fn merge_notes(total: &mut ChunkNotes, chunk: ChunkNotes) {
+    total.invalid += chunk.invalid;
+    if total.first_invalid.is_none() {
+        total.first_invalid = chunk.first_invalid;
+    }
+}
+
+#[inline]
+fn push_number(buf: &mut Vec<u8>, fmt: &mut ryu::Buffer, x: f64) {
+    if x.is_finite() {
+        buf.extend_from_slice(fmt.format_finite(x).as_bytes());
+    }
+}
+
+fn csv(
+    setup: &Setup,
+    columns: &[Column],
+    w: &mut Box<dyn Write + Send>,
+    quiet: bool,
+) -> CliResult<()> {
+    let mut header: Vec<String> = setup.fields.iter().map(|f| f.name()).collect();
+    header.push("law".into());
+    header.extend(columns.iter().map(|c| c.name().to_string()));
+    w.write_all((header.join(",") + "\n").as_bytes())
+        .map_err(io_error)?;
+    let needs_body = columns.iter().any(|c| c.needs_body());
+    let law_names: Vec<&str> = setup.laws.iter().map(|l| l.as_str()).collect();
+    let total = setup.space.len();
+    let progress = Progress::new(total, quiet);
+    let mut notes = ChunkNotes::default();
+    run_ordered(
+        total,
+        CHUNK_POINTS,
+        |range| {
+            let n = range.end - range.start;
+            let mut buf = Vec::with_capacity((n as usize) * law_names.len() * 160);
+            let mut fmt = ryu::Buffer::new();
+            let mut prefix = Vec::with_capacity(64);
+            let notes = evaluate::chunk(setup, range, needs_body, |_, vals, point, sums| {
+                prefix.clear();
+                for &v in vals {
+                    push_number(&mut prefix, &mut fmt, v);
+                    prefix.push(b',');
+                }
+                for (s, law) in sums.iter().zip(&law_names) {
+                    buf.extend_from_slice(&prefix);
+                    buf.extend_from_slice(law.as_bytes());
+                    let body = if needs_body {
+                        body_after(s, point)
+                    } else {
+                        [f64::NAN; 3]
+                    };
+                    for &c in columns {
+                        buf.push(b',');
+                        match c {
+                            Column::Status => buf.extend_from_slice(s.status.id().as_bytes()),
+                            Column::Sequence => buf.extend_from_slice(s.sequence.id().as_bytes()),
+                            _ => push_number(&mut buf, &mut fmt, c.value(s, point, body)),
+                        }
+                    }
+                    buf.push(b'\n');
+                }
+            });
+            (n, buf, notes)
+        },
+        |(n, buf, chunk_notes)| {
+            w.write_all(&buf).map_err(io_error)?;
+            merge_notes(&mut notes, chunk_notes);
+            progress.advance(n);
+            Ok::<(), CliError>(())
+        },
+    )?;
+    progress.finish("sweep", total, setup.laws.len());
+    note_invalid(setup, &notes, quiet);
+    Ok(())
+}
+
+fn summary(setup: &Setup, w: &mut Box<dyn Write + Send>, quiet: bool) -> CliResult<()> {
+    let nl = setup.laws.len();
+    let total = setup.space.len();
+    let progress = Progress::new(total, quiet);
+    let mut tallies = vec![Tally::new(); nl];
+    let mut notes = ChunkNotes::default();
+    run_ordered(
+        total,
+        CHUNK_POINTS,
+        |range| {
+            let n = range.end - range.start;
+            let mut t = vec![Tally::new(); nl];
+            let notes = evaluate::chunk(setup, range, false, |_, _, point, sums| {
+                let t0 = point.map_or(1.0, |p| p.t0);
+                for (tally, s) in t.iter_mut().zip(sums) {
+                    tally.add(s, t0);
+                }
+            });
+            (n, t, notes)
+        },
+        |(n, t, chunk_notes): (u64, Vec<Tally>, ChunkNotes)| {
+            for (a, b) in tallies.iter_mut().zip(&t) {
+                a.merge(b);
+            }
+            merge_notes(&mut notes, chunk_notes);
+            progress.advance(n);
+            Ok::<(), CliError>(())
+        },
+    )?;
+    progress.finish("sweep", total, nl);
+    note_invalid(setup, &notes, quiet);
+    let mut cols = vec![
+        ("law", false),
+        ("impacts", true),
+        ("consistent", true),
+        ("energy-gained", true),
+        ("inconsistent", true),
+        ("breakdown", true),
+        ("invalid", true),
+    ];
+    let seq: Vec<Sequence> = Sequence::ALL
+        .iter()
+        .copied()
+        .filter(|s| *s != Sequence::None)
+        .collect();
+    cols.extend(seq.iter().map(|s| (s.id(), true)));
+    cols.extend([
+        ("min ΔT/T0", true),
+        ("mean ΔT/T0", true),
+        ("max ΔT/T0", true),
+    ]);
+    let mut table = Table::new(&cols);
+    for (law, t) in setup.laws.iter().zip(&tallies) {
+        let resolved = t.resolved();
+        let f = |x: f64| {
+            if resolved > 0 {
+                format!("{x:+.6}")
+            } else {
+                "—".into()
+            }
+        };
+        let mut row = vec![
+            law.to_string(),
+            t.total.to_string(),
+            t.consistent.to_string(),
+            t.energy_gained.to_string(),
+            t.inconsistent.to_string(),
+            t.breakdown.to_string(),
+            t.invalid.to_string(),
+        ];
+        row.extend(seq.iter().map(|s| t.sequence(*s).to_string()));
+        row.extend([
+            f(t.min_ratio),
+            f(t.sum_ratio / resolved.max(1) as f64),
+            f(t.max_ratio),
+        ]);
+        table.row(row);
+    }
+    let names: Vec<String> = setup.fields.iter().map(|f| f.name()).collect();
+    let text = format!(
+        "impax sweep — {} points over {} × {} laws\n\n{}",
+        total,
+        names.join(", "),
+        nl,
+        table.render()
+    );
+    w.write_all(text.as_bytes()).map_err(io_error)
+}

@@ -1,0 +1,563 @@
+//! A scenario as numbers, with its fields set by name: what `impax sweep` and `impax map`
+//! vary from point to point.
+//!
+//! The scenario file (or the seed's) is validated once, as `impax compare` would; then every
+//! point sets a few numeric fields and rebuilds the contact problem without allocation.
+//!
+//! Field names (kebab case; `_` is accepted for `-`; `other.` prefixes the second body):
+//!
+//! | field | applies to | domain |
+//! |---|---|---|
+//! | `friction`, `restitution` | every scenario | `μ ≥ 0`, `e ∈ [0, 1]` |
+//! | `mass` | every body | `> 0` |
+//! | `radius` | sphere, disc | `> 0` |
+//! | `length`, `angle-deg` | rod | `> 0`; `(0, 180)` degrees |
+//! | `semi-axis-a`, `semi-axis-b`, `angle-deg` | ellipse | `> 0`; degrees |
+//! | `inertia`, `contact-t`, `contact-n` | rigid | `> 0`; any |
+//! | `speed`, `alpha-deg`, `spin-ratio` | round bodies given by v0, α, γ | `> 0`; `[−90, 90]` degrees; any |
+//! | `vx`, `vy`, `omega` | bodies given by their velocity | any |
+
+use crate::input::{CliError, CliResult};
+use crate::scenario::{build_body, parse_file, parse_laws, BodySpec};
+use impax::bodies::{self, BodyState2, PlanarImpact, RigidBody2, Side};
+use impax::math::{Mat2, Vec2};
+use impax::planar::ContactProblem;
+use impax::LawId;
+use std::path::Path;
+
+/// A body shape.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Shape {
+    Sphere,
+    Disc,
+    Rod,
+    Ellipse,
+    Rigid,
+}
+
+/// One numeric parameter of a body.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Param {
+    Mass,
+    Radius,
+    Length,
+    AngleDeg,
+    SemiAxisA,
+    SemiAxisB,
+    Inertia,
+    ContactT,
+    ContactN,
+    Speed,
+    AlphaDeg,
+    SpinRatio,
+    Vx,
+    Vy,
+    Omega,
+}
+
+impl Param {
+    const ALL: [Param; 15] = [
+        Param::Mass,
+        Param::Radius,
+        Param::Length,
+        Param::AngleDeg,
+        Param::SemiAxisA,
+        Param::SemiAxisB,
+        Param::Inertia,
+        Param::ContactT,
+        Param::ContactN,
+        Param::Speed,
+        Param::AlphaDeg,
+        Param::SpinRatio,
+        Param::Vx,
+        Param::Vy,
+        Param::Omega,
+    ];
+
+    fn name(self) -> &'static str {
+        match self {
+            Param::Mass => "mass",
+            Param::Radius => "radius",
+            Param::Length => "length",
+            Param::AngleDeg => "angle-deg",
+            Param::SemiAxisA => "semi-axis-a",
+            Param::SemiAxisB => "semi-axis-b",
+            Param::Inertia => "inertia",
+            Param::ContactT => "contact-t",
+            Param::ContactN => "contact-n",
+            Param::Speed => "speed",
+            Param::AlphaDeg => "alpha-deg",
+            Param::SpinRatio => "spin-ratio",
+            Param::Vx => "vx",
+            Param::Vy => "vy",
+            Param::Omega => "omega",
+        }
+    }
+
+    /// Axis label with units.
+    fn label(self) -> &'static str {
+        match self {
+            Param::Mass => "mass m",
+            Param::Radius => "radius r",
+            Param::Length => "length L",
+            Param::AngleDeg => "angle θ from the surface (deg)",
+            Param::SemiAxisA => "semi-axis a",
+            Param::SemiAxisB => "semi-axis b",
+            Param::Inertia => "moment of inertia I",
+            Param::ContactT => "contact offset r_t",
+            Param::ContactN => "contact offset r_n",
+            Param::Speed => "approach speed v0",
+            Param::AlphaDeg => "approach angle α from the normal (deg)",
+            Param::SpinRatio => "spin ratio γ = ω0 r / v0 (–)",
+            Param::Vx => "velocity v_x",
+            Param::Vy => "velocity v_y",
+            Param::Omega => "angular velocity ω (rad per time unit)",
+        }
+    }
+
+    /// The allowed closed interval of values (open ends are checked by the body builders).
+    fn domain(self) -> (f64, f64, &'static str) {
+        match self {
+            Param::Mass
+            | Param::Radius
+            | Param::Length
+            | Param::SemiAxisA
+            | Param::SemiAxisB
+            | Param::Inertia
+            | Param::Speed => (f64::MIN_POSITIVE, f64::INFINITY, "must be > 0"),
+            Param::AlphaDeg => (-90.0, 90.0, "must be in [-90, 90] degrees"),
+            _ => (f64::NEG_INFINITY, f64::INFINITY, ""),
+        }
+    }
+}
+
+/// A scenario field.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Field {
+    Friction,
+    Restitution,
+    /// A parameter of the striking body A.
+    Body(Param),
+    /// A parameter of the struck body B.
+    Other(Param),
+}
+
+impl Field {
+    /// The canonical name, e.g. `alpha-deg`, `other.mass`.
+    pub fn name(self) -> String {
+        match self {
+            Field::Friction => "friction".into(),
+            Field::Restitution => "restitution".into(),
+            Field::Body(p) => p.name().into(),
+            Field::Other(p) => format!("other.{}", p.name()),
+        }
+    }
+
+    /// An axis label with units.
+    pub fn label(self) -> String {
+        match self {
+            Field::Friction => "friction coefficient μ (–)".into(),
+            Field::Restitution => "coefficient of restitution e (–)".into(),
+            Field::Body(p) => p.label().into(),
+            Field::Other(p) => format!("body B: {}", p.label()),
+        }
+    }
+
+    /// Check that every value of `[lo, hi]` is in the field's domain.
+    pub fn check_range(self, lo: f64, hi: f64) -> Result<(), String> {
+        let (min, max, why) = match self {
+            Field::Friction => (0.0, f64::INFINITY, "the friction coefficient must be ≥ 0"),
+            Field::Restitution => (0.0, 1.0, "the coefficient of restitution must be in [0, 1]"),
+            Field::Body(p) | Field::Other(p) => p.domain(),
+        };
+        if lo < min || hi > max {
+            Err(format!("{}: {why}", self.name()))
+        } else {
+            Ok(())
+        }
+    }
+}
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Motion {
+    Seed {
+        speed: f64,
+        alpha_deg: f64,
+        spin_ratio: f64,
+    },
+    Direct {
+        vx: f64,
+        vy: f64,
+        omega: f64,
+    },
+}
+
+/// A body as numbers (absent parameters are NaN and never read).
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct BodyParams {
+    shape: Shape,
+    side: Side,
+    mass: f64,
+    radius: f64,
+    length: f64,
+    angle_deg: f64,
+    semi_a: f64,
+    semi_b: f64,
+    inertia: f64,
+    contact_t: f64,
+    contact_n: f64,
+    motion: Motion,
+}
+
+impl BodyParams {
+    /// From a spec already validated by [`build_body`].
+    fn of(spec: &BodySpec, side: Side) -> Self {
+        let shape = match spec.shape.as_str() {
+            "sphere" => Shape::Sphere,
+            "disc" => Shape::Disc,
+            "rod" => Shape::Rod,
+            "ellipse" => Shape::Ellipse,
+            _ => Shape::Rigid,
+        };
+        let nan = f64::NAN;
+        let [semi_a, semi_b] = spec.semi_axes.unwrap_or([nan, nan]);
+        let [contact_t, contact_n] = spec.contact.unwrap_or([nan, nan]);
+        let seed = spec.speed.is_some() || spec.alpha_deg.is_some() || spec.spin_ratio.is_some();
+        let motion = if seed {
+            Motion::Seed {
+                speed: spec.speed.unwrap_or(1.0),
+                alpha_deg: spec.alpha_deg.unwrap_or(0.0),
+                spin_ratio: spec.spin_ratio.unwrap_or(0.0),
+            }
+        } else {
+            let [vx, vy] = spec.velocity.unwrap_or([0.0, 0.0]);
+            Motion::Direct {
+                vx,
+                vy,
+                omega: spec.omega.unwrap_or(0.0),
+            }
+        };
+        Self {
+            shape,
+            side,
+            mass: spec.mass,
+            radius: spec.radius.unwrap_or(nan),
+            length: spec.length.unwrap_or(nan),
+            angle_deg: spec
+                .angle_deg
+                .unwrap_or(if shape == Shape::Ellipse { 0.0 } else { nan }),
+            semi_a,
+            semi_b,
+            inertia: spec.inertia.unwrap_or(nan),
+            contact_t,
+            contact_n,
+            motion,
+        }
+    }
+
+    /// Whether the parameter describes this body (shape and kind of motion).
+    fn has(&self, p: Param) -> bool {
+        let seed = matches!(self.motion, Motion::Seed { .. });
+        match p {
+            Param::Mass => true,
+            Param::Radius => matches!(self.shape, Shape::Sphere | Shape::Disc),
+            Param::Length => self.shape == Shape::Rod,
+            Param::AngleDeg => matches!(self.shape, Shape::Rod | Shape::Ellipse),
+            Param::SemiAxisA | Param::SemiAxisB => self.shape == Shape::Ellipse,
+            Param::Inertia | Param::ContactT | Param::ContactN => self.shape == Shape::Rigid,
+            Param::Speed | Param::AlphaDeg | Param::SpinRatio => seed,
+            Param::Vx | Param::Vy | Param::Omega => !seed,
+        }
+    }
+
+    fn slot(&mut self, p: Param) -> &mut f64 {
+        match (p, &mut self.motion) {
+            (Param::Mass, _) => &mut self.mass,
+            (Param::Radius, _) => &mut self.radius,
+            (Param::Length, _) => &mut self.length,
+            (Param::AngleDeg, _) => &mut self.angle_deg,
+            (Param::SemiAxisA, _) => &mut self.semi_a,
+            (Param::SemiAxisB, _) => &mut self.semi_b,
+            (Param::Inertia, _) => &mut self.inertia,
+            (Param::ContactT, _) => &mut self.contact_t,
+            (Param::ContactN, _) => &mut self.contact_n,
+            (Param::Speed, Motion::Seed { speed, .. }) => speed,
+            (Param::AlphaDeg, Motion::Seed { alpha_deg, .. }) => alpha_deg,
+            (Param::SpinRatio, Motion::Seed { spin_ratio, .. }) => spin_ratio,
+            (Param::Vx, Motion::Direct { vx, .. }) => vx,
+            (Param::Vy, Motion::Direct { vy, .. }) => vy,
+            (Param::Omega, Motion::Direct { omega, .. }) => omega,
+            // `has` is checked when a field is resolved by name.
+            (_, Motion::Seed { speed, .. }) => speed,
+            (_, Motion::Direct { vx, .. }) => vx,
+        }
+    }
+
+    /// Whether setting the parameter changes the body (not only its state).
+    fn shapes_body(p: Param) -> bool {
+        !matches!(
+            p,
+            Param::Speed
+                | Param::AlphaDeg
+                | Param::SpinRatio
+                | Param::Vx
+                | Param::Vy
+                | Param::Omega
+        )
+    }
+
+    /// The body (numbers only; errors name the field).
+    fn body(&self) -> impax::Result<RigidBody2> {
+        Ok(match self.shape {
+            Shape::Sphere => bodies::sphere(self.mass, self.radius, self.side)?,
+            Shape::Disc => bodies::disc(self.mass, self.radius, self.side)?,
+            Shape::Rod => bodies::rod(
+                self.mass,
+                self.length,
+                self.angle_deg.to_radians(),
+                self.side,
+            )?,
+            Shape::Ellipse => bodies::ellipse(
+                self.mass,
+                self.semi_a,
+                self.semi_b,
+                self.angle_deg.to_radians(),
+                self.side,
+            )?,
+            Shape::Rigid => RigidBody2::new(
+                self.mass,
+                self.inertia,
+                Vec2::new(self.contact_t, self.contact_n),
+            )?,
+        })
+    }
+
+    /// The state before the impact: for v0, α, γ exactly [`bodies::spin_state`] (paper A
+    /// eq. 1), inlined (the radius was validated with the body).
+    /// `trig` remembers `(α in degrees, sin α, cos α)` of the last call: a grid whose α
+    /// varies slowly computes each sine and cosine once.
+    #[inline]
+    fn state(&self, trig: &mut (f64, f64, f64)) -> impax::Result<BodyState2> {
+        match self.motion {
+            Motion::Seed {
+                speed,
+                alpha_deg,
+                spin_ratio,
+            } => {
+                let alpha = alpha_deg.to_radians();
+                if !(speed > 0.0 && speed.is_finite()) {
+                    return Err(impax::Error::OutOfRange {
+                        field: "speed".into(),
+                        value: speed,
+                        reason: "must be > 0".into(),
+                    });
+                }
+                if !alpha.is_finite() || !spin_ratio.is_finite() {
+                    // The library names the field.
+                    return bodies::spin_state(speed, alpha, spin_ratio, self.radius);
+                }
+                if trig.0.to_bits() != alpha_deg.to_bits() {
+                    *trig = (alpha_deg, alpha.sin(), alpha.cos());
+                }
+                Ok(BodyState2::new(
+                    speed * trig.1,
+                    -speed * trig.2,
+                    spin_ratio * speed / self.radius,
+                ))
+            }
+            Motion::Direct { vx, vy, omega } => Ok(BodyState2::new(vx, vy, omega)),
+        }
+    }
+}
+
+/// One point of a sweep: the impact, its contact problem and the energy scale `T0`.
+#[derive(Debug, Clone, Copy)]
+pub struct Point {
+    pub impact: PlanarImpact,
+    pub problem: ContactProblem,
+    /// The translational kinetic energy before (total if that is zero), as `impax compare`.
+    pub t0: f64,
+}
+
+/// The bodies and `W` of the current body parameters (rebuilt when one of them is set).
+#[derive(Debug, Clone, Copy)]
+struct Built {
+    body: RigidBody2,
+    other: Option<RigidBody2>,
+    w: Mat2,
+}
+
+/// A scenario whose numeric fields can be set by name.
+#[derive(Debug, Clone)]
+pub struct Template {
+    friction: f64,
+    restitution: f64,
+    body: BodyParams,
+    other: Option<BodyParams>,
+    /// The laws of the file (`laws = [...]`), or every law.
+    pub laws: Vec<LawId>,
+    built: Option<Built>,
+    /// Memo of the last `(α deg, sin α, cos α)` of body A and of body B.
+    trig: [(f64, f64, f64); 2],
+}
+
+impl Template {
+    /// Load and validate a scenario file (default: the seed's sphere).
+    pub fn load(path: Option<&Path>) -> CliResult<Self> {
+        let spec = parse_file(path)?;
+        build_body(&spec.body, "body", Side::Below)?;
+        if let Some(o) = &spec.other {
+            build_body(o, "other", Side::Above)?;
+        }
+        let laws = match &spec.laws {
+            Some(ids) => {
+                parse_laws(ids).map_err(|e| CliError::input(format!("laws: {}", e.message)))?
+            }
+            None => LawId::ALL.to_vec(),
+        };
+        Ok(Self {
+            friction: spec.friction,
+            restitution: spec.restitution,
+            body: BodyParams::of(&spec.body, Side::Below),
+            other: spec.other.as_ref().map(|o| BodyParams::of(o, Side::Above)),
+            laws,
+            built: None,
+            trig: [(f64::NAN, 0.0, 0.0); 2],
+        })
+    }
+
+    /// Resolve a field name (`alpha-deg`, `alpha_deg`, `other.mass`, …) for this scenario.
+    pub fn field(&self, name: &str) -> Result<Field, String> {
+        let canon = name.trim().replace('_', "-");
+        match canon.as_str() {
+            "friction" => return Ok(Field::Friction),
+            "restitution" => return Ok(Field::Restitution),
+            _ => {}
+        }
+        let (target, pname) = match canon.strip_prefix("other.") {
+            Some(rest) => (true, rest),
+            None => (false, canon.as_str()),
+        };
+        let known = || {
+            let mut names = vec!["friction", "restitution"];
+            names.extend(Param::ALL.iter().map(|p| p.name()));
+            names.join(", ")
+        };
+        let param = Param::ALL
+            .iter()
+            .copied()
+            .find(|p| p.name() == pname)
+            .ok_or_else(|| {
+                format!(
+                    "unknown field `{name}` (known: {}; prefix `other.` for body B)",
+                    known()
+                )
+            })?;
+        let body = if target {
+            self.other
+                .as_ref()
+                .ok_or_else(|| format!("field `{name}`: the scenario has no [other] body"))?
+        } else {
+            &self.body
+        };
+        if !body.has(param) {
+            let what = match param {
+                Param::Speed | Param::AlphaDeg | Param::SpinRatio => {
+                    "the scenario gives the body's velocity/omega, not speed/alpha_deg/spin_ratio"
+                        .to_string()
+                }
+                Param::Vx | Param::Vy | Param::Omega => {
+                    "the scenario gives the body's speed/alpha_deg/spin_ratio, not velocity/omega"
+                        .to_string()
+                }
+                _ => format!("not a parameter of shape `{:?}`", body.shape).to_lowercase(),
+            };
+            return Err(format!("field `{name}`: {what}"));
+        }
+        Ok(if target {
+            Field::Other(param)
+        } else {
+            Field::Body(param)
+        })
+    }
+
+    /// Set a field (resolved by [`Template::field`] for this scenario).
+    #[inline]
+    pub fn set(&mut self, field: Field, value: f64) {
+        match field {
+            Field::Friction => self.friction = value,
+            Field::Restitution => self.restitution = value,
+            Field::Body(p) => {
+                *self.body.slot(p) = value;
+                if BodyParams::shapes_body(p) {
+                    self.built = None;
+                }
+            }
+            Field::Other(p) => {
+                if let Some(o) = self.other.as_mut() {
+                    *o.slot(p) = value;
+                }
+                if BodyParams::shapes_body(p) {
+                    self.built = None;
+                }
+            }
+        }
+    }
+
+    /// Build the point (no allocation unless it is invalid). The bodies and `W` are kept
+    /// until a body parameter is set; the result is bit for bit what `impax compare` builds.
+    #[inline]
+    pub fn point(&mut self) -> impax::Result<Point> {
+        let built = match self.built {
+            Some(b) => b,
+            None => {
+                let body = self.body.body()?;
+                let other = self.other.as_ref().map(BodyParams::body).transpose()?;
+                let mut w = body.inverse_inertia();
+                if let Some(o) = &other {
+                    w += o.inverse_inertia();
+                }
+                let b = Built { body, other, w };
+                self.built = Some(b);
+                b
+            }
+        };
+        let state = self.body.state(&mut self.trig[0])?;
+        let impact = match (&self.other, built.other) {
+            (Some(o), Some(ob)) => {
+                PlanarImpact::between(built.body, state, ob, o.state(&mut self.trig[1])?)
+            }
+            _ => PlanarImpact::on_fixed_surface(built.body, state),
+        };
+        let problem = ContactProblem::new(
+            built.w,
+            impact.contact_velocity(),
+            self.friction,
+            self.restitution,
+        )?;
+        let before = impact.energy_before();
+        let t0 = if before.translational > 0.0 {
+            before.translational
+        } else {
+            before.total()
+        };
+        Ok(Point {
+            impact,
+            problem,
+            t0,
+        })
+    }
+
+    /// Whether this is paper A's case: one sphere given by v0, α, γ against a fixed plane
+    /// (so that the eq. 13 threshold applies).
+    pub fn is_seed_sphere(&self) -> bool {
+        self.other.is_none()
+            && self.body.shape == Shape::Sphere
+            && matches!(self.body.motion, Motion::Seed { .. })
+    }
+
+    /// Friction and restitution.
+    pub fn coefficients(&self) -> (f64, f64) {
+        (self.friction, self.restitution)
+    }
+}
