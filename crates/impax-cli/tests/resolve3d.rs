@@ -1,0 +1,171 @@
+//! `impax resolve` with a 3×3 W: the planar JSON keys plus `hodograph` and
+//! `invariant_rays`, agreement with the planar command on an embedded planar problem, and
+//! bad 3D input (one line, exit 2).
+
+use assert_cmd::Command;
+use serde_json::Value;
+
+fn impax() -> Command {
+    Command::cargo_bin("impax").expect("the impax binary is built")
+}
+
+fn json(args: &[&str]) -> Value {
+    let out = impax().args(args).output().unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).unwrap()
+}
+
+#[test]
+fn spatial_entry_has_the_planar_keys_plus_hodograph() {
+    let doc = json(&[
+        "resolve",
+        "--w",
+        "2,0.6,0.3,1,-0.2,1.5",
+        "--v",
+        "0.3,0.8,-1",
+        "--friction",
+        "0.8",
+        "--restitution",
+        "0.7",
+        "--law",
+        "energetic",
+        "--json",
+    ]);
+    for key in [
+        "law",
+        "verdict",
+        "impulse",
+        "velocity_after",
+        "energy_change",
+        "phases",
+        "compression_impulse",
+        "work",
+        "hodograph",
+        "invariant_rays",
+    ] {
+        assert!(doc.get(key).is_some(), "missing {key}");
+    }
+    let hodo = doc["hodograph"].as_array().unwrap();
+    assert!(hodo.len() > 10);
+    // The hodograph starts at v⁻ and ends at the velocity after.
+    assert_eq!(hodo[0][1].as_f64().unwrap(), 0.3);
+    let last = hodo.last().unwrap();
+    assert!(
+        (last[3].as_f64().unwrap() - doc["velocity_after"]["n"].as_f64().unwrap()).abs() < 1e-12
+    );
+    assert_eq!(doc["phases"][1]["kind"], "stick");
+    assert!(doc["invariant_rays"].as_array().unwrap().len() >= 2);
+}
+
+#[test]
+fn embedded_planar_problem_matches_the_planar_command() {
+    let d3 = json(&[
+        "resolve",
+        "--w",
+        "2,0,0.5,1.3,0,1",
+        "--v",
+        "0.4,0,-1",
+        "--friction",
+        "0.3",
+        "--restitution",
+        "0.6",
+        "--json",
+    ]);
+    let d2 = json(&[
+        "resolve",
+        "--w",
+        "2,0.5,1",
+        "--v",
+        "0.4,-1",
+        "--friction",
+        "0.3",
+        "--restitution",
+        "0.6",
+        "--json",
+    ]);
+    for r3 in d3["results"].as_array().unwrap() {
+        let law = r3["law"].as_str().unwrap();
+        let r2 = d2["results"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|r| r["law"] == law)
+            .unwrap();
+        let a = r3["impulse"]["t1"].as_f64().unwrap();
+        let b = r2["impulse"]["t"].as_f64().unwrap();
+        assert!((a - b).abs() < 1e-12, "{law}: {a} vs {b}");
+        let a = r3["impulse"]["n"].as_f64().unwrap();
+        let b = r2["impulse"]["n"].as_f64().unwrap();
+        assert!((a - b).abs() < 1e-12, "{law}: {a} vs {b}");
+    }
+}
+
+#[test]
+fn bad_spatial_input_is_one_line_and_exit_2() {
+    for (w, v, mu, e, law, needle) in [
+        (
+            "1,2,0,1,0,1",
+            "0.1,0,-1",
+            "0.3",
+            "0.5",
+            "energetic",
+            "positive definite",
+        ),
+        ("1,0,0,1,0,1", "0.1,-1", "0.3", "0.5", "energetic", "--v"),
+        (
+            "1,0,0,1,0,1",
+            "0.1,0,1",
+            "0.3",
+            "0.5",
+            "energetic",
+            "negative",
+        ),
+        ("1,0,0,1,0", "0.1,0,-1", "0.3", "0.5", "energetic", "--w"),
+        (
+            "1,0,0,1,0,1",
+            "0.1,0,-1",
+            "-1",
+            "0.5",
+            "energetic",
+            "friction",
+        ),
+        ("1,0,0,1,0,1", "0.1,0,-1", "0.3", "0.5", "smith", "planar"),
+        (
+            "1,0,0,1,0,nan",
+            "0.1,0,-1",
+            "0.3",
+            "0.5",
+            "energetic",
+            "--w",
+        ),
+    ] {
+        let out = impax()
+            .args([
+                "resolve",
+                "--w",
+                w,
+                "--v",
+                v,
+                "--friction",
+                mu,
+                "--restitution",
+                e,
+                "--law",
+                law,
+            ])
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{w} {v}: {err}");
+        assert_eq!(
+            err.lines().filter(|l| !l.trim().is_empty()).count(),
+            1,
+            "{err}"
+        );
+        assert!(err.contains(needle), "`{err}` lacks `{needle}`");
+    }
+}
