@@ -12,6 +12,11 @@ pub type Vec3 = nalgebra::Vector3<f64>;
 /// A 3×3 matrix, e.g. the spatial contact-space inverse inertia `W` or an inertia tensor.
 pub type Mat3 = nalgebra::Matrix3<f64>;
 
+/// A unit quaternion (orientation, body → world).
+pub type UnitQuat = nalgebra::UnitQuaternion<f64>;
+/// A quaternion `w + xi + yj + zk`.
+pub type Quat = nalgebra::Quaternion<f64>;
+
 /// Sign of `x` as `-1.0`, `0.0` or `1.0` (unlike [`f64::signum`], zero maps to zero).
 #[inline]
 pub fn sign(x: f64) -> f64 {
