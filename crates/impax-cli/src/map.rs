@@ -93,6 +93,10 @@ pub fn run(args: &MapArgs, out: &mut Vec<u8>) -> CliResult<()> {
         },
     };
     Format::of("out", &args.out)?;
+    // A file that cannot be written is bad input: say so before sweeping.
+    std::fs::File::create(&args.out).map_err(|e| {
+        CliError::input(format!("--out {}: cannot create: {e}", args.out.display()))
+    })?;
     let size = args.size.as_deref().map(plot::parse_size).transpose()?;
     if !args.space.random.is_empty() {
         return Err(CliError::input(
