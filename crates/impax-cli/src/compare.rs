@@ -14,6 +14,13 @@ use impax::planar::Verdict;
 use serde_json::json;
 
 pub fn run(args: &CompareArgs, out: &mut Vec<u8>) -> CliResult<()> {
+    if let Some(path) = &args.scenario {
+        if let Ok(text) = std::fs::read_to_string(path) {
+            if crate::compare3::is_spatial(&text) {
+                return run_spatial(args, &path.display().to_string(), &text, out);
+            }
+        }
+    }
     if let Some(path) = &args.plot {
         plot::Format::of("plot", path)?;
     }
@@ -222,4 +229,25 @@ fn g(x: f64) -> String {
     } else {
         format!("{r}")
     }
+}
+
+/// A `space = "3d"` scenario: the spatial bodies (the planar-only flags are refused).
+fn run_spatial(args: &CompareArgs, source: &str, text: &str, out: &mut Vec<u8>) -> CliResult<()> {
+    for (flag, given) in [
+        ("alpha-deg", args.alpha_deg.is_some()),
+        ("spin-ratio", args.spin_ratio.is_some()),
+        ("radius", args.radius.is_some()),
+        ("speed", args.speed.is_some()),
+        ("mass", args.mass.is_some()),
+        ("friction", args.friction.is_some()),
+        ("restitution", args.restitution.is_some()),
+        ("plot", args.plot.is_some()),
+    ] {
+        if given {
+            return Err(CliError::input(format!(
+                "--{flag}: not available for 3D scenarios yet; edit the scenario file"
+            )));
+        }
+    }
+    crate::compare3::run(source, text, &args.law, args.json, out)
 }

@@ -9,6 +9,7 @@
 mod cli;
 mod columns;
 mod compare;
+mod compare3;
 mod evaluate;
 mod fmt;
 mod input;

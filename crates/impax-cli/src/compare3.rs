@@ -1,0 +1,366 @@
+//! `impax compare scenario.toml` for spatial (3D) bodies: a scenario file with
+//! `space = "3d"` (see README, "3D scenario files").
+//!
+//! ```toml
+//! space = "3d"
+//! friction = 0.4
+//! restitution = 0.7
+//! laws = ["whittaker", "energetic"]      # optional; default: every spatial law
+//!
+//! [body]                                 # body A, contact at its lowest point (−z)
+//! shape = "ellipsoid"                    # sphere | ellipsoid | box | cylinder | rigid
+//! mass = 1.0
+//! semi_axes = [2.0, 1.0, 0.5]            # ellipsoid
+//! # radius = 1.0                         # sphere, cylinder
+//! # half_height = 1.0                    # cylinder
+//! # half_extents = [1.0, 0.5, 0.3]       # box; corner = [1, -1, -1] optional
+//! # inertia = [[1, 0, 0], [0, 2, 0], [0, 0, 2.5]]; contact = [0.3, -0.2, -0.8]   # rigid (body frame)
+//! orientation_deg = [10.0, 20.0, 30.0]   # roll, pitch, yaw (or orientation = [w, x, y, z])
+//! velocity = [0.5, 0.2, -1.0]
+//! omega = [0.0, 3.0, 0.0]
+//!
+//! [other]                                # optional free body B, struck at its highest point
+//! ```
+
+use crate::fmt::{signed, Table};
+use crate::input::{CliError, CliResult};
+use crate::json::num;
+use crate::scenario::parse_laws;
+use impax::bodies::Side;
+use impax::bodies3::{self, BodyOutcome3, BodyState3, RigidBody3, SpatialImpact};
+use impax::math::{Mat3, Quat, UnitQuat, Vec3};
+use impax::planar::Breakdown;
+use impax::LawId;
+use serde::Deserialize;
+use serde_json::{json, Value};
+
+/// The laws defined in 3D, in presentation order.
+pub const SPATIAL_LAWS: [LawId; 5] = [
+    LawId::Whittaker,
+    LawId::Brach,
+    LawId::Newton,
+    LawId::Poisson,
+    LawId::Energetic,
+];
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct FileSpec {
+    #[allow(dead_code)]
+    space: String,
+    friction: f64,
+    restitution: f64,
+    laws: Option<Vec<String>>,
+    body: BodySpec,
+    other: Option<BodySpec>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct BodySpec {
+    shape: String,
+    mass: f64,
+    radius: Option<f64>,
+    half_height: Option<f64>,
+    semi_axes: Option<[f64; 3]>,
+    half_extents: Option<[f64; 3]>,
+    corner: Option<[f64; 3]>,
+    inertia: Option<[[f64; 3]; 3]>,
+    contact: Option<[f64; 3]>,
+    orientation: Option<[f64; 4]>,
+    orientation_deg: Option<[f64; 3]>,
+    velocity: Option<[f64; 3]>,
+    omega: Option<[f64; 3]>,
+}
+
+/// Whether a TOML text asks for the spatial bodies (`space = "3d"`).
+pub fn is_spatial(text: &str) -> bool {
+    text.parse::<toml::Table>()
+        .ok()
+        .and_then(|t| t.get("space").and_then(|v| v.as_str().map(|s| s == "3d")))
+        .unwrap_or(false)
+}
+
+fn orientation(spec: &BodySpec, prefix: &str) -> CliResult<UnitQuat> {
+    match (spec.orientation, spec.orientation_deg) {
+        (Some(_), Some(_)) => Err(CliError::input(format!(
+            "{prefix}.orientation: give either orientation (quaternion) or orientation_deg, not both"
+        ))),
+        (Some([w, x, y, z]), None) => {
+            let q = Quat::new(w, x, y, z);
+            let n = q.norm();
+            if !n.is_finite() || n <= 0.0 {
+                return Err(CliError::input(format!(
+                    "{prefix}.orientation: must be a non-zero finite quaternion [w, x, y, z]"
+                )));
+            }
+            Ok(UnitQuat::from_quaternion(q))
+        }
+        (None, Some([r, p, y])) => {
+            if ![r, p, y].iter().all(|a| a.is_finite()) {
+                return Err(CliError::input(format!(
+                    "{prefix}.orientation_deg: must be finite angles"
+                )));
+            }
+            Ok(UnitQuat::from_euler_angles(
+                r.to_radians(),
+                p.to_radians(),
+                y.to_radians(),
+            ))
+        }
+        (None, None) => Ok(UnitQuat::identity()),
+    }
+}
+
+fn build(spec: &BodySpec, prefix: &str, side: Side) -> CliResult<(RigidBody3, BodyState3, String)> {
+    let f = |n: &str| format!("{prefix}.{n}");
+    let need = |n: &str, x: Option<f64>| {
+        x.ok_or_else(|| CliError::input(format!("{}: required for shape `{}`", f(n), spec.shape)))
+    };
+    let err = |e: impax::Error| CliError::input(format!("{prefix}.{e}"));
+    let q = orientation(spec, prefix)?;
+    let m = spec.mass;
+    let (body, desc) = match spec.shape.as_str() {
+        "sphere" => {
+            let r = need("radius", spec.radius)?;
+            (
+                bodies3::sphere(m, r, side).map_err(err)?,
+                format!("sphere m = {m}, r = {r}"),
+            )
+        }
+        "ellipsoid" => {
+            let a = spec.semi_axes.ok_or_else(|| {
+                CliError::input(format!(
+                    "{}: required for shape `ellipsoid`",
+                    f("semi_axes")
+                ))
+            })?;
+            (
+                bodies3::ellipsoid(m, a, q, side).map_err(err)?,
+                format!("ellipsoid m = {m}, semi-axes {a:?}"),
+            )
+        }
+        "box" => {
+            let h = spec.half_extents.ok_or_else(|| {
+                CliError::input(format!("{}: required for shape `box`", f("half_extents")))
+            })?;
+            (
+                bodies3::cuboid(m, h, q, spec.corner, side).map_err(err)?,
+                format!("box m = {m}, half-extents {h:?}"),
+            )
+        }
+        "cylinder" => {
+            let r = need("radius", spec.radius)?;
+            let h = need("half_height", spec.half_height)?;
+            (
+                bodies3::cylinder(m, r, h, q, side).map_err(err)?,
+                format!("cylinder m = {m}, r = {r}, half-height {h}"),
+            )
+        }
+        "rigid" => {
+            let i = spec.inertia.ok_or_else(|| {
+                CliError::input(format!("{}: required for shape `rigid`", f("inertia")))
+            })?;
+            let c = spec.contact.ok_or_else(|| {
+                CliError::input(format!("{}: required for shape `rigid`", f("contact")))
+            })?;
+            let im = Mat3::from_fn(|r, col| i[r][col]);
+            (
+                RigidBody3::new(m, im, q, Vec3::from(c)).map_err(err)?,
+                format!("rigid body m = {m}, contact {c:?}"),
+            )
+        }
+        other => {
+            return Err(CliError::input(format!(
+                "{}: unknown shape `{other}` (3D shapes: sphere, ellipsoid, box, cylinder, rigid)",
+                f("shape")
+            )))
+        }
+    };
+    let v = spec.velocity.unwrap_or([0.0; 3]);
+    let w = spec.omega.unwrap_or([0.0; 3]);
+    if !v.iter().chain(w.iter()).all(|x| x.is_finite()) {
+        return Err(CliError::input(format!(
+            "{prefix}: velocity and omega must be finite"
+        )));
+    }
+    Ok((
+        body,
+        BodyState3::new(Vec3::from(v), Vec3::from(w)),
+        format!("{desc}, v = {v:?}, ω = {w:?}"),
+    ))
+}
+
+fn vec3(v: Vec3) -> Value {
+    json!({ "t1": num(v.x), "t2": num(v.y), "n": num(v.z) })
+}
+
+fn state(s: &BodyState3) -> Value {
+    json!({
+        "vx": num(s.velocity.x), "vy": num(s.velocity.y), "vz": num(s.velocity.z),
+        "omega_x": num(s.omega.x), "omega_y": num(s.omega.y), "omega_z": num(s.omega.z),
+    })
+}
+
+fn entry(law: LawId, r: &Result<BodyOutcome3, Breakdown>, t0: f64, two: bool) -> Value {
+    match r {
+        Ok(b) => {
+            let o = &b.outcome;
+            let mut e = json!({
+                "law": law.as_str(),
+                "verdict": o.verdict.id(),
+                "impulse": vec3(o.impulse),
+                "contact_velocity_after": vec3(o.velocity_after),
+                "body_velocity_after": state(&b.body_after),
+                "energy_change": num(o.energy_change),
+                "energy_change_ratio": num(o.energy_change / t0),
+                "energy_split": {
+                    "translational": num(b.body_energy_change.translational + b.other_energy_change.translational),
+                    "rotational": num(b.body_energy_change.rotational + b.other_energy_change.rotational),
+                },
+                "work": {
+                    "compression": num(o.work.compression),
+                    "restitution": num(o.work.restitution),
+                    "friction": num(o.work.friction),
+                },
+                "phases": o.phases.as_slice().iter().map(|p| json!({"kind": p.kind.label(), "ends_at": num(p.ends_at), "label": p.kind.to_string()})).collect::<Vec<_>>(),
+                "compression_impulse": o.compression_impulse.map_or(Value::Null, num),
+                "inconsistency": o.inconsistency.map_or(Value::Null, |i| json!({"id": i.id(), "message": i.to_string()})),
+            });
+            if two {
+                e["other_body_velocity_after"] = b.other_after.as_ref().map_or(Value::Null, state);
+            }
+            e
+        }
+        Err(b) => json!({
+            "law": law.as_str(),
+            "verdict": "breakdown",
+            "breakdown": { "id": b.reason.id(), "message": b.reason.to_string() },
+            "impulse": null, "contact_velocity_after": null, "body_velocity_after": null,
+            "energy_change": null, "energy_change_ratio": null, "energy_split": null,
+            "work": null, "phases": [], "compression_impulse": null, "inconsistency": null,
+        }),
+    }
+}
+
+/// Run `impax compare` on a 3D scenario text; `law_flags` override the file's `laws`.
+pub fn run(
+    source: &str,
+    text: &str,
+    law_flags: &[String],
+    as_json: bool,
+    out: &mut Vec<u8>,
+) -> CliResult<()> {
+    let spec: FileSpec = toml::from_str(text)
+        .map_err(|e| CliError::input(format!("{source}: {}", e.message().replace('\n', " "))))?;
+    if spec.space != "3d" {
+        return Err(CliError::input(format!(
+            "space: `{}` is not `3d`",
+            spec.space
+        )));
+    }
+    let laws = if !law_flags.is_empty() {
+        parse_laws(law_flags)?
+    } else if let Some(ids) = &spec.laws {
+        parse_laws(ids)?
+    } else {
+        SPATIAL_LAWS.to_vec()
+    };
+    if let Some(l) = laws.iter().find(|l| !SPATIAL_LAWS.contains(l)) {
+        return Err(CliError::input(format!(
+            "law: `{l}` is defined for planar impacts only (spatial laws: whittaker, brach, newton, poisson, energetic)"
+        )));
+    }
+    let (a, sa, mut desc) = build(&spec.body, "body", Side::Below)?;
+    let impact = match &spec.other {
+        None => SpatialImpact::on_fixed_surface(a, sa),
+        Some(o) => {
+            let (b, sb, d) = build(o, "other", Side::Above)?;
+            desc = format!("{desc} striking {d}");
+            SpatialImpact::between(a, sa, b, sb)
+        }
+    };
+    let problem = impact.problem(spec.friction, spec.restitution)?;
+    let (ea, eb) = impact.energy_before();
+    let t0 = if ea.translational + eb.translational > 0.0 {
+        ea.translational + eb.translational
+    } else {
+        ea.total() + eb.total()
+    };
+    let results: Vec<_> = laws
+        .iter()
+        .map(|&l| (l, impact.resolve(l, &problem)))
+        .collect();
+    let two = impact.other.is_some();
+    let text = if as_json {
+        let w = problem.w();
+        let doc = json!({
+            "scenario": desc,
+            "problem": {
+                "w": [[w[(0,0)], w[(0,1)], w[(0,2)]], [w[(1,0)], w[(1,1)], w[(1,2)]], [w[(2,0)], w[(2,1)], w[(2,2)]]],
+                "v": vec3(problem.velocity()),
+                "friction": problem.friction(),
+                "restitution": problem.restitution(),
+            },
+            "energy_before": ea.total() + eb.total(),
+            "t0": t0,
+            "results": results.iter().map(|(l, r)| entry(*l, r, t0, two)).collect::<Vec<_>>(),
+        });
+        serde_json::to_string_pretty(&doc).map_err(CliError::failure)? + "\n"
+    } else {
+        let mut t = Table::new(&[
+            ("law", false),
+            ("vx+", true),
+            ("vy+", true),
+            ("vz+", true),
+            ("ωx+", true),
+            ("ωy+", true),
+            ("ωz+", true),
+            ("ΔT/T0", true),
+            ("phases", false),
+            ("verdict", false),
+        ]);
+        let mut notes = Vec::new();
+        for (law, r) in &results {
+            match r {
+                Ok(b) => {
+                    let (v, w) = (b.body_after.velocity, b.body_after.omega);
+                    if let Some(i) = b.outcome.inconsistency {
+                        notes.push(format!("{law}: {i}"));
+                    }
+                    t.row(vec![
+                        law.to_string(),
+                        signed(v.x, 5),
+                        signed(v.y, 5),
+                        signed(v.z, 5),
+                        signed(w.x, 5),
+                        signed(w.y, 5),
+                        signed(w.z, 5),
+                        signed(b.outcome.energy_change / t0, 5),
+                        b.outcome.phases.summary(),
+                        b.outcome.verdict.id().to_string(),
+                    ]);
+                }
+                Err(b) => {
+                    notes.push(format!("{law}: breakdown: {}", b.reason));
+                    let mut row = vec![law.to_string()];
+                    row.extend(std::iter::repeat_n("—".to_string(), 8));
+                    row.push("breakdown".into());
+                    t.row(row);
+                }
+            }
+        }
+        let v = problem.velocity();
+        let mut s = format!(
+            "impax compare (3D) — {desc}, μ = {}, e = {}\ncontact velocity v⁻ = ({}, {}, {}); T0 = {t0}\n\n",
+            spec.friction, spec.restitution, v.x, v.y, v.z
+        );
+        s.push_str(&t.render());
+        for n in notes {
+            s.push_str(&format!("note — {n}\n"));
+        }
+        s
+    };
+    out.extend_from_slice(text.as_bytes());
+    Ok(())
+}
