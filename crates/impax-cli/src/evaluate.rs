@@ -1,10 +1,11 @@
 //! One chunk of a sweep: points → contact problems → every law through the batch API.
 
 use crate::space::Setup;
-use impax::analysis::{resolve_problems, ImpactSummary};
+use impax::analysis::{resolve_problems, ImpactSummary, Tally};
 use impax::bodies::PlanarImpact;
 use impax::planar::ContactProblem;
 use impax::LawId;
+use std::cell::RefCell;
 use std::ops::Range;
 
 /// The most laws a sweep has (every law once).
@@ -45,31 +46,84 @@ pub fn chunk(
     keep_impacts: bool,
     mut visit: impl FnMut(u64, &[f64], Option<PointView<'_>>, &[ImpactSummary]),
 ) -> ChunkNotes {
-    let n = (range.end - range.start) as usize;
-    let d = setup.fields.len();
+    SCRATCH.with(|cell| {
+        let mut scratch = cell.borrow_mut();
+        let notes = fill(&mut scratch, setup, range.clone(), keep_impacts);
+        scratch.visit(setup, range, &mut visit);
+        notes
+    })
+}
+
+/// Evaluate the points of `range` and tally each law (in the order of `setup.laws`):
+/// the reduced output of a sweep, straight from the batch records.
+pub fn tally(setup: &Setup, range: Range<u64>) -> (Vec<Tally>, ChunkNotes) {
+    SCRATCH.with(|cell| {
+        let mut scratch = cell.borrow_mut();
+        let notes = fill(&mut scratch, setup, range, false);
+        let nv = scratch.problems.len();
+        let tallies = (0..setup.laws.len())
+            .map(|k| {
+                let mut t = Tally::new();
+                for (s, &t0) in scratch.summaries[k * nv..(k + 1) * nv]
+                    .iter()
+                    .zip(&scratch.t0s)
+                {
+                    t.add(s, t0);
+                }
+                for _ in 0..notes.invalid {
+                    t.add(&ImpactSummary::INVALID, 1.0);
+                }
+                t
+            })
+            .collect();
+        (tallies, notes)
+    })
+}
+
+/// Buffers reused from chunk to chunk on each thread: a fresh megabyte per chunk would cost
+/// a page fault per 4 KiB (as much time as the impacts themselves).
+#[derive(Default)]
+struct Scratch {
+    values: Vec<f64>,
+    valid: Vec<bool>,
+    problems: Vec<ContactProblem>,
+    t0s: Vec<f64>,
+    impacts: Vec<PlanarImpact>,
+    summaries: Vec<ImpactSummary>,
+}
+
+thread_local! {
+    static SCRATCH: RefCell<Scratch> = RefCell::new(Scratch::default());
+}
+
+/// Build the chunk's problems and resolve every law through the batch API.
+fn fill(scratch: &mut Scratch, setup: &Setup, range: Range<u64>, keep_impacts: bool) -> ChunkNotes {
     let laws = &setup.laws;
     let keep = keep_impacts || laws.iter().any(|l| l.needs_body());
     let mut notes = ChunkNotes::default();
     let mut template = setup.template.clone();
-    let mut values: Vec<f64> = Vec::with_capacity(n * d);
-    let mut valid: Vec<bool> = Vec::with_capacity(n);
-    let mut problems: Vec<ContactProblem> = Vec::with_capacity(n);
-    let mut t0s: Vec<f64> = Vec::with_capacity(n);
-    let mut impacts: Vec<PlanarImpact> = Vec::with_capacity(if keep { n } else { 0 });
+    let Scratch {
+        values,
+        valid,
+        problems,
+        t0s,
+        impacts,
+        summaries,
+    } = scratch;
+    values.clear();
+    valid.clear();
+    problems.clear();
+    t0s.clear();
+    impacts.clear();
+    summaries.clear();
     setup.space.for_each_in(range.clone(), |i, vals| {
         values.extend_from_slice(vals);
         for (f, &x) in setup.fields.iter().zip(vals) {
             template.set(*f, x);
         }
-        match template.point() {
-            Ok(p) => {
-                problems.push(p.problem);
-                t0s.push(p.t0);
-                if keep {
-                    impacts.push(p.impact);
-                }
-                valid.push(true);
-            }
+        let kept = if keep { Some(&mut *impacts) } else { None };
+        match template.point_into(problems, t0s, kept) {
+            Ok(()) => valid.push(true),
             Err(e) => {
                 valid.push(false);
                 notes.invalid += 1;
@@ -84,39 +138,60 @@ pub fn chunk(
     });
     let nv = problems.len();
     // Law-major: summaries[k * nv + j] is law k on valid point j.
-    let mut summaries = vec![ImpactSummary::INVALID; laws.len() * nv];
+    summaries.resize(laws.len() * nv, ImpactSummary::INVALID);
     for (k, &law) in laws.iter().enumerate() {
         let out = &mut summaries[k * nv..(k + 1) * nv];
         if law.needs_body() {
-            for ((o, imp), p) in out.iter_mut().zip(&impacts).zip(&problems) {
+            for ((o, imp), p) in out.iter_mut().zip(impacts.iter()).zip(problems.iter()) {
                 *o = match imp.resolve(law, p) {
                     Ok(b) => ImpactSummary::of(&b.outcome),
                     Err(_) => ImpactSummary::BREAKDOWN,
                 };
             }
         } else {
-            resolve_problems(law, &problems, out).expect("one record per problem");
-        }
-    }
-    let mut row = [ImpactSummary::INVALID; MAX_LAWS];
-    let invalid_row = [ImpactSummary::INVALID; MAX_LAWS];
-    let mut j = 0;
-    for (p, ok) in valid.iter().enumerate() {
-        let vals = &values[p * d..(p + 1) * d];
-        let index = range.start + p as u64;
-        if *ok {
-            for k in 0..laws.len() {
-                row[k] = summaries[k * nv + j];
-            }
-            let view = PointView {
-                t0: t0s[j],
-                impact: impacts.get(j),
-            };
-            visit(index, vals, Some(view), &row[..laws.len()]);
-            j += 1;
-        } else {
-            visit(index, vals, None, &invalid_row[..laws.len()]);
+            resolve_problems(law, problems, out).expect("one record per problem");
         }
     }
     notes
+}
+
+impl Scratch {
+    /// Call the visitor for each point of the filled chunk, in order.
+    fn visit(
+        &self,
+        setup: &Setup,
+        range: Range<u64>,
+        visit: &mut impl FnMut(u64, &[f64], Option<PointView<'_>>, &[ImpactSummary]),
+    ) {
+        let d = setup.fields.len();
+        let laws = &setup.laws;
+        let nv = self.problems.len();
+        let (values, valid, t0s, impacts, summaries) = (
+            &self.values,
+            &self.valid,
+            &self.t0s,
+            &self.impacts,
+            &self.summaries,
+        );
+        let mut row = [ImpactSummary::INVALID; MAX_LAWS];
+        let invalid_row = [ImpactSummary::INVALID; MAX_LAWS];
+        let mut j = 0;
+        for (p, ok) in valid.iter().enumerate() {
+            let vals = &values[p * d..(p + 1) * d];
+            let index = range.start + p as u64;
+            if *ok {
+                for k in 0..laws.len() {
+                    row[k] = summaries[k * nv + j];
+                }
+                let view = PointView {
+                    t0: t0s[j],
+                    impact: impacts.get(j),
+                };
+                visit(index, vals, Some(view), &row[..laws.len()]);
+                j += 1;
+            } else {
+                visit(index, vals, None, &invalid_row[..laws.len()]);
+            }
+        }
+    }
 }

@@ -14,6 +14,7 @@ use crate::progress::Progress;
 use crate::space::{self, Setup};
 use impax::analysis::{run_ordered, Sequence, Tally};
 use std::io::Write;
+use std::sync::Mutex;
 
 /// Points per chunk: large enough to amortise the scheduling, small enough for progress.
 pub const CHUNK_POINTS: u64 = 8192;
@@ -125,7 +126,7 @@ fn merge_notes(total: &mut ChunkNotes, chunk: ChunkNotes) {
 }
 
 #[inline]
-fn push_number(buf: &mut Vec<u8>, fmt: &mut ryu::Buffer, x: f64) {
+fn push_number(buf: &mut Vec<u8>, fmt: &mut zmij::Buffer, x: f64) {
     if x.is_finite() {
         buf.extend_from_slice(fmt.format_finite(x).as_bytes());
     }
@@ -147,13 +148,20 @@ fn csv(
     let total = setup.space.len();
     let progress = Progress::new(total, quiet);
     let mut notes = ChunkNotes::default();
+    // Row buffers go back to a pool once written: a fresh megabyte per chunk would cost a
+    // page fault per 4 KiB.
+    let pool: Mutex<Vec<Vec<u8>>> = Mutex::new(Vec::new());
     run_ordered(
         total,
         CHUNK_POINTS,
         |range| {
             let n = range.end - range.start;
-            let mut buf = Vec::with_capacity((n as usize) * law_names.len() * 160);
-            let mut fmt = ryu::Buffer::new();
+            let mut buf = pool
+                .lock()
+                .ok()
+                .and_then(|mut p| p.pop())
+                .unwrap_or_else(|| Vec::with_capacity((n as usize) * law_names.len() * 160));
+            let mut fmt = zmij::Buffer::new();
             let mut prefix = Vec::with_capacity(64);
             let notes = evaluate::chunk(setup, range, needs_body, |_, vals, point, sums| {
                 prefix.clear();
@@ -182,8 +190,12 @@ fn csv(
             });
             (n, buf, notes)
         },
-        |(n, buf, chunk_notes)| {
+        |(n, mut buf, chunk_notes)| {
             w.write_all(&buf).map_err(io_error)?;
+            buf.clear();
+            if let Ok(mut p) = pool.lock() {
+                p.push(buf);
+            }
             merge_notes(&mut notes, chunk_notes);
             progress.advance(n);
             Ok::<(), CliError>(())
@@ -205,13 +217,7 @@ fn summary(setup: &Setup, w: &mut Box<dyn Write + Send>, quiet: bool) -> CliResu
         CHUNK_POINTS,
         |range| {
             let n = range.end - range.start;
-            let mut t = vec![Tally::new(); nl];
-            let notes = evaluate::chunk(setup, range, false, |_, _, point, sums| {
-                let t0 = point.map_or(1.0, |p| p.t0);
-                for (tally, s) in t.iter_mut().zip(sums) {
-                    tally.add(s, t0);
-                }
-            });
+            let (t, notes) = evaluate::tally(setup, range);
             (n, t, notes)
         },
         |(n, t, chunk_notes): (u64, Vec<Tally>, ChunkNotes)| {

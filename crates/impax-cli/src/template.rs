@@ -370,15 +370,6 @@ impl BodyParams {
     }
 }
 
-/// One point of a sweep: the impact, its contact problem and the energy scale `T0`.
-#[derive(Debug, Clone, Copy)]
-pub struct Point {
-    pub impact: PlanarImpact,
-    pub problem: ContactProblem,
-    /// The translational kinetic energy before (total if that is zero), as `impax compare`.
-    pub t0: f64,
-}
-
 /// The bodies and `W` of the current body parameters (rebuilt when one of them is set).
 #[derive(Debug, Clone, Copy)]
 struct Built {
@@ -504,28 +495,34 @@ impl Template {
         }
     }
 
-    /// Build the point (no allocation unless it is invalid). The bodies and `W` are kept
-    /// until a body parameter is set; the result is bit for bit what `impax compare` builds.
+    /// Build the current point and append its contact problem, its energy scale `T0` (the
+    /// translational kinetic energy before, else the total, as `impax compare`) and, if
+    /// asked, the impact to the caller's buffers (nothing is appended on error). No
+    /// allocation unless the point is invalid; the bodies and `W` are kept until a body
+    /// parameter is set. The result is bit for bit what `impax compare` builds.
     #[inline]
-    pub fn point(&mut self) -> impax::Result<Point> {
-        let built = match self.built {
-            Some(b) => b,
-            None => {
-                let body = self.body.body()?;
-                let other = self.other.as_ref().map(BodyParams::body).transpose()?;
-                let mut w = body.inverse_inertia();
-                if let Some(o) = &other {
-                    w += o.inverse_inertia();
-                }
-                let b = Built { body, other, w };
-                self.built = Some(b);
-                b
+    pub fn point_into(
+        &mut self,
+        problems: &mut Vec<ContactProblem>,
+        t0s: &mut Vec<f64>,
+        impacts: Option<&mut Vec<PlanarImpact>>,
+    ) -> impax::Result<()> {
+        if self.built.is_none() {
+            let body = self.body.body()?;
+            let other = self.other.as_ref().map(BodyParams::body).transpose()?;
+            let mut w = body.inverse_inertia();
+            if let Some(o) = &other {
+                w += o.inverse_inertia();
             }
+            self.built = Some(Built { body, other, w });
+        }
+        let Some(built) = self.built.as_ref() else {
+            unreachable!("built above")
         };
         let state = self.body.state(&mut self.trig[0])?;
-        let impact = match (&self.other, built.other) {
+        let impact = match (&self.other, &built.other) {
             (Some(o), Some(ob)) => {
-                PlanarImpact::between(built.body, state, ob, o.state(&mut self.trig[1])?)
+                PlanarImpact::between(built.body, state, *ob, o.state(&mut self.trig[1])?)
             }
             _ => PlanarImpact::on_fixed_surface(built.body, state),
         };
@@ -541,11 +538,12 @@ impl Template {
         } else {
             before.total()
         };
-        Ok(Point {
-            impact,
-            problem,
-            t0,
-        })
+        problems.push(problem);
+        t0s.push(t0);
+        if let Some(v) = impacts {
+            v.push(impact);
+        }
+        Ok(())
     }
 
     /// Whether this is paper A's case: one sphere given by v0, α, γ against a fixed plane

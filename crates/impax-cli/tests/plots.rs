@@ -120,7 +120,7 @@ fn seed_map_png_and_svg_with_the_eq13_boundary() {
         .split("max |engine − eq. 13| = ")
         .nth(1)
         .unwrap()
-        .split(|c: char| c == ' ' || c == ',')
+        .split([' ', ','])
         .filter_map(|w| w.parse().ok())
         .take(1)
         .collect();
