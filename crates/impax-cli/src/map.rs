@@ -93,10 +93,6 @@ pub fn run(args: &MapArgs, out: &mut Vec<u8>) -> CliResult<()> {
         },
     };
     Format::of("out", &args.out)?;
-    // A file that cannot be written is bad input: say so before sweeping.
-    std::fs::File::create(&args.out).map_err(|e| {
-        CliError::input(format!("--out {}: cannot create: {e}", args.out.display()))
-    })?;
     let size = args.size.as_deref().map(plot::parse_size).transpose()?;
     if !args.space.random.is_empty() {
         return Err(CliError::input(
@@ -113,6 +109,10 @@ pub fn run(args: &MapArgs, out: &mut Vec<u8>) -> CliResult<()> {
     let Space::Grid(grid) = &setup.space else {
         return Err(CliError::input("--grid: a map needs a grid"));
     };
+    // A file that cannot be written is bad input: say so before sweeping.
+    std::fs::File::create(&args.out).map_err(|e| {
+        CliError::input(format!("--out {}: cannot create: {e}", args.out.display()))
+    })?;
     let (ax, ay) = (grid.axes()[0].clone(), grid.axes()[1].clone());
     let nl = setup.laws.len();
     let total = setup.space.len();

@@ -219,6 +219,9 @@ fn bad(args: &[&str], needle: &str) {
 
 #[test]
 fn bad_map_input_exits_2() {
+    // Run where a stray file would be seen; none of these may create one.
+    let d = Dir::new("bad");
+    let x = d.file("x.png");
     let g = ["--grid", "alpha-deg=0:80:5", "--grid", "spin-ratio=-1:1:5"];
     let with = |extra: &[&'static str]| {
         let mut v = vec!["map"];
@@ -226,10 +229,20 @@ fn bad_map_input_exits_2() {
         v.extend_from_slice(extra);
         v
     };
+    let with_out = |extra: &[&str]| {
+        let mut v = with(&[]);
+        v.push("--out");
+        v.push(&x);
+        v.extend_from_slice(extra);
+        v.iter().map(|s| s.to_string()).collect::<Vec<String>>()
+    };
+    fn refs(v: &[String]) -> Vec<&str> {
+        v.iter().map(String::as_str).collect()
+    }
+    bad(&refs(&with_out(&["--what", "colour"])), "colour");
+    bad(&refs(&with_out(&["--what", "status"])), "status");
+    bad(&refs(&with_out(&["--size", "10x10"])), "--size");
     bad(&with(&["--out", "x.jpg"]), ".png or .svg");
-    bad(&with(&["--out", "x.png", "--what", "colour"]), "colour");
-    bad(&with(&["--out", "x.png", "--what", "status"]), "status");
-    bad(&with(&["--out", "x.png", "--size", "10x10"]), "--size");
     bad(&with(&["--out", "/nonexistent/dir/x.png"]), "cannot create");
     bad(&with(&[]), "--out");
     bad(
