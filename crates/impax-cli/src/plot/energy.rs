@@ -63,8 +63,22 @@ where
     let span = (hi - lo).max(1e-12);
     let (x0, x1) = (lo - 0.08 * span, hi + 0.08 * span);
     let n = rows.len().max(1) as f64;
-    let mut chart = ChartBuilder::on(area)
-        .caption(caption, text(16.0))
+    // The legend: one line above the chart, where it hides no bar.
+    let (strip, area) = area.split_vertically(56);
+    let mut lx = 110;
+    for (name, col, _) in parts {
+        strip
+            .draw(&Rectangle::new([(lx, 36), (lx + 16, 48)], col.filled()))
+            .map_err(err)?;
+        strip
+            .draw(&Text::new(name.to_string(), (lx + 22, 35), text(13.0)))
+            .map_err(err)?;
+        lx += 40 + 8 * name.chars().count() as i32;
+    }
+    strip
+        .draw(&Text::new(caption.to_string(), (110, 6), text(16.0)))
+        .map_err(err)?;
+    let mut chart = ChartBuilder::on(&area)
         .margin(10)
         .margin_right(24)
         .x_label_area_size(40)
@@ -125,21 +139,6 @@ where
             vec![(0.0, -0.5), (0.0, n - 0.5)],
             BLACK.stroke_width(1),
         )))
-        .map_err(err)?;
-    for (name, col, _) in parts {
-        chart
-            .draw_series(std::iter::empty::<Rectangle<(f64, f64)>>())
-            .map_err(err)?
-            .label(name)
-            .legend(move |(x, y)| Rectangle::new([(x, y - 6), (x + 16, y + 6)], col.filled()));
-    }
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::LowerRight)
-        .background_style(WHITE.mix(0.9))
-        .border_style(RGBColor(180, 180, 180))
-        .label_font(text(12.0))
-        .draw()
         .map_err(err)?;
     Ok(())
 }

@@ -97,9 +97,13 @@ impl MapFigure {
     pub fn default_size(&self) -> (u32, u32) {
         let (c, r) = self.layout();
         let w = 60 + 440 * c as u32 + LEGEND_WIDTH;
-        let h = 80 + 380 * r as u32;
+        let mut h = 80 + 380 * r as u32;
+        // A colour bar needs height beside the overlays' legend.
+        if matches!(self.cells, Cells::Scalar { .. }) && !self.overlays.is_empty() {
+            h = h.max(680);
+        }
         if c == 1 {
-            (w + 300, h + 260)
+            (w + 300, h.max(720))
         } else {
             (w, h)
         }
@@ -338,7 +342,7 @@ impl MapFigure {
                     .map_err(err)?;
                 }
                 let top = 70;
-                let bottom = (h as i32 - 70 - overlay_height).max(top + 60);
+                let bottom = (h as i32 - 70 - overlay_height).max(top + 160);
                 let (clo, chi) = if *diverging {
                     let m = lo.abs().max(hi.abs());
                     (-m, m)
@@ -357,20 +361,20 @@ impl MapFigure {
                     BLACK.stroke_width(1),
                 ))
                 .map_err(err)?;
-                for i in 0..=6 {
-                    let t = i as f64 / 6.0;
-                    let py = bottom - ((bottom - top) as f64 * t).round() as i32;
+                let to_py = |v: f64| {
+                    bottom
+                        - ((bottom - top) as f64 * (v - clo) / (chi - clo).max(f64::MIN_POSITIVE))
+                            .round() as i32
+                };
+                for v in nice_ticks(clo, chi, ((bottom - top) / 28).clamp(2, 12) as usize) {
+                    let py = to_py(v);
                     area.draw(&PathElement::new(
                         vec![(bar.1, py), (bar.1 + 6, py)],
                         BLACK.stroke_width(1),
                     ))
                     .map_err(err)?;
-                    area.draw(&Text::new(
-                        tick(clo + t * (chi - clo)),
-                        (bar.1 + 10, py - 7),
-                        text(13.0),
-                    ))
-                    .map_err(err)?;
+                    area.draw(&Text::new(tick(v), (bar.1 + 10, py - 7), text(13.0)))
+                        .map_err(err)?;
                 }
                 y = bottom + 16;
                 area.draw(&Rectangle::new(
@@ -418,6 +422,24 @@ impl MapFigure {
         }
         Ok(())
     }
+}
+
+/// Round tick values (1, 2 or 5 times a power of ten apart) in `[lo, hi]`, about `n`.
+pub fn nice_ticks(lo: f64, hi: f64, n: usize) -> Vec<f64> {
+    let span = hi - lo;
+    if !(span > 0.0) || !span.is_finite() {
+        return vec![lo];
+    }
+    let raw = span / n.max(1) as f64;
+    let mag = 10f64.powf(raw.log10().floor());
+    let step = [1.0, 2.0, 5.0, 10.0]
+        .iter()
+        .map(|m| m * mag)
+        .find(|s| *s >= raw)
+        .unwrap_or(10.0 * mag);
+    let first = (lo / step).ceil() as i64;
+    let last = (hi / step).floor() as i64;
+    (first..=last).map(|k| k as f64 * step).collect()
 }
 
 /// Wrap text at spaces to lines of at most `width` characters.

@@ -137,24 +137,38 @@ impl RouthFigure {
             .legend(move |(x, y)| {
                 PathElement::new(vec![(x, y), (x + 20, y)], grey.stroke_width(1))
             });
-        let line_pn = |f: &dyn Fn(f64) -> f64| -> Vec<(f64, f64)> {
-            (0..=200)
-                .map(|i| y0 + (y1 - y0) * i as f64 / 200.0)
-                .map(|y| (f(y), y))
-                .filter(|(x, _)| x.is_finite() && *x >= x0 && *x <= x1)
-                .collect()
-        };
-        let line_pt = |f: &dyn Fn(f64) -> f64| -> Vec<(f64, f64)> {
-            (0..=200)
-                .map(|i| x0 + (x1 - x0) * i as f64 / 200.0)
-                .map(|x| (x, f(x)))
-                .filter(|(_, y)| y.is_finite() && *y >= y0 && *y <= y1)
-                .collect()
+        // Straight lines `ux + vy = w` clipped to the chart (two end points: no jaggies).
+        let clip = |u: f64, v: f64, w: f64| -> Vec<(f64, f64)> {
+            let mut pts = Vec::new();
+            if v != 0.0 {
+                for x in [x0, x1] {
+                    let y = (w - u * x) / v;
+                    if (y0..=y1).contains(&y) {
+                        pts.push((x, y));
+                    }
+                }
+            }
+            if u != 0.0 {
+                for y in [y0, y1] {
+                    let x = (w - v * y) / u;
+                    if (x0..=x1).contains(&x) {
+                        pts.push((x, y));
+                    }
+                }
+            }
+            pts.sort_by(|p, q| p.0.total_cmp(&q.0).then(p.1.total_cmp(&q.1)));
+            pts.dedup();
+            if pts.len() > 2 {
+                let last = pts[pts.len() - 1];
+                pts.truncate(1);
+                pts.push(last);
+            }
+            pts
         };
         let stick_colour = RGBColor(0, 150, 136);
         chart
             .draw_series(LineSeries::new(
-                line_pn(&stick_at),
+                clip(a, b, -v.x), // v_t = v_t⁻ + a p_t + b p_n = 0
                 stick_colour.stroke_width(2),
             ))
             .map_err(err)?
@@ -164,8 +178,9 @@ impl RouthFigure {
             });
         let comp_colour = RGBColor(90, 90, 90);
         chart
+            // v_n = v_n⁻ + b p_t + c p_n = 0
             .draw_series(LineSeries::new(
-                line_pt(&|x| -(v.y + b * x) / c),
+                clip(b, c, -v.y),
                 comp_colour.stroke_width(2),
             ))
             .map_err(err)?
@@ -174,8 +189,9 @@ impl RouthFigure {
                 PathElement::new(vec![(x, y), (x + 20, y)], comp_colour.stroke_width(2))
             });
         chart
+            // v_n = −e v_n⁻
             .draw_series(DashedLineSeries::new(
-                line_pt(&|x| (-(1.0 + e) * v.y - b * x) / c),
+                clip(b, c, -(1.0 + e) * v.y),
                 8,
                 5,
                 comp_colour.stroke_width(1),
@@ -189,7 +205,8 @@ impl RouthFigure {
         let n = self.paths.len() as u32;
         for (i, path) in self.paths.iter().enumerate() {
             let col = colour::law(path.law);
-            let width = 2 + 2 * (n - i as u32 - 1) / n.max(1);
+            // From 7 px for the first law down to 2 px for the last.
+            let width = 2 + 5 * (n - 1 - i as u32) / (n - 1).max(1);
             let style = col.stroke_width(width);
             chart
                 .draw_series(LineSeries::new(path.points.iter().copied(), style))
