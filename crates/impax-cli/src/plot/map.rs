@@ -427,7 +427,7 @@ impl MapFigure {
 /// Round tick values (1, 2 or 5 times a power of ten apart) in `[lo, hi]`, about `n`.
 pub fn nice_ticks(lo: f64, hi: f64, n: usize) -> Vec<f64> {
     let span = hi - lo;
-    if !(span > 0.0) || !span.is_finite() {
+    if span.is_nan() || span <= 0.0 || !span.is_finite() {
         return vec![lo];
     }
     let raw = span / n.max(1) as f64;
