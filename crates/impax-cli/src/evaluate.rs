@@ -48,7 +48,7 @@ pub fn chunk(
 ) -> ChunkNotes {
     SCRATCH.with(|cell| {
         let mut scratch = cell.borrow_mut();
-        let notes = fill(&mut scratch, setup, range.clone(), keep_impacts);
+        let notes = fill(&mut scratch, setup, range.clone(), keep_impacts, true);
         scratch.visit(setup, range, &mut visit);
         notes
     })
@@ -59,7 +59,7 @@ pub fn chunk(
 pub fn tally(setup: &Setup, range: Range<u64>) -> (Vec<Tally>, ChunkNotes) {
     SCRATCH.with(|cell| {
         let mut scratch = cell.borrow_mut();
-        let notes = fill(&mut scratch, setup, range, false);
+        let notes = fill(&mut scratch, setup, range, false, false);
         let nv = scratch.problems.len();
         let tallies = (0..setup.laws.len())
             .map(|k| {
@@ -97,7 +97,15 @@ thread_local! {
 }
 
 /// Build the chunk's problems and resolve every law through the batch API.
-fn fill(scratch: &mut Scratch, setup: &Setup, range: Range<u64>, keep_impacts: bool) -> ChunkNotes {
+/// `visits`: keep each point's values and validity for [`Scratch::visit`] (a tally needs
+/// neither).
+fn fill(
+    scratch: &mut Scratch,
+    setup: &Setup,
+    range: Range<u64>,
+    keep_impacts: bool,
+    visits: bool,
+) -> ChunkNotes {
     let laws = &setup.laws;
     let keep = keep_impacts || laws.iter().any(|l| l.needs_body());
     let mut notes = ChunkNotes::default();
@@ -117,15 +125,23 @@ fn fill(scratch: &mut Scratch, setup: &Setup, range: Range<u64>, keep_impacts: b
     impacts.clear();
     summaries.clear();
     setup.space.for_each_in(range.clone(), |i, vals| {
-        values.extend_from_slice(vals);
+        if visits {
+            values.extend_from_slice(vals);
+        }
         for (f, &x) in setup.fields.iter().zip(vals) {
             template.set(*f, x);
         }
         let kept = if keep { Some(&mut *impacts) } else { None };
         match template.point_into(problems, t0s, kept) {
-            Ok(()) => valid.push(true),
+            Ok(()) => {
+                if visits {
+                    valid.push(true)
+                }
+            }
             Err(e) => {
-                valid.push(false);
+                if visits {
+                    valid.push(false);
+                }
                 notes.invalid += 1;
                 if notes.first_invalid.is_none() {
                     notes.first_invalid = Some(Invalid {

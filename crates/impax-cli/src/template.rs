@@ -336,7 +336,7 @@ impl BodyParams {
     /// eq. 1), inlined (the radius was validated with the body).
     /// `trig` remembers `(α in degrees, sin α, cos α)` of the last call: a grid whose α
     /// varies slowly computes each sine and cosine once.
-    #[inline]
+    #[inline(always)]
     fn state(&self, trig: &mut (f64, f64, f64)) -> impax::Result<BodyState2> {
         match self.motion {
             Motion::Seed {
@@ -344,7 +344,6 @@ impl BodyParams {
                 alpha_deg,
                 spin_ratio,
             } => {
-                let alpha = alpha_deg.to_radians();
                 if !(speed > 0.0 && speed.is_finite()) {
                     return Err(impax::Error::OutOfRange {
                         field: "speed".into(),
@@ -352,11 +351,13 @@ impl BodyParams {
                         reason: "must be > 0".into(),
                     });
                 }
-                if !alpha.is_finite() || !spin_ratio.is_finite() {
+                if !alpha_deg.is_finite() || !spin_ratio.is_finite() {
                     // The library names the field.
+                    let alpha = alpha_deg.to_radians();
                     return bodies::spin_state(speed, alpha, spin_ratio, self.radius);
                 }
                 if trig.0.to_bits() != alpha_deg.to_bits() {
+                    let alpha = alpha_deg.to_radians();
                     *trig = (alpha_deg, alpha.sin(), alpha.cos());
                 }
                 Ok(BodyState2::new(
