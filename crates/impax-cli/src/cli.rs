@@ -67,12 +67,13 @@ pub struct SpaceArgs {
 pub struct SweepArgs {
     #[command(flatten)]
     pub space: SpaceArgs,
-    /// Output: `csv` (one row per point and law, with a header row) or `summary` (counts by
-    /// verdict and phase sequence and the range of ΔT/T0, per law).
+    /// Output: `csv` (one row per point and law, with a header row), `summary` (counts by
+    /// verdict and phase sequence and the range of ΔT/T0, per law), or `parquet` (the CSV's
+    /// columns; needs --out and an impax built with the `parquet` feature).
     #[arg(long, default_value = "csv")]
     pub format: String,
-    /// CSV output columns after the swept fields and `law`, comma separated (default: all;
-    /// see README: "Sweeps").
+    /// CSV/Parquet output columns after the swept fields and `law`, comma separated
+    /// (default: all; see README: "Sweeps").
     #[arg(long, value_delimiter = ',')]
     pub columns: Vec<String>,
     /// Write to FILE instead of stdout.

@@ -16,6 +16,8 @@ mod input;
 mod json;
 mod map;
 mod paper;
+#[cfg(feature = "parquet")]
+mod parquet_out;
 mod plot;
 mod progress;
 mod resolve;

@@ -23,6 +23,8 @@ pub const CHUNK_POINTS: u64 = 8192;
 enum Format {
     Csv,
     Summary,
+    /// Parquet (cargo feature `parquet`).
+    Parquet,
 }
 
 /// Run the sweep, writing straight to stdout or `--out` (not through `main`'s buffer).
@@ -30,17 +32,32 @@ pub fn run(args: &SweepArgs) -> CliResult<()> {
     let format = match args.format.as_str() {
         "csv" => Format::Csv,
         "summary" => Format::Summary,
+        "parquet" => {
+            if !cfg!(feature = "parquet") {
+                return Err(CliError::input(
+                    "--format parquet: this impax was built without Parquet support (build with `cargo build --release --features parquet`)",
+                ));
+            }
+            if args.out.is_none() {
+                return Err(CliError::input(
+                    "--format parquet: give the file with --out FILE.parquet",
+                ));
+            }
+            Format::Parquet
+        }
         other => {
             return Err(CliError::input(format!(
-                "--format: unknown format `{other}` (known: csv, summary)"
+                "--format: unknown format `{other}` (known: csv, summary, parquet)"
             )))
         }
     };
     let columns = if args.columns.is_empty() {
         Column::ALL.to_vec()
     } else {
-        if format != Format::Csv {
-            return Err(CliError::input("--columns: applies to --format csv"));
+        if format == Format::Summary {
+            return Err(CliError::input(
+                "--columns: applies to --format csv and parquet",
+            ));
         }
         let mut cols = Vec::new();
         for name in &args.columns {
@@ -57,6 +74,9 @@ pub fn run(args: &SweepArgs) -> CliResult<()> {
         cols
     };
     let setup = space::setup(&args.space)?;
+    if format == Format::Parquet {
+        return parquet(args, &setup, &columns);
+    }
     let mut writer: Box<dyn Write + Send> = match &args.out {
         Some(path) => Box::new(std::io::BufWriter::with_capacity(
             1 << 20,
@@ -73,6 +93,7 @@ pub fn run(args: &SweepArgs) -> CliResult<()> {
     let result = space::with_threads(args.space.threads, || match format {
         Format::Csv => csv(&setup, &columns, &mut writer, quiet),
         Format::Summary => summary(&setup, &mut writer, quiet),
+        Format::Parquet => unreachable!("written above"),
     })?;
     let flushed = result.and_then(|()| writer.flush().map_err(io_error));
     match flushed {
@@ -80,6 +101,24 @@ pub fn run(args: &SweepArgs) -> CliResult<()> {
         Err(e) if e.message == BROKEN_PIPE => Ok(()),
         other => other,
     }
+}
+
+#[cfg(feature = "parquet")]
+fn parquet(args: &SweepArgs, setup: &Setup, columns: &[Column]) -> CliResult<()> {
+    let path = args.out.as_deref().expect("checked with the format");
+    let quiet = args.space.quiet;
+    space::with_threads(args.space.threads, || {
+        let progress = Progress::new(setup.space.len(), quiet);
+        let notes = crate::parquet_out::write(setup, columns, path, &progress)?;
+        progress.finish("sweep", setup.space.len(), setup.laws.len());
+        note_invalid(setup, &notes, quiet);
+        Ok(())
+    })?
+}
+
+#[cfg(not(feature = "parquet"))]
+fn parquet(_: &SweepArgs, _: &Setup, _: &[Column]) -> CliResult<()> {
+    unreachable!("rejected when the format is parsed")
 }
 
 const BROKEN_PIPE: &str = "broken pipe";

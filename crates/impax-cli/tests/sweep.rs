@@ -378,3 +378,20 @@ fn bad_grids_give_one_line_and_exit_2() {
         "cannot read",
     );
 }
+
+#[cfg(not(feature = "parquet"))]
+#[test]
+fn parquet_needs_the_feature() {
+    bad(
+        &[
+            "sweep",
+            "--grid",
+            "alpha-deg=0:1:3",
+            "--format",
+            "parquet",
+            "--out",
+            "x.parquet",
+        ],
+        "without Parquet support",
+    );
+}
