@@ -396,6 +396,16 @@ pub struct Template {
 impl Template {
     /// Load and validate a scenario file (default: the seed's sphere).
     pub fn load(path: Option<&Path>) -> CliResult<Self> {
+        if let Some(p) = path {
+            if let Ok(text) = std::fs::read_to_string(p) {
+                if crate::compare3::is_spatial(&text) {
+                    return Err(CliError::input(format!(
+                        "{}: sweeps and maps are planar: a `space = \"3d\"` scenario cannot be swept yet",
+                        p.display()
+                    )));
+                }
+            }
+        }
         let spec = parse_file(path)?;
         build_body(&spec.body, "body", Side::Below)?;
         if let Some(o) = &spec.other {
