@@ -395,3 +395,18 @@ fn parquet_needs_the_feature() {
         "without Parquet support",
     );
 }
+
+#[test]
+fn throughput_line_without_a_terminal_and_nothing_when_quiet() {
+    let args = ["sweep", "--grid", "friction=0:1:11", "--format", "summary"];
+    let out = impax().args(args).output().unwrap();
+    assert!(out.status.success());
+    let stderr = String::from_utf8(out.stderr).unwrap();
+    // No progress bar when stderr is not a terminal: exactly the throughput line.
+    assert_eq!(stderr.lines().count(), 1, "{stderr:?}");
+    assert!(stderr.contains("11 points × 8 laws = 88 impacts") && stderr.contains("M impacts/s"));
+    let mut quiet = args.to_vec();
+    quiet.push("--quiet");
+    let out = impax().args(quiet).output().unwrap();
+    assert!(out.stderr.is_empty());
+}
