@@ -531,6 +531,26 @@ impl Template {
             unreachable!("built above")
         };
         let state = self.body.state(&mut self.trig[0])?;
+        if let (None, None) = (&self.other, &impacts) {
+            // One body and no impact kept: the same numbers as `PlanarImpact`'s
+            // `contact_velocity` and `energy_before`, without building it.
+            let body = &built.body;
+            let problem = ContactProblem::new(
+                built.w,
+                body.contact_velocity(&state),
+                self.friction,
+                self.restitution,
+            )?;
+            let translational = body.translational_energy(&state);
+            let t0 = if translational > 0.0 {
+                translational
+            } else {
+                translational + body.rotational_energy(&state)
+            };
+            problems.push(problem);
+            t0s.push(t0);
+            return Ok(());
+        }
         let impact = match (&self.other, &built.other) {
             (Some(o), Some(ob)) => {
                 PlanarImpact::between(built.body, state, *ob, o.state(&mut self.trig[1])?)

@@ -140,6 +140,37 @@ fn sweep_rows_equal_single_resolve_calls() {
 }
 
 #[test]
+fn reduced_columns_take_the_same_numbers() {
+    // Without body columns the point is built without its `PlanarImpact`: same numbers.
+    let grid = [
+        "sweep",
+        "--grid",
+        "alpha-deg=0:89:30",
+        "--grid",
+        "spin-ratio=-2:2:31",
+        "--quiet",
+    ];
+    let full = String::from_utf8(run_ok(&grid)).unwrap();
+    let mut args = grid.to_vec();
+    args.extend([
+        "--law",
+        "whittaker,energetic",
+        "--columns",
+        "status,p_t,energy_ratio",
+    ]);
+    let reduced = String::from_utf8(run_ok(&args)).unwrap();
+    let want: Vec<String> = full
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').collect::<Vec<_>>())
+        .filter(|c| c[2] == "whittaker" || c[2] == "energetic")
+        .map(|c| [c[0], c[1], c[2], c[3], c[5], c[14]].join(","))
+        .collect();
+    let got: Vec<&str> = reduced.lines().skip(1).collect();
+    assert_eq!(got, want);
+}
+
+#[test]
 fn output_is_identical_for_any_thread_count() {
     // 24 000 points: three chunks of the ordered driver, two laws per point.
     let args = |t: &'static str| {
