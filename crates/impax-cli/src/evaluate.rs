@@ -1,7 +1,7 @@
 //! One chunk of a sweep: points → contact problems → every law through the batch API.
 
 use crate::space::Setup;
-use impax::analysis::{resolve_problems, ImpactSummary, Tally};
+use impax::analysis::{for_each_resolution, resolve_problems, ImpactSummary, Tally};
 use impax::bodies::PlanarImpact;
 use impax::planar::ContactProblem;
 use impax::LawId;
@@ -49,6 +49,7 @@ pub fn chunk(
     SCRATCH.with(|cell| {
         let mut scratch = cell.borrow_mut();
         let notes = fill(&mut scratch, setup, range.clone(), keep_impacts, true);
+        resolve_all(&mut scratch, &setup.laws);
         scratch.visit(setup, range, &mut visit);
         notes
     })
@@ -59,16 +60,21 @@ pub fn chunk(
 pub fn tally(setup: &Setup, range: Range<u64>) -> (Vec<Tally>, ChunkNotes) {
     SCRATCH.with(|cell| {
         let mut scratch = cell.borrow_mut();
-        let notes = fill(&mut scratch, setup, range, false, false);
-        let nv = scratch.problems.len();
-        let tallies = (0..setup.laws.len())
-            .map(|k| {
+        let keep = setup.laws.iter().any(|l| l.needs_body());
+        let notes = fill(&mut scratch, setup, range, keep, false);
+        let (problems, t0s, impacts) = (&scratch.problems, &scratch.t0s, &scratch.impacts);
+        let tallies = setup
+            .laws
+            .iter()
+            .map(|&law| {
                 let mut t = Tally::new();
-                for (s, &t0) in scratch.summaries[k * nv..(k + 1) * nv]
-                    .iter()
-                    .zip(&scratch.t0s)
-                {
-                    t.add(s, t0);
+                if law.needs_body() {
+                    for ((imp, p), &t0) in impacts.iter().zip(problems).zip(t0s) {
+                        t.add_resolution(&imp.resolve(law, p).map(|b| b.outcome), t0);
+                    }
+                } else {
+                    // The batch, reduced on the fly: no record per impact.
+                    for_each_resolution(law, problems, |j, r| t.add_resolution(r, t0s[j]));
                 }
                 for _ in 0..notes.invalid {
                     t.add(&ImpactSummary::INVALID, 1.0);
@@ -96,7 +102,7 @@ thread_local! {
     static SCRATCH: RefCell<Scratch> = RefCell::new(Scratch::default());
 }
 
-/// Build the chunk's problems and resolve every law through the batch API.
+/// Build the chunk's problems (and, if asked, the impacts, values and validity).
 /// `visits`: keep each point's values and validity for [`Scratch::visit`] (a tally needs
 /// neither).
 fn fill(
@@ -152,8 +158,20 @@ fn fill(
             }
         }
     });
+    notes
+}
+
+/// Resolve every law on the built problems through the batch API (law-major records:
+/// `summaries[k * nv + j]` is law `k` on valid point `j`).
+fn resolve_all(scratch: &mut Scratch, laws: &[LawId]) {
+    let Scratch {
+        problems,
+        impacts,
+        summaries,
+        ..
+    } = scratch;
     let nv = problems.len();
-    // Law-major: summaries[k * nv + j] is law k on valid point j.
+    summaries.clear();
     summaries.resize(laws.len() * nv, ImpactSummary::INVALID);
     for (k, &law) in laws.iter().enumerate() {
         let out = &mut summaries[k * nv..(k + 1) * nv];
@@ -168,7 +186,6 @@ fn fill(
             resolve_problems(law, problems, out).expect("one record per problem");
         }
     }
-    notes
 }
 
 impl Scratch {

@@ -3,9 +3,9 @@
 //! agrees with the engine's own sign change of Whittaker's ΔT.
 
 use impax::analysis::{
-    resolve_columns, resolve_problems, run_ordered, whittaker_sphere_energy_ratio,
-    whittaker_sphere_thresholds, Axis, Grid, ImpactSummary, ProblemColumns, RandomSamples,
-    SampleRange, Sequence, Space, Status, Tally,
+    for_each_resolution, resolve_columns, resolve_problems, run_ordered,
+    whittaker_sphere_energy_ratio, whittaker_sphere_thresholds, Axis, Grid, ImpactSummary,
+    ProblemColumns, RandomSamples, SampleRange, Sequence, Space, Status, Tally,
 };
 use impax::paper::liu2012::Seed;
 use impax::planar::{ContactProblem, Verdict};
@@ -55,6 +55,15 @@ fn batch_equals_single_calls_for_every_law() {
     // The random set exercises every regime of the exact laws.
     for s in [Sequence::Slip, Sequence::SlipStick, Sequence::SlipReverse] {
         assert!(seen.contains(&(LawId::Energetic, s)), "no {s:?}");
+    }
+    // The fused reduction counts exactly what the records count.
+    for law in LawId::ALL {
+        resolve_problems(law, &problems, &mut out).unwrap();
+        let mut from_records = Tally::new();
+        out.iter().for_each(|s| from_records.add(s, 0.5));
+        let mut fused = Tally::new();
+        for_each_resolution(law, &problems, |_, r| fused.add_resolution(r, 0.5));
+        assert_eq!(format!("{fused:?}"), format!("{from_records:?}"), "{law}");
     }
     // smith-centre needs a body: a breakdown in contact space.
     resolve_problems(LawId::SmithCentre, &problems, &mut out).unwrap();

@@ -345,6 +345,33 @@ pub fn resolve_problems(
     Ok(())
 }
 
+/// Resolve validated problems with one law and hand each resolution to `f(i, &resolution)`
+/// in order: the batch without the compact record, for reductions that read the full
+/// [`Outcome`] (e.g. [`Tally::add_resolution`](super::Tally::add_resolution)). No allocation;
+/// the law is dispatched once.
+///
+/// ```
+/// use impax::analysis::{for_each_resolution, Tally};
+/// use impax::planar::ContactProblem;
+/// use impax::LawId;
+/// let a = 30f64.to_radians();
+/// let p = ContactProblem::from_entries(3.5, 0.0, 1.0, a.sin(), -a.cos(), 0.4, 0.7).unwrap();
+/// let mut t = Tally::new();
+/// for_each_resolution(LawId::Whittaker, &[p, p], |_, r| t.add_resolution(r, 0.5));
+/// assert_eq!(t.energy_gained, 2);
+/// ```
+pub fn for_each_resolution(
+    law: LawId,
+    problems: &[ContactProblem],
+    mut f: impl FnMut(usize, &Resolution),
+) {
+    with_law!(law, |l| {
+        for (i, p) in problems.iter().enumerate() {
+            f(i, &l.resolve(p));
+        }
+    });
+}
+
 /// Resolve columns with one law: problem `i` is validated, then resolved; an invalid
 /// problem gives [`ImpactSummary::INVALID`].
 ///

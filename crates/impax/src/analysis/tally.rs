@@ -1,7 +1,7 @@
 //! A reduction of many impacts into counts and extremes (a sweep's "summary" output).
 
 use super::batch::{ImpactSummary, Sequence, Status};
-use crate::planar::Verdict;
+use crate::planar::{Resolution, Verdict};
 
 /// Counts by status and by phase sequence, and the range and sum of `ΔT/T0`, of one law
 /// over many impacts. Tallies of consecutive chunks [`merge`](Tally::merge) in order, so a
@@ -77,6 +77,31 @@ impl Tally {
             self.min_ratio = self.min_ratio.min(r);
             self.max_ratio = self.max_ratio.max(r);
             self.sum_ratio += r;
+        }
+    }
+
+    /// Count one resolution straight from the law's result (the same counts as
+    /// [`Tally::add`] of its [`ImpactSummary`]).
+    #[inline]
+    pub fn add_resolution(&mut self, r: &Resolution, t0: f64) {
+        self.total += 1;
+        match r {
+            Ok(o) => {
+                match o.verdict {
+                    Verdict::Consistent => self.consistent += 1,
+                    Verdict::EnergyGained => self.energy_gained += 1,
+                    Verdict::InconsistentAssumption => self.inconsistent += 1,
+                }
+                self.sequences[Sequence::of(&o.phases) as usize] += 1;
+                let ratio = o.energy_change / t0;
+                self.min_ratio = self.min_ratio.min(ratio);
+                self.max_ratio = self.max_ratio.max(ratio);
+                self.sum_ratio += ratio;
+            }
+            Err(_) => {
+                self.breakdown += 1;
+                self.sequences[Sequence::None as usize] += 1;
+            }
         }
     }
 
