@@ -78,8 +78,10 @@ pub fn line_summary(problem: &ContactProblem, kind: PhaseKind, ratio: f64, pf: f
     let normal_work = pf * (v.y + 0.5 * slope.y * pf);
     let (compression_impulse, compression_work) = if v.y >= 0.0 {
         (Some(0.0), 0.0)
-    } else if slope.y > 0.0 && -v.y / slope.y <= pf {
-        let pc = -v.y / slope.y;
+    } else if slope.y > 0.0 {
+        // Every straight law ends by Newton's rule, v_n(p_f) = −e v_n⁻ ≥ 0: compression has
+        // ended by p_f (at p_f when e = 0, whatever the round-off of p_f).
+        let pc = (-v.y / slope.y).min(pf);
         (Some(pc), pc * (v.y + 0.5 * slope.y * pc))
     } else {
         (None, normal_work)

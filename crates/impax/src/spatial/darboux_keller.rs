@@ -202,6 +202,51 @@ pub fn integrate(
     };
     observe(0.0, v0);
     let mut phases = Phases3::new();
+    if mu == 0.0 {
+        // Frictionless: a straight path p = p_n (0, 0, 1); v_n is linear and the three
+        // terminations coincide at p_f = (1+e) p_c.
+        let pc = -v0.z / wnn;
+        let pf = (1.0 + e) * pc;
+        let vt = v0.xy() + wtn * pf;
+        let vt0 = v0.xy();
+        let through_zero = vt0.x * wtn.y - vt0.y * wtn.x == 0.0 && vt0.dot(&wtn) < 0.0;
+        let halt = vt0.norm() / wtn.norm();
+        if through_zero && halt < pf {
+            // The slip runs straight through zero and continues along w_tn.
+            let a = vt0.y.atan2(vt0.x);
+            phases.push(Phase3Kind::Slip { from: a, to: a }, halt);
+        }
+        let kind = if through_zero && halt < pf {
+            Phase3Kind::Resumed {
+                angle: wtn.y.atan2(wtn.x),
+            }
+        } else if v0.x != 0.0 || v0.y != 0.0 {
+            Phase3Kind::Slip {
+                from: v0.y.atan2(v0.x),
+                to: vt.y.atan2(vt.x),
+            }
+        } else if wtn.norm() > 0.0 {
+            Phase3Kind::Resumed {
+                angle: wtn.y.atan2(wtn.x),
+            }
+        } else {
+            Phase3Kind::Stick
+        };
+        phases.push(kind, pf);
+        ev.pc = Some(pc);
+        ev.wc = pc * (v0.z + 0.5 * wnn * pc);
+        let end = Point {
+            p: pf,
+            vt,
+            vn: v0.z + wnn * pf,
+            pt: Vec2::zeros(),
+            wn: pf * (v0.z + 0.5 * wnn * pf),
+            wt: 0.0,
+        };
+        observe(pf, Vec3::new(vt.x, vt.y, end.vn));
+        let slip_halt = (through_zero && halt < pf).then_some(halt);
+        return Ok(finish(&end, &ev, phases, slip_halt, 0));
+    }
     let mut steps = 0u32;
     let mut slip_halt = None;
     let phi0 = v0.y.atan2(v0.x);
@@ -357,11 +402,18 @@ fn linear_piece(
         }
         Termination::Poisson => Some(((1.0 + ev.e) * pc - start.p).max(0.0)),
         Termination::Energetic => {
-            let need = (1.0 - ev.e * ev.e) * ev.wc - start.wn;
-            if need <= 0.0 && start.p >= pc && start.vn >= 0.0 {
-                Some(0.0)
+            if pc >= start.p && kn > 0.0 {
+                // Compression ends inside this piece: from p_c (v_n = 0) the restitution
+                // work −e² W_c is reached at x = √(2 (−e² W_c)/k_n) — no cancellation.
+                let need = (-ev.e * ev.e * ev.wc).max(0.0);
+                Some(pc - start.p + (2.0 * need / kn).sqrt())
             } else {
-                work_root(start.vn, need)
+                let need = (1.0 - ev.e * ev.e) * ev.wc - start.wn;
+                if need <= 0.0 && start.p >= pc && start.vn >= 0.0 {
+                    Some(0.0)
+                } else {
+                    work_root(start.vn, need)
+                }
             }
         }
     };
@@ -504,7 +556,11 @@ fn slip_stage(
         if q >= 0.0 {
             return None;
         }
-        let f = s.x * g.y - s.y * g.x;
+        // ŝ × g = ŝ × w_tn − μ [W12 (c² − s²) + (W22 − W11) c s]: exactly zero on the
+        // invariant rays of an isotropic, uncoupled W_tt (no swirl, no round-off swirl).
+        let f = (s.x * wtn.y - s.y * wtn.x)
+            - mu * (wtt[(0, 1)] * (s.x * s.x - s.y * s.y)
+                + (wtt[(1, 1)] - wtt[(0, 0)]) * s.x * s.y);
         let gn = g.norm();
         let est = (f.abs() / gn) * (1.0 + gn / -q) * (1.0 + mu) * sigma / -q;
         (est <= 1e-16 * sc.p).then_some((s, q))
@@ -513,7 +569,8 @@ fn slip_stage(
     let run_tail =
         |pt: &mut Point, ev: &mut Events, s: Vec2, q: f64| -> Result<SlipEnd, BreakdownReason> {
             let sigma = pt.vt.norm();
-            let phi = s.y.atan2(s.x);
+            // From the unnormalised slip: bit-identical to φ0 when the tail starts at v⁻.
+            let phi = pt.vt.y.atan2(pt.vt.x);
             let piece = Linear {
                 kind: Phase3Kind::Stick,
                 ratio: -mu * s,

@@ -235,6 +235,11 @@ pub fn resumption_direction(problem: &ContactProblem3) -> Option<(Vec2, f64)> {
     let wtt = problem.wtt();
     let w = problem.wtn();
     let mu = problem.friction();
+    if mu == 0.0 {
+        // Frictionless: g = w_tn whatever the direction; slip leaves along w_tn.
+        let n = w.norm();
+        return (n > 0.0).then(|| (w / n, n));
+    }
     let eig = nalgebra::SymmetricEigen::new(wtt);
     let wq = eig.eigenvectors.transpose() * w;
     let d = eig.eigenvalues;

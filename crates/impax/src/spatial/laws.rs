@@ -64,8 +64,10 @@ fn straight(problem: &ContactProblem3, law: LawId, kind: Phase3Kind, k: Vec2, pf
     let v = problem.velocity();
     let slope = w * Vec3::new(k.x, k.y, 1.0);
     let normal_work = pf * (v.z + 0.5 * slope.z * pf);
-    let (pc, wc) = if slope.z > 0.0 && -v.z / slope.z <= pf {
-        let pc = -v.z / slope.z;
+    // Every straight law ends by Newton's rule, v_n(p_f) = −e v_n⁻ ≥ 0: compression has
+    // ended by p_f (at p_f when e = 0, whatever the round-off of p_f).
+    let (pc, wc) = if slope.z > 0.0 {
+        let pc = (-v.z / slope.z).min(pf);
         (Some(pc), pc * (v.z + 0.5 * slope.z * pc))
     } else {
         (None, normal_work)
@@ -172,6 +174,10 @@ pub fn brach(problem: &ContactProblem3) -> Resolution3 {
     let a = (-dir.y).atan2(-dir.x);
     let kind = if mu > 0.0 && pt.norm() > 0.0 {
         Phase3Kind::Slip { from: a, to: a }
+    } else if v.x != 0.0 || v.y != 0.0 {
+        // Frictionless: label by the initial slip, as the planar law does.
+        let a0 = v.y.atan2(v.x);
+        Phase3Kind::Slip { from: a0, to: a0 }
     } else {
         Phase3Kind::NoSlip
     };

@@ -1,0 +1,36 @@
+//! OPEN BUG, fails until fixed: spatial `energetic` returns non-finite numbers for a large
+//! but representable impact.
+//!
+//! The energetic termination on a straight piece that contains the end of compression is
+//! computed as `x = p_c − p_start + √(2 (−e² W_c) / k_n)`; the quotient `2 (−e² W_c)/k_n`
+//! overflows although `x` itself is representable (it is `e p_c`, since
+//! `−W_c = ½ k_n p_c²`). (This is the formula of the working-tree fix of the `e = 0`
+//! bug in `regression_spatial_energetic_plastic.rs`; the previous `work_root` form did not
+//! overflow here.)
+//!
+//! `W = 1e-100 · I`, `v⁻ = (0, 0, −1e100)`, `μ = 2`, `e = 1` (approach energy 5e299,
+//! accepted by validation): expected stick from rest, `p = (0, 0, 2e200)`; got
+//! `p = (NaN, NaN, inf)` as `Ok`. Found by
+//! `spatial_validation::no_law_panics_on_extreme_valid_problems`.
+
+use impax::spatial::ContactProblem3;
+use impax::LawId;
+
+#[test]
+fn large_energetic_impact_is_finite() {
+    let s = 1e-100;
+    let p = ContactProblem3::from_upper([s, 0.0, 0.0, s, 0.0, s], [0.0, 0.0, -1e100], 2.0, 1.0)
+        .unwrap();
+    let o = LawId::Energetic.resolve3(&p).unwrap();
+    assert_eq!(
+        (o.impulse.x, o.impulse.y),
+        (0.0, 0.0),
+        "p = {:?}",
+        o.impulse
+    );
+    assert!(
+        (o.impulse.z - 2e200).abs() <= 1e-14 * 2e200,
+        "p = {:?}",
+        o.impulse
+    );
+}

@@ -1,0 +1,35 @@
+//! OPEN BUG, fails until fixed (minor; the planar `whittaker` behaves the same): an
+//! unbounded energy gain is returned as an ordinary result, not as a gain.
+//!
+//! `whittaker` keeps friction `μ p_n` against the initial slip whatever happens, so a huge
+//! `μ` drives the contact backwards with a huge tangential impulse and a huge energy gain.
+//! `W = I`, `v⁻ = (1, 0, −1)`, `μ = 1e200`, `e = 1` (accepted by validation):
+//! `p = (−2e200, 0, 2)`, `ΔT = ½ pᵀWp + v⁻·p ≈ 2e400`, not representable. Got `Ok` with
+//! `work.friction = inf`, `energy_change = inf` and `Verdict::InconsistentAssumption`
+//! (`is_energy_gain3` compares `inf > round_off = inf`, which is false). Expected: a
+//! breakdown, or finite numbers, and in any case not a result whose energy gain is hidden —
+//! `energy_change = +inf` must come with `Verdict::EnergyGained`. Found by
+//! `spatial_validation::no_law_panics_on_extreme_valid_problems`.
+
+use impax::planar::Verdict;
+use impax::spatial::ContactProblem3;
+use impax::LawId;
+
+#[test]
+fn an_overflowing_gain_is_not_an_ordinary_result() {
+    let p =
+        ContactProblem3::from_upper([1.0, 0.0, 0.0, 1.0, 0.0, 1.0], [1.0, 0.0, -1.0], 1e200, 1.0)
+            .unwrap();
+    if let Ok(o) = LawId::Whittaker.resolve3(&p) {
+        assert!(
+            o.energy_change.is_finite() && o.work.friction.is_finite(),
+            "non-finite result: ΔT = {}, work {:?}, verdict {:?}",
+            o.energy_change,
+            o.work,
+            o.verdict
+        );
+        if o.energy_change > 0.0 {
+            assert_eq!(o.verdict, Verdict::EnergyGained);
+        }
+    }
+}
