@@ -85,3 +85,38 @@ pub(crate) fn finite(field: &str, value: f64) -> Result<f64> {
         })
     }
 }
+
+/// Check the coefficients shared by every contact problem: `μ ≥ 0`, `0 ≤ e ≤ 1`.
+pub(crate) fn coefficients(friction: f64, restitution: f64) -> Result<()> {
+    if friction < 0.0 {
+        return Err(Error::OutOfRange {
+            field: "friction".into(),
+            value: friction,
+            reason: "the friction coefficient must be ≥ 0".into(),
+        });
+    }
+    if !(0.0..=1.0).contains(&restitution) {
+        return Err(Error::OutOfRange {
+            field: "restitution".into(),
+            value: restitution,
+            reason: "the coefficient of restitution must be in [0, 1]".into(),
+        });
+    }
+    Ok(())
+}
+
+/// Check that the approach energy `½ vᵀ W⁻¹ v` is representable (every impulse and work of
+/// the impact is bounded by its scale).
+pub(crate) fn representable_energy(energy: f64, speed: f64) -> Result<()> {
+    if energy.is_finite() {
+        Ok(())
+    } else {
+        Err(Error::OutOfRange {
+            field: "v".into(),
+            value: speed,
+            reason: format!(
+                "too large for W: the approach energy ½ vᵀW⁻¹v = {energy} is not representable"
+            ),
+        })
+    }
+}

@@ -87,20 +87,7 @@ impl ContactProblem3 {
                 value: v.z,
             });
         }
-        if friction < 0.0 {
-            return Err(Error::OutOfRange {
-                field: "friction".into(),
-                value: friction,
-                reason: "the friction coefficient must be ≥ 0".into(),
-            });
-        }
-        if !(0.0..=1.0).contains(&restitution) {
-            return Err(Error::OutOfRange {
-                field: "restitution".into(),
-                value: restitution,
-                reason: "the coefficient of restitution must be in [0, 1]".into(),
-            });
-        }
+        crate::error::coefficients(friction, restitution)?;
         let problem = Self {
             w,
             v,
@@ -108,15 +95,7 @@ impl ContactProblem3 {
             e: restitution,
         };
         let energy = problem.approach_energy();
-        if !energy.is_finite() {
-            return Err(Error::OutOfRange {
-                field: "v".into(),
-                value: v.norm(),
-                reason: format!(
-                    "too large for W: the approach energy ½ vᵀW⁻¹v = {energy} is not representable"
-                ),
-            });
-        }
+        crate::error::representable_energy(energy, v.norm())?;
         Ok(problem)
     }
 
