@@ -34,15 +34,6 @@ use impax::LawId;
 use serde::Deserialize;
 use serde_json::{json, Value};
 
-/// The laws defined in 3D, in presentation order.
-pub const SPATIAL_LAWS: [LawId; 5] = [
-    LawId::Whittaker,
-    LawId::Brach,
-    LawId::Newton,
-    LawId::Poisson,
-    LawId::Energetic,
-];
-
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct FileSpec {
@@ -264,9 +255,9 @@ pub fn run(
     } else if let Some(ids) = &spec.laws {
         parse_laws(ids)?
     } else {
-        SPATIAL_LAWS.to_vec()
+        LawId::SPATIAL.to_vec()
     };
-    if let Some(l) = laws.iter().find(|l| !SPATIAL_LAWS.contains(l)) {
+    if let Some(l) = laws.iter().find(|l| !LawId::SPATIAL.contains(l)) {
         return Err(CliError::input(format!(
             "law: `{l}` is defined for planar impacts only (spatial laws: whittaker, brach, newton, poisson, energetic)"
         )));

@@ -227,11 +227,11 @@ fn run_spatial(args: &ResolveArgs, out: &mut Vec<u8>) -> CliResult<()> {
         e,
     )?;
     let laws = if args.law.is_empty() {
-        SPATIAL_LAWS.to_vec()
+        LawId::SPATIAL.to_vec()
     } else {
         parse_laws(&args.law)?
     };
-    if let Some(l) = laws.iter().find(|l| !SPATIAL_LAWS.contains(l)) {
+    if let Some(l) = laws.iter().find(|l| !LawId::SPATIAL.contains(l)) {
         return Err(CliError::input(format!(
             "law: `{l}` is defined for planar impacts only (spatial laws: whittaker, brach, newton, poisson, energetic)"
         )));
@@ -349,12 +349,3 @@ fn run_spatial(args: &ResolveArgs, out: &mut Vec<u8>) -> CliResult<()> {
     out.extend_from_slice(text.as_bytes());
     Ok(())
 }
-
-/// The laws defined for spatial problems.
-const SPATIAL_LAWS: [LawId; 5] = [
-    LawId::Whittaker,
-    LawId::Brach,
-    LawId::Newton,
-    LawId::Poisson,
-    LawId::Energetic,
-];

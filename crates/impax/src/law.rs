@@ -53,6 +53,15 @@ impl LawId {
         LawId::Energetic,
     ];
 
+    /// The laws defined for spatial (3D) problems, in presentation order.
+    pub const SPATIAL: [LawId; 5] = [
+        LawId::Whittaker,
+        LawId::Brach,
+        LawId::Newton,
+        LawId::Poisson,
+        LawId::Energetic,
+    ];
+
     /// The stable id string.
     pub fn as_str(self) -> &'static str {
         match self {
