@@ -61,6 +61,13 @@ pub enum Error {
         /// The known ids, comma separated.
         known: String,
     },
+    /// A numerical integration could not proceed (non-finite equations of motion, step-size
+    /// underflow, too many steps).
+    #[error("integration: {reason}")]
+    Integration {
+        /// What went wrong.
+        reason: String,
+    },
     /// Any other invalid description, e.g. a body shape with a missing parameter.
     #[error("{field}: {reason}")]
     Invalid {

@@ -32,6 +32,8 @@ pub mod bodies3;
 pub mod error;
 pub mod law;
 pub mod math;
+pub mod mechanism;
+pub mod ode;
 pub mod paper;
 pub mod planar;
 pub mod spatial;

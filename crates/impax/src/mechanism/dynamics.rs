@@ -1,0 +1,294 @@
+//! Mass matrix, generalized forces, velocity-product terms and equations of motion of a
+//! [`Mechanism`], by forward-mode automatic differentiation of its kinematics.
+//!
+//! With `p_b(q) = (x_b, y_b, θ_b)` the pose of body `b` and `D_b = diag(m_b, m_b, I_b)`:
+//!
+//! * `J_b = ∂p_b/∂q`, one dual-number pass per coordinate (seed `q_i + ε`);
+//! * `M(q) = Σ_b J_bᵀ D_b J_b` (so `T = ½ uᵀ M u`);
+//! * `J̇_b u = Σ_ij ∂²p_b/∂q_i∂q_j u_i u_j`, one hyper-dual pass seeded `q + ε₁u + ε₂u`;
+//! * `V(q) = Σ_b m_b g y_b + V_extra(q)`, `Q = −∂V/∂q` (in the same passes as `J_b`);
+//! * `M u̇ = Q − Σ_b J_bᵀ D_b J̇_b u` (Lagrange's equations written with the body Jacobians,
+//!   i.e. Kane's form; theory.md §4).
+
+use super::{Mechanism, Pose};
+use crate::error::{Error, Result};
+use crate::math::Vec2;
+use nalgebra::{DMatrix, DVector};
+use num_dual::{Dual64, HyperDual64};
+
+/// Everything first-order at one configuration `q`: body poses and Jacobians, the potential
+/// and its gradient.
+#[derive(Debug, Clone)]
+pub struct Kinematics {
+    /// Pose of every body.
+    pub poses: Vec<Pose<f64>>,
+    /// `J_b = ∂(x_b, y_b, θ_b)/∂q` of every body (3 × n).
+    pub jacobians: Vec<DMatrix<f64>>,
+    /// Total potential energy `V(q)` (gravity plus the mechanism's own).
+    pub potential: f64,
+    /// `∂V/∂q`.
+    pub potential_gradient: DVector<f64>,
+}
+
+/// Check that `q` (and `u`) have the mechanism's length and are finite.
+pub(crate) fn check_state<M: Mechanism + ?Sized>(
+    m: &M,
+    q: &[f64],
+    u: Option<&[f64]>,
+) -> Result<()> {
+    let n = m.dof();
+    for (field, v) in [("q", Some(q)), ("u", u)] {
+        let Some(v) = v else { continue };
+        if v.len() != n {
+            return Err(Error::Invalid {
+                field: field.into(),
+                reason: format!(
+                    "needs {n} generalized coordinates ({}), got {}",
+                    m.coordinates().join(", "),
+                    v.len()
+                ),
+            });
+        }
+        for (i, &x) in v.iter().enumerate() {
+            if !x.is_finite() {
+                return Err(Error::NotFinite {
+                    field: format!("{field}[{}] ({})", i, m.coordinates()[i]),
+                    value: x,
+                });
+            }
+        }
+    }
+    Ok(())
+}
+
+/// `V(q)` for any scalar: `Σ_b m_b g y_b + V_extra(q)`.
+pub(crate) fn potential_of<M: Mechanism + ?Sized, D: super::Real>(
+    m: &M,
+    q: &[D],
+    poses: &[Pose<D>],
+) -> D {
+    let g = m.gravity();
+    let mut v = m.potential(q);
+    for (b, pose) in m.bodies().iter().zip(poses) {
+        v += pose.y * (b.mass * g);
+    }
+    v
+}
+
+/// Poses, body Jacobians, potential and its gradient at `q` (`n` dual-number passes).
+pub fn kinematics<M: Mechanism + ?Sized>(m: &M, q: &[f64]) -> Kinematics {
+    let n = m.dof();
+    let nb = m.bodies().len();
+    let zero = Pose::new(Dual64::from(0.0), Dual64::from(0.0), Dual64::from(0.0));
+    let mut poses_d = vec![zero; nb];
+    let mut qd: Vec<Dual64> = q.iter().map(|&x| Dual64::from(x)).collect();
+    let mut jacobians = vec![DMatrix::zeros(3, n); nb];
+    let mut gradient = DVector::zeros(n);
+    let mut poses = vec![Pose::new(0.0, 0.0, 0.0); nb];
+    let mut potential = 0.0;
+    for i in 0..n.max(1) {
+        if n > 0 {
+            qd[i].eps = 1.0;
+        }
+        m.poses(&qd, &mut poses_d);
+        let v = potential_of(m, &qd, &poses_d);
+        if i == 0 {
+            potential = v.re;
+            for (p, d) in poses.iter_mut().zip(&poses_d) {
+                *p = Pose::new(d.x.re, d.y.re, d.angle.re);
+            }
+        }
+        if n > 0 {
+            gradient[i] = v.eps;
+            for (jac, d) in jacobians.iter_mut().zip(&poses_d) {
+                jac[(0, i)] = d.x.eps;
+                jac[(1, i)] = d.y.eps;
+                jac[(2, i)] = d.angle.eps;
+            }
+            qd[i].eps = 0.0;
+        }
+    }
+    Kinematics {
+        poses,
+        jacobians,
+        potential,
+        potential_gradient: gradient,
+    }
+}
+
+/// The mass matrix `M(q) = Σ_b J_bᵀ diag(m_b, m_b, I_b) J_b` from the body Jacobians.
+pub fn mass_matrix_of<M: Mechanism + ?Sized>(m: &M, kin: &Kinematics) -> DMatrix<f64> {
+    let n = m.dof();
+    let mut mass = DMatrix::zeros(n, n);
+    for (b, jac) in m.bodies().iter().zip(&kin.jacobians) {
+        let d = [b.mass, b.mass, b.inertia];
+        for i in 0..n {
+            for j in i..n {
+                let s: f64 = (0..3).map(|r| d[r] * jac[(r, i)] * jac[(r, j)]).sum();
+                mass[(i, j)] += s;
+            }
+        }
+    }
+    for i in 0..n {
+        for j in 0..i {
+            mass[(i, j)] = mass[(j, i)];
+        }
+    }
+    mass
+}
+
+/// The mass matrix `M(q)`.
+pub fn mass_matrix<M: Mechanism + ?Sized>(m: &M, q: &[f64]) -> DMatrix<f64> {
+    mass_matrix_of(m, &kinematics(m, q))
+}
+
+/// The velocity-product terms `J̇_b u = Σ_ij ∂²p_b/∂q_i∂q_j u_i u_j` of every body, as
+/// `(ẍ, ÿ, θ̈)` at `u̇ = 0` (one hyper-dual pass seeded `q + ε₁u + ε₂u`).
+pub fn velocity_products<M: Mechanism + ?Sized>(m: &M, q: &[f64], u: &[f64]) -> Vec<[f64; 3]> {
+    let qh: Vec<HyperDual64> = q
+        .iter()
+        .zip(u)
+        .map(|(&x, &v)| HyperDual64::new(x, v, v, 0.0))
+        .collect();
+    let zero = HyperDual64::from(0.0);
+    let mut poses = vec![Pose::new(zero, zero, zero); m.bodies().len()];
+    m.poses(&qh, &mut poses);
+    poses
+        .iter()
+        .map(|p| [p.x.eps1eps2, p.y.eps1eps2, p.angle.eps1eps2])
+        .collect()
+}
+
+/// The mass matrix's Cholesky factor, or an error naming the state when `M` is singular
+/// (a coordinate that moves no mass).
+pub(crate) fn cholesky(mass: DMatrix<f64>) -> Result<nalgebra::Cholesky<f64, nalgebra::Dyn>> {
+    let norm = mass.amax();
+    let chol = mass.cholesky().ok_or_else(|| Error::NotPositiveDefinite {
+        field: "mass matrix".into(),
+        reason: "a generalized coordinate moves no mass at this configuration".into(),
+    })?;
+    // Reject near-singular factors (a pivot far below the matrix's scale).
+    let l = chol.l_dirty();
+    let min_pivot = (0..l.nrows())
+        .map(|i| l[(i, i)] * l[(i, i)])
+        .fold(f64::INFINITY, f64::min);
+    if min_pivot.is_nan() || min_pivot <= 1e-13 * norm {
+        return Err(Error::NotPositiveDefinite {
+            field: "mass matrix".into(),
+            reason: format!(
+                "singular at this configuration (smallest pivot {min_pivot:e}, scale {norm:e})"
+            ),
+        });
+    }
+    Ok(chol)
+}
+
+/// Generalized accelerations `u̇` from `M u̇ = −∂V/∂q − Σ_b J_bᵀ D_b J̇_b u`.
+///
+/// # Errors
+/// Wrong lengths or non-finite `q`, `u`; a singular mass matrix.
+pub fn accelerations<M: Mechanism + ?Sized>(m: &M, q: &[f64], u: &[f64]) -> Result<DVector<f64>> {
+    check_state(m, q, Some(u))?;
+    let kin = kinematics(m, q);
+    let chol = cholesky(mass_matrix_of(m, &kin))?;
+    Ok(chol.solve(&generalized_force(m, &kin, q, u)))
+}
+
+/// The right-hand side `Q − Σ_b J_bᵀ D_b J̇_b u` of the equations of motion.
+pub(crate) fn generalized_force<M: Mechanism + ?Sized>(
+    m: &M,
+    kin: &Kinematics,
+    q: &[f64],
+    u: &[f64],
+) -> DVector<f64> {
+    let mut rhs = -kin.potential_gradient.clone();
+    for ((b, jac), acc) in m
+        .bodies()
+        .iter()
+        .zip(&kin.jacobians)
+        .zip(velocity_products(m, q, u))
+    {
+        let d = [b.mass, b.mass, b.inertia];
+        for i in 0..rhs.len() {
+            rhs[i] -= (0..3).map(|r| jac[(r, i)] * d[r] * acc[r]).sum::<f64>();
+        }
+    }
+    rhs
+}
+
+/// Kinetic energy `T = ½ uᵀ M(q) u`.
+pub fn kinetic_energy<M: Mechanism + ?Sized>(m: &M, q: &[f64], u: &[f64]) -> f64 {
+    let mass = mass_matrix(m, q);
+    let u = DVector::from_column_slice(u);
+    0.5 * u.dot(&(&mass * &u))
+}
+
+/// Potential energy `V(q) = Σ_b m_b g y_b + V_extra(q)`.
+pub fn potential_energy<M: Mechanism + ?Sized>(m: &M, q: &[f64]) -> f64 {
+    let mut poses = vec![Pose::new(0.0, 0.0, 0.0); m.bodies().len()];
+    m.poses(q, &mut poses);
+    potential_of(m, q, &poses)
+}
+
+/// Velocity `(ẋ, ẏ)` and angular velocity `ω` of every body: `J_b u`.
+pub fn body_velocities(kin: &Kinematics, u: &[f64]) -> Vec<[f64; 3]> {
+    kin.jacobians
+        .iter()
+        .map(|jac| {
+            let mut v = [0.0; 3];
+            for (r, vr) in v.iter_mut().enumerate() {
+                *vr = (0..u.len()).map(|i| jac[(r, i)] * u[i]).sum();
+            }
+            v
+        })
+        .collect()
+}
+
+/// The gap `φ(q) = (c(q) − point)·n` of contact `k` (negative: penetration).
+pub fn gap<M: Mechanism + ?Sized>(m: &M, k: usize, q: &[f64]) -> f64 {
+    let s = m.contacts()[k].surface;
+    let c = m.contact_point(k, q);
+    (c[0] - s.point.x) * s.normal.x + (c[1] - s.point.y) * s.normal.y
+}
+
+/// The contact Jacobian of contact `k` at `q` (2 × n, rows tangent then normal): the
+/// velocity of the touching body's material point at `c(q)`,
+/// `v_c = v_b + ω_b × (c − r_b)`, projected on the contact frame.
+pub fn contact_jacobian_of<M: Mechanism + ?Sized>(
+    m: &M,
+    k: usize,
+    q: &[f64],
+    kin: &Kinematics,
+) -> DMatrix<f64> {
+    let contact = m.contacts()[k];
+    let (t, nrm) = (contact.surface.tangent(), contact.surface.normal);
+    let c = m.contact_point(k, q);
+    let pose = kin.poses[contact.body];
+    let r = Vec2::new(c[0] - pose.x, c[1] - pose.y);
+    let jac = &kin.jacobians[contact.body];
+    let n = m.dof();
+    let mut out = DMatrix::zeros(2, n);
+    for i in 0..n {
+        let vx = jac[(0, i)] - r.y * jac[(2, i)];
+        let vy = jac[(1, i)] + r.x * jac[(2, i)];
+        out[(0, i)] = t.x * vx + t.y * vy;
+        out[(1, i)] = nrm.x * vx + nrm.y * vy;
+    }
+    out
+}
+
+/// The state derivative `(q̇, u̇) = (u, M⁻¹(Q − Σ J_bᵀ D_b J̇_b u))` for `y = (q, u)`, for the
+/// integrators of [`crate::ode`]. Non-finite output signals a singular configuration.
+pub fn state_derivative<M: Mechanism + ?Sized>(m: &M, y: &[f64], dy: &mut [f64]) {
+    let n = m.dof();
+    let (q, u) = y.split_at(n);
+    dy[..n].copy_from_slice(u);
+    let kin = kinematics(m, q);
+    match cholesky(mass_matrix_of(m, &kin)) {
+        Ok(chol) => {
+            let a = chol.solve(&generalized_force(m, &kin, q, u));
+            dy[n..].copy_from_slice(a.as_slice());
+        }
+        Err(_) => dy[n..].fill(f64::NAN),
+    }
+}

@@ -1,0 +1,182 @@
+//! Impacts of mechanisms: a mechanism, its state and one contact give the contact-space
+//! problem `W = J M⁻¹ Jᵀ`, `v⁻ = J u⁻`; any law's impulse `p` maps back to generalized
+//! velocities by the momentum balance `M (u⁺ − u⁻) = Jᵀ p` (theory.md §1, §4).
+
+use super::dynamics::{self, check_state, Kinematics};
+use super::Mechanism;
+use crate::error::{Error, Result};
+use crate::law::LawId;
+use crate::math::{Mat2, Vec2};
+use crate::planar::{ContactProblem, Resolution};
+use nalgebra::{Cholesky, DMatrix, DVector, Dyn};
+
+/// One contact of a mechanism at one state, reduced to contact space.
+pub struct MechanismImpact<'a, M: Mechanism + ?Sized> {
+    mechanism: &'a M,
+    contact: usize,
+    q: Vec<f64>,
+    u: DVector<f64>,
+    mass: DMatrix<f64>,
+    chol: Cholesky<f64, Dyn>,
+    jacobian: DMatrix<f64>,
+    w: Mat2,
+    v: Vec2,
+    gap: f64,
+    kinematics: Kinematics,
+}
+
+/// The result of one law on a mechanism impact.
+#[derive(Debug, Clone)]
+pub struct MechanismOutcome {
+    /// The contact-space result (or why the law does not apply).
+    pub resolution: Resolution,
+    /// Generalized velocities after the impact, `u⁺ = u⁻ + M⁻¹ Jᵀ p` (when the law applies).
+    pub velocities_after: Option<Vec<f64>>,
+    /// `T⁺ − T⁻` from the generalized velocities, `½ u⁺ᵀ M u⁺ − ½ u⁻ᵀ M u⁻` (when the law
+    /// applies); equals the contact-space `v⁻·p + ½ pᵀ W p` up to round-off.
+    pub energy_change_from_velocities: Option<f64>,
+}
+
+impl<'a, M: Mechanism + ?Sized> MechanismImpact<'a, M> {
+    /// Reduce contact `contact` of `mechanism` at `(q, u)` to contact space.
+    ///
+    /// The configuration need not have a zero gap (the impact is instantaneous and only the
+    /// local geometry matters); [`MechanismImpact::gap`] reports it.
+    ///
+    /// # Errors
+    /// Wrong lengths or non-finite `q`, `u`; no such contact; a singular mass matrix; a
+    /// contact that no coordinate can move (singular `W`).
+    pub fn new(mechanism: &'a M, q: &[f64], u: &[f64], contact: usize) -> Result<Self> {
+        check_state(mechanism, q, Some(u))?;
+        if contact >= mechanism.contacts().len() {
+            return Err(Error::Invalid {
+                field: "contact".into(),
+                reason: if mechanism.contacts().is_empty() {
+                    "this mechanism has no contact point".into()
+                } else {
+                    format!(
+                        "index {contact} out of range: the mechanism has {} contact(s)",
+                        mechanism.contacts().len()
+                    )
+                },
+            });
+        }
+        let kinematics = dynamics::kinematics(mechanism, q);
+        let mass = dynamics::mass_matrix_of(mechanism, &kinematics);
+        let chol = dynamics::cholesky(mass.clone())?;
+        let jacobian = dynamics::contact_jacobian_of(mechanism, contact, q, &kinematics);
+        let minv_jt = chol.solve(&jacobian.transpose());
+        let w_dyn = &jacobian * &minv_jt;
+        // Symmetrise the round-off of J M⁻¹ Jᵀ.
+        let wtn = 0.5 * (w_dyn[(0, 1)] + w_dyn[(1, 0)]);
+        let w = Mat2::new(w_dyn[(0, 0)], wtn, wtn, w_dyn[(1, 1)]);
+        let u = DVector::from_column_slice(u);
+        let vd = &jacobian * &u;
+        Ok(MechanismImpact {
+            mechanism,
+            contact,
+            q: q.to_vec(),
+            gap: dynamics::gap(mechanism, contact, q),
+            u,
+            mass,
+            chol,
+            jacobian,
+            w,
+            v: Vec2::new(vd[0], vd[1]),
+            kinematics,
+        })
+    }
+
+    /// The contact-space inverse inertia `W = J M⁻¹ Jᵀ`.
+    pub fn inverse_inertia(&self) -> Mat2 {
+        self.w
+    }
+
+    /// The contact velocity before impact, `v⁻ = J u⁻` (tangent, normal).
+    pub fn contact_velocity(&self) -> Vec2 {
+        self.v
+    }
+
+    /// The contact Jacobian `J` (2 × n, rows tangent then normal).
+    pub fn jacobian(&self) -> &DMatrix<f64> {
+        &self.jacobian
+    }
+
+    /// The mass matrix `M(q)`.
+    pub fn mass_matrix(&self) -> &DMatrix<f64> {
+        &self.mass
+    }
+
+    /// The gap `φ(q)` of the contact at this configuration.
+    pub fn gap(&self) -> f64 {
+        self.gap
+    }
+
+    /// The kinematics (poses, body Jacobians) at this configuration.
+    pub fn kinematics(&self) -> &Kinematics {
+        &self.kinematics
+    }
+
+    /// The contact index.
+    pub fn contact(&self) -> usize {
+        self.contact
+    }
+
+    /// The configuration `q`.
+    pub fn configuration(&self) -> &[f64] {
+        &self.q
+    }
+
+    /// The mechanism.
+    pub fn mechanism(&self) -> &M {
+        self.mechanism
+    }
+
+    /// Kinetic energy before impact, `½ u⁻ᵀ M u⁻`.
+    pub fn energy_before(&self) -> f64 {
+        0.5 * self.u.dot(&(&self.mass * &self.u))
+    }
+
+    /// The contact-space problem with coefficients `μ`, `e`.
+    ///
+    /// # Errors
+    /// As [`ContactProblem::new`], e.g. when the contact is not approaching.
+    pub fn problem(&self, friction: f64, restitution: f64) -> Result<ContactProblem> {
+        ContactProblem::new(self.w, self.v, friction, restitution)
+    }
+
+    /// Generalized velocities after an impulse `p` (tangent, normal) on the contact:
+    /// `u⁺ = u⁻ + M⁻¹ Jᵀ p`.
+    pub fn velocities_after(&self, p: Vec2) -> Vec<f64> {
+        let jt_p = self.jacobian.transpose() * nalgebra::DVector::from_column_slice(&[p.x, p.y]);
+        (&self.u + self.chol.solve(&jt_p)).as_slice().to_vec()
+    }
+
+    /// Kinetic energy `½ uᵀ M u` at these generalized velocities.
+    pub fn kinetic_energy(&self, u: &[f64]) -> f64 {
+        let u = DVector::from_column_slice(u);
+        0.5 * u.dot(&(&self.mass * &u))
+    }
+
+    /// Resolve the impact with one law.
+    ///
+    /// # Errors
+    /// As [`MechanismImpact::problem`].
+    pub fn resolve(&self, law: LawId, friction: f64, restitution: f64) -> Result<MechanismOutcome> {
+        let problem = self.problem(friction, restitution)?;
+        let resolution = law.resolve(&problem);
+        let (velocities_after, energy_change_from_velocities) = match &resolution {
+            Ok(outcome) => {
+                let after = self.velocities_after(outcome.impulse);
+                let de = self.kinetic_energy(&after) - self.energy_before();
+                (Some(after), Some(de))
+            }
+            Err(_) => (None, None),
+        };
+        Ok(MechanismOutcome {
+            resolution,
+            velocities_after,
+            energy_change_from_velocities,
+        })
+    }
+}
