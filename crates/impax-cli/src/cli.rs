@@ -13,8 +13,9 @@ pub struct Cli {
 
 #[derive(Debug, Subcommand)]
 pub enum Command {
-    /// Every impact law side by side on one body impact (default: the seed's sphere of
-    /// Liu 2012: α = 30°, e = 0.7, μ = 0.4, γ = 0).
+    /// Every impact law side by side on one body or mechanism impact (default: the seed's
+    /// sphere of Liu 2012: α = 30°, e = 0.7, μ = 0.4, γ = 0; or a built-in mechanism such as
+    /// `double-pendulum`).
     Compare(CompareArgs),
     /// Resolve a planar contact-space problem (W, v⁻, μ, e) directly.
     Resolve(ResolveArgs),
@@ -23,6 +24,10 @@ pub enum Command {
     /// Sweep scenario fields over a grid or random samples: one CSV row per point and law
     /// (or a summary), in parallel, streamed with constant memory.
     Sweep(SweepArgs),
+    /// Integrate a mechanism's free motion and report which quantities are conserved
+    /// (generalized momenta, cyclic coordinates, energy, momentum, angular momentum, Noether
+    /// charges).
+    Conserved(ConservedArgs),
     /// Draw a 2-parameter sweep as maps, one panel per law: the energy-gain region (sign of
     /// ΔT), the phase sequence, or any numeric output as a heatmap (PNG or SVG).
     Map(MapArgs),
@@ -99,7 +104,9 @@ pub struct MapArgs {
 
 #[derive(Debug, Args)]
 pub struct CompareArgs {
-    /// A TOML scenario file (see README: "Scenario files"); default: the seed's sphere.
+    /// A TOML scenario file (see README: "Scenario files"), or a built-in mechanism:
+    /// `double-pendulum` (θ1, θ2 from the downward vertical; the tip of rod 2 strikes the
+    /// floor), `ring-pendulum`, `cart-pendulum`; default: the seed's sphere.
     pub scenario: Option<PathBuf>,
     /// Angle of the approach velocity from the normal, degrees (round bodies).
     #[arg(long, allow_hyphen_values = true)]
@@ -125,11 +132,95 @@ pub struct CompareArgs {
     /// Laws to show, comma separated (default: all).
     #[arg(long, value_delimiter = ',')]
     pub law: Vec<String>,
+    #[command(flatten)]
+    pub mechanism: MechanismFlags,
     /// Print one JSON object instead of the table.
     #[arg(long)]
     pub json: bool,
     /// Also draw Routh's impulse-space diagram and the energy bars of every law to FILE
     /// (.png or .svg).
+    #[arg(long, value_name = "FILE")]
+    pub plot: Option<PathBuf>,
+}
+
+/// The parameters and state of a built-in mechanism (each has defaults).
+#[derive(Debug, Args, Clone, Default)]
+pub struct MechanismFlags {
+    /// Mechanism: the angle coordinates in degrees (double-pendulum: θ1,θ2 from the downward
+    /// vertical; ring/cart-pendulum: φ; sphere, rod: θ).
+    #[arg(
+        long,
+        value_delimiter = ',',
+        allow_hyphen_values = true,
+        value_name = "DEG,.."
+    )]
+    pub angles_deg: Option<Vec<f64>>,
+    /// Mechanism: the generalized velocities in coordinate order (rad/s for angles), e.g.
+    /// `-1,2` for the double pendulum, `ẋ,φ̇` for the ring- and cart-pendulum.
+    #[arg(
+        long,
+        value_delimiter = ',',
+        allow_hyphen_values = true,
+        value_name = "U,.."
+    )]
+    pub rates: Option<Vec<f64>>,
+    /// Mechanism: the masses (double-pendulum: m1,m2; ring-pendulum: ring,bob;
+    /// cart-pendulum: cart,bob; sphere, rod: m).
+    #[arg(
+        long,
+        value_delimiter = ',',
+        allow_hyphen_values = true,
+        value_name = "M,.."
+    )]
+    pub masses: Option<Vec<f64>>,
+    /// Mechanism: the lengths (double-pendulum: l1,l2; ring/cart-pendulum: the arm l; rod: l).
+    #[arg(
+        long,
+        value_delimiter = ',',
+        allow_hyphen_values = true,
+        value_name = "L,.."
+    )]
+    pub lengths: Option<Vec<f64>>,
+    /// Mechanism: gravitational acceleration g along −y (default 9.81).
+    #[arg(long, allow_hyphen_values = true)]
+    pub gravity: Option<f64>,
+    /// Mechanism: the position coordinates (ring/cart-pendulum: x; sphere, rod: x,y).
+    #[arg(
+        long,
+        value_delimiter = ',',
+        allow_hyphen_values = true,
+        value_name = "X,.."
+    )]
+    pub position: Option<Vec<f64>>,
+}
+
+#[derive(Debug, Args)]
+pub struct ConservedArgs {
+    /// A built-in mechanism (`ring-pendulum`, `cart-pendulum`, `double-pendulum`, `sphere`,
+    /// `rod`) or a TOML file with a `mechanism` key.
+    pub mechanism: String,
+    #[command(flatten)]
+    pub params: MechanismFlags,
+    /// Ring-pendulum, sphere: the radius R.
+    #[arg(long, allow_hyphen_values = true)]
+    pub radius: Option<f64>,
+    /// Duration of the motion, seconds.
+    #[arg(long, default_value_t = 10.0, allow_hyphen_values = true)]
+    pub duration: f64,
+    /// Number of sample intervals along the motion.
+    #[arg(long, default_value_t = 1000)]
+    pub samples: usize,
+    /// A fixed point for the angular momentum, X,Y (repeatable; default the origin).
+    #[arg(long, value_name = "X,Y", allow_hyphen_values = true)]
+    pub about: Vec<String>,
+    /// A quantity is conserved when its largest deviation is at most this fraction of the
+    /// magnitude of its terms.
+    #[arg(long, default_value_t = 1e-8)]
+    pub tolerance: f64,
+    /// Print one JSON object instead of the table.
+    #[arg(long)]
+    pub json: bool,
+    /// Also draw every quantity's relative change against time to FILE (.png or .svg).
     #[arg(long, value_name = "FILE")]
     pub plot: Option<PathBuf>,
 }

@@ -15,7 +15,14 @@ use serde_json::json;
 
 pub fn run(args: &CompareArgs, out: &mut Vec<u8>) -> CliResult<()> {
     if let Some(path) = &args.scenario {
+        let source = path.to_string_lossy();
+        if crate::mechanism::is_mechanism_name(&source) {
+            return crate::compare_mech::run(args, &source, out);
+        }
         if let Ok(text) = std::fs::read_to_string(path) {
+            if crate::mechanism::is_mechanism_toml(&text) {
+                return crate::compare_mech::run(args, &source, out);
+            }
             if crate::compare3::is_spatial(&text) {
                 return run_spatial(args, &path.display().to_string(), &text, out);
             }
@@ -24,6 +31,7 @@ pub fn run(args: &CompareArgs, out: &mut Vec<u8>) -> CliResult<()> {
     if let Some(path) = &args.plot {
         plot::Format::of("plot", path)?;
     }
+    reject_mechanism_flags(args)?;
     let sc = scenario::load(args)?;
     let problem = sc.impact.problem(sc.friction, sc.restitution)?;
     let results: Vec<_> = sc
@@ -60,6 +68,26 @@ pub fn run(args: &CompareArgs, out: &mut Vec<u8>) -> CliResult<()> {
         draw(&sc, &problem, &results, path)?;
     }
     out.extend_from_slice(text.as_bytes());
+    Ok(())
+}
+
+/// The mechanism flags are refused for body scenarios.
+fn reject_mechanism_flags(args: &CompareArgs) -> CliResult<()> {
+    let m = &args.mechanism;
+    for (flag, given) in [
+        ("angles-deg", m.angles_deg.is_some()),
+        ("rates", m.rates.is_some()),
+        ("masses", m.masses.is_some()),
+        ("lengths", m.lengths.is_some()),
+        ("gravity", m.gravity.is_some()),
+        ("position", m.position.is_some()),
+    ] {
+        if given {
+            return Err(CliError::input(format!(
+                "--{flag}: only for a mechanism (e.g. `impax compare double-pendulum --{flag} …`)"
+            )));
+        }
+    }
     Ok(())
 }
 

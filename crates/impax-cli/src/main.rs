@@ -3,18 +3,22 @@
 //! Subcommands: `compare` (every law side by side on one body impact; default: the seed's
 //! sphere; `--plot` draws Routh's diagram and energy bars), `resolve` (a contact-space problem
 //! directly), `paper` (reproduction reports), `sweep` (parameter sweeps streamed as CSV),
-//! `map` (maps of a 2-parameter sweep as PNG/SVG).
+//! `map` (maps of a 2-parameter sweep as PNG/SVG), `conserved` (conserved quantities of a
+//! mechanism's motion).
 //! Bad input of any kind prints one line on stderr and exits with code 2.
 
 mod cli;
 mod columns;
 mod compare;
 mod compare3;
+mod compare_mech;
+mod conserved;
 mod evaluate;
 mod fmt;
 mod input;
 mod json;
 mod map;
+mod mechanism;
 mod paper;
 #[cfg(feature = "parquet")]
 mod parquet_out;
@@ -64,6 +68,7 @@ fn main() -> ExitCode {
         cli::Command::Paper(args) => paper::run(args, &mut out),
         cli::Command::Sweep(args) => sweep::run(args),
         cli::Command::Map(args) => map::run(args, &mut out),
+        cli::Command::Conserved(args) => conserved::run(args, &mut out),
     };
     match result {
         Ok(()) => {

@@ -3,6 +3,7 @@
 //! render the same on a machine without system fonts.
 
 pub mod colour;
+pub mod conserved;
 pub mod energy;
 pub mod font;
 pub mod map;

@@ -8,6 +8,21 @@ use crate::mechanism::{BodyInertia, Contact, Mechanism, Pose, Real, Surface};
 /// A sphere (or, with `inertia_factor = 1/2`, a disc) of mass `m`, radius `r`, central
 /// inertia `k m r²` (`k = 2/5` for a sphere), moving in the plane above the floor `y = floor`;
 /// its lowest point `(x, y − r)` is the contact.
+///
+/// # Example: the same impact as the body solver
+/// The automatic mass matrix is `diag(m, m, 2/5 m r²)`, and the contact-space `W` is the
+/// sphere's `diag(1/m + r²/I, 1/m) = diag(7/2, 1)` for `m = r = 1`:
+///
+/// ```
+/// use impax::mechanism::builtin::Sphere;
+/// use impax::mechanism::impact::MechanismImpact;
+/// let sphere = Sphere::new(1.0, 1.0, 9.81, 0.0)?;
+/// let a = 30f64.to_radians();
+/// let impact = MechanismImpact::new(&sphere, &[0.0, 1.0, 0.0], &[a.sin(), -a.cos(), 0.0], 0)?;
+/// let w = impact.inverse_inertia();
+/// assert!((w[(0, 0)] - 3.5).abs() < 1e-15 && w[(0, 1)] == 0.0 && (w[(1, 1)] - 1.0).abs() < 1e-15);
+/// # Ok::<(), impax::Error>(())
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct Sphere {
     bodies: [BodyInertia; 1],
@@ -65,6 +80,24 @@ impl Mechanism for Sphere {
 
 /// A uniform rod of mass `m` and length `l` (`I = m l²/12`) moving in the plane above the
 /// floor `y = floor`; `θ` is its angle from the floor, and its lower end the contact.
+///
+/// # Example: a rod striking with its end
+/// A unit rod at 50° to the floor translating at (0.5, −1): the end's contact-space `W` has
+/// the coupling `W_tn = −(l²/4) sin θ cos θ / I` of a lever, so friction and the normal
+/// impulse interact:
+///
+/// ```
+/// use impax::mechanism::builtin::Rod;
+/// use impax::mechanism::impact::MechanismImpact;
+/// let rod = Rod::new(1.0, 1.0, 9.81, 0.0)?;
+/// let th = 50f64.to_radians();
+/// let q = [0.0, 0.5 * th.sin(), th]; // lower end on the floor
+/// let impact = MechanismImpact::new(&rod, &q, &[0.5, -1.0, 0.0], 0)?;
+/// let w = impact.inverse_inertia();
+/// let wtn = -0.25 * th.sin() * th.cos() * 12.0;
+/// assert!((w[(0, 1)] - wtn).abs() < 1e-14);
+/// # Ok::<(), impax::Error>(())
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct Rod {
     bodies: [BodyInertia; 1],

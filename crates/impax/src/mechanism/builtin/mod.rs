@@ -48,3 +48,93 @@ pub(crate) fn gravity(x: f64) -> Result<f64> {
         })
     }
 }
+
+use super::conserved::Symmetry;
+use super::{BodyInertia, Contact, Mechanism, Pose, Real};
+
+/// Any built-in mechanism, selectable by its stable name (CLI, TOML, bindings).
+#[derive(Debug, Clone, PartialEq)]
+pub enum BuiltIn {
+    /// `double-pendulum`.
+    DoublePendulum(DoublePendulum),
+    /// `ring-pendulum`.
+    RingPendulum(RingPendulum),
+    /// `cart-pendulum`.
+    CartPendulum(CartPendulum),
+    /// `sphere`.
+    Sphere(Sphere),
+    /// `rod`.
+    Rod(Rod),
+}
+
+macro_rules! each {
+    ($self:expr, $m:ident => $e:expr) => {
+        match $self {
+            BuiltIn::DoublePendulum($m) => $e,
+            BuiltIn::RingPendulum($m) => $e,
+            BuiltIn::CartPendulum($m) => $e,
+            BuiltIn::Sphere($m) => $e,
+            BuiltIn::Rod($m) => $e,
+        }
+    };
+}
+
+impl BuiltIn {
+    /// The stable names, in the order of the enum.
+    pub const NAMES: [&'static str; 5] = [
+        "double-pendulum",
+        "ring-pendulum",
+        "cart-pendulum",
+        "sphere",
+        "rod",
+    ];
+
+    /// The stable name.
+    pub fn name(&self) -> &'static str {
+        match self {
+            BuiltIn::DoublePendulum(_) => Self::NAMES[0],
+            BuiltIn::RingPendulum(_) => Self::NAMES[1],
+            BuiltIn::CartPendulum(_) => Self::NAMES[2],
+            BuiltIn::Sphere(_) => Self::NAMES[3],
+            BuiltIn::Rod(_) => Self::NAMES[4],
+        }
+    }
+
+    /// The Noether symmetries known for this mechanism (translations of its cyclic
+    /// coordinates and the Galilean boost where the centre of mass moves freely or rolls).
+    pub fn symmetries(&self) -> Vec<Box<dyn Symmetry>> {
+        use super::conserved::Noether;
+        match self {
+            BuiltIn::RingPendulum(m) => m.symmetries(),
+            BuiltIn::CartPendulum(m) => m.symmetries(),
+            BuiltIn::Sphere(_) | BuiltIn::Rod(_) => {
+                vec![Box::new(Noether::translation("translation x", 0))]
+            }
+            BuiltIn::DoublePendulum(_) => Vec::new(),
+        }
+    }
+}
+
+impl Mechanism for BuiltIn {
+    fn coordinates(&self) -> &[&'static str] {
+        each!(self, m => m.coordinates())
+    }
+    fn bodies(&self) -> &[BodyInertia] {
+        each!(self, m => m.bodies())
+    }
+    fn gravity(&self) -> f64 {
+        each!(self, m => m.gravity())
+    }
+    fn poses<D: Real>(&self, q: &[D], poses: &mut [Pose<D>]) {
+        each!(self, m => m.poses(q, poses))
+    }
+    fn potential<D: Real>(&self, q: &[D]) -> D {
+        each!(self, m => m.potential(q))
+    }
+    fn contacts(&self) -> &[Contact] {
+        each!(self, m => m.contacts())
+    }
+    fn contact_point<D: Real>(&self, k: usize, q: &[D]) -> [D; 2] {
+        each!(self, m => m.contact_point(k, q))
+    }
+}

@@ -17,6 +17,24 @@ use crate::mechanism::{BodyInertia, Dual64, DualNum, Mechanism, Pose, Real};
 /// `x` is cyclic: `p_x = (2M + m) ẋ + m l φ̇ cos φ` is conserved, while the horizontal
 /// momentum `P_x = (M + m) ẋ + m l φ̇ cos φ` is not (the rolling contact's friction). Small
 /// oscillations: `ω² = (g/l)(2M + m)/(2M)` (`3g/(2l)` for `M = m`).
+///
+/// # Example: which quantities are conserved
+/// The ring rolls, so the floor's friction acts on it: the horizontal momentum `P_x` is not
+/// conserved, but `x` is cyclic and its integral `p_x = P_x + M ẋ` is; so are the energy (the
+/// rolling contact does no work) and the boost charge `t p_x − (2M + m) x − m l sin φ`:
+///
+/// ```
+/// use impax::mechanism::builtin::RingPendulum;
+/// use impax::mechanism::conserved::{track, TrackOptions};
+/// let ring = RingPendulum::new(1.0, 1.0, 1.0, 1.0, 9.81)?;
+/// let options = TrackOptions { duration: 2.0, intervals: 100, ..TrackOptions::default() };
+/// let run = track(&ring, &[0.0, 0.5], &[0.5, 0.0], &ring.symmetries(), &[], options)?;
+/// assert_eq!(run.cyclic, vec![0]); // x
+/// let q = |name: &str| run.tracks.iter().find(|t| t.name == name).unwrap();
+/// assert!(q("p_x").conserved(1e-9) && q("energy").conserved(1e-9) && q("boost x").conserved(1e-9));
+/// assert!(!q("P_x").conserved(1e-3));
+/// # Ok::<(), impax::Error>(())
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct RingPendulum {
     bodies: [BodyInertia; 2],
@@ -109,6 +127,21 @@ impl Mechanism for RingPendulum {
 /// Here the cyclic integral `p_x = (M + m) ẋ + m l φ̇ cos φ` *is* the horizontal momentum
 /// (no horizontal external force), the contrast to [`RingPendulum`]. Small oscillations:
 /// `ω² = (g/l)(M + m)/M`.
+///
+/// # Example: the cyclic integral is the momentum
+/// ```
+/// use impax::mechanism::builtin::CartPendulum;
+/// use impax::mechanism::conserved::{track, TrackOptions};
+/// let cart = CartPendulum::new(2.0, 1.0, 0.8, 9.81)?;
+/// let options = TrackOptions { duration: 2.0, intervals: 100, ..TrackOptions::default() };
+/// let run = track(&cart, &[0.0, 1.0], &[0.3, 0.0], &cart.symmetries(), &[], options)?;
+/// let q = |name: &str| run.tracks.iter().find(|t| t.name == name).unwrap();
+/// assert!(q("p_x").conserved(1e-9) && q("P_x").conserved(1e-9));
+/// for (a, b) in q("p_x").values.iter().zip(&q("P_x").values) {
+///     assert!((a - b).abs() < 1e-12); // p_x = P_x along the whole motion
+/// }
+/// # Ok::<(), impax::Error>(())
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct CartPendulum {
     bodies: [BodyInertia; 2],
