@@ -36,6 +36,7 @@ pub mod mechanism;
 pub mod ode;
 pub mod paper;
 pub mod planar;
+pub mod simulation;
 pub mod spatial;
 
 pub use error::{Error, Result};

@@ -251,6 +251,38 @@ pub fn gap<M: Mechanism + ?Sized>(m: &M, k: usize, q: &[f64]) -> f64 {
     (c[0] - s.point.x) * s.normal.x + (c[1] - s.point.y) * s.normal.y
 }
 
+/// The gap of contact `k` and its first two time derivatives along the motion
+/// `(q, u, u̇)`: `φ`, `φ̇ = ∇φ·u`, `φ̈ = ∇φ·u̇ + uᵀ ∇²φ u` (a dual pass seeded `q + εu̇`
+/// and a hyper-dual pass seeded `q + ε₁u + ε₂u`).
+pub fn gap_rates<M: Mechanism + ?Sized>(
+    m: &M,
+    k: usize,
+    q: &[f64],
+    u: &[f64],
+    udot: &[f64],
+) -> [f64; 3] {
+    let s = m.contacts()[k].surface;
+    let project = |c: [f64; 2]| c[0] * s.normal.x + c[1] * s.normal.y;
+    let qh: Vec<HyperDual64> = q
+        .iter()
+        .zip(u)
+        .map(|(&x, &v)| HyperDual64::new(x, v, v, 0.0))
+        .collect();
+    let ch = m.contact_point(k, &qh);
+    let qd: Vec<Dual64> = q
+        .iter()
+        .zip(udot)
+        .map(|(&x, &a)| Dual64::new(x, a))
+        .collect();
+    let cd = m.contact_point(k, &qd);
+    let phi = (ch[0].re - s.point.x) * s.normal.x + (ch[1].re - s.point.y) * s.normal.y;
+    [
+        phi,
+        project([ch[0].eps1, ch[1].eps1]),
+        project([cd[0].eps, cd[1].eps]) + project([ch[0].eps1eps2, ch[1].eps1eps2]),
+    ]
+}
+
 /// The contact Jacobian of contact `k` at `q` (2 × n, rows tangent then normal): the
 /// velocity of the touching body's material point at `c(q)`,
 /// `v_c = v_b + ω_b × (c − r_b)`, projected on the contact frame.

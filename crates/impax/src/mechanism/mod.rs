@@ -140,4 +140,25 @@ pub trait Mechanism {
     fn dof(&self) -> usize {
         self.coordinates().len()
     }
+
+    /// A round body (sphere, disc) on a horizontal floor, with `q = (x, y, θ)`: lets a
+    /// simulation continue through persistent contact with Coulomb sliding and then rolling,
+    /// in closed form. Default: not such a body.
+    fn round_on_floor(&self) -> Option<RoundOnFloor> {
+        None
+    }
+}
+
+/// What a simulation needs to continue a round body's motion in persistent contact with a
+/// horizontal floor: `q = (x, y, θ)`, contact point `(x, y − r)`, slip `ẋ + r θ̇`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RoundOnFloor {
+    /// Mass `m`.
+    pub mass: f64,
+    /// Central moment of inertia `I`.
+    pub inertia: f64,
+    /// Radius `r`.
+    pub radius: f64,
+    /// Height of the floor.
+    pub floor: f64,
 }

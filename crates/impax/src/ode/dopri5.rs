@@ -90,6 +90,11 @@ impl Step<'_> {
 
 /// Dormand–Prince 5(4) with adaptive steps and dense output, for state vectors of a fixed
 /// length chosen at construction (the workspace is allocated once).
+///
+/// Two ways to drive it: [`Dopri5::integrate`] over an interval with an observer, or
+/// step by step with [`Dopri5::start`] and [`Dopri5::advance`] (for event-driven
+/// simulation), with [`Dopri5::trial_step`] to re-step from a step's start to an event so
+/// that the event lies on the discrete solution itself.
 pub struct Dopri5 {
     tol: Tolerances,
     k: [Vec<f64>; 7],
@@ -97,11 +102,19 @@ pub struct Dopri5 {
     y1: Vec<f64>,
     stage: Vec<f64>,
     cont: [Vec<f64>; 5],
+    trial_k: [Vec<f64>; 6],
+    trial_stage: Vec<f64>,
+    t: f64,
+    h: f64,
+    pending: bool,
+    last_rejected: bool,
+    steps: usize,
     /// Number of accepted steps so far.
     pub accepted: usize,
     /// Number of rejected steps so far.
     pub rejected: usize,
-    /// Largest number of steps (accepted + rejected) of one call to [`Dopri5::integrate`].
+    /// Largest number of steps (accepted + rejected) between two calls to
+    /// [`Dopri5::start`].
     pub max_steps: usize,
 }
 
@@ -134,10 +147,177 @@ impl Dopri5 {
             y1: v(),
             stage: v(),
             cont: std::array::from_fn(|_| v()),
+            trial_k: std::array::from_fn(|_| v()),
+            trial_stage: v(),
+            t: 0.0,
+            h: 0.0,
+            pending: false,
+            last_rejected: false,
+            steps: 0,
             accepted: 0,
             rejected: 0,
             max_steps: 1_000_000,
         })
+    }
+
+    /// Start (or restart, e.g. after an impact changed the velocities) at `(t0, y0)`;
+    /// `span` bounds the first step.
+    ///
+    /// # Errors
+    /// [`Error::Integration`] when the right-hand side is not finite at `(t0, y0)`.
+    pub fn start(
+        &mut self,
+        f: &mut impl FnMut(f64, &[f64], &mut [f64]),
+        t0: f64,
+        y0: &[f64],
+        span: f64,
+    ) -> Result<()> {
+        assert_eq!(
+            y0.len(),
+            self.y.len(),
+            "state length differs from the integrator's"
+        );
+        self.y.copy_from_slice(y0);
+        self.t = t0;
+        f(t0, &self.y, &mut self.k[0]);
+        if !self.k[0].iter().all(|x| x.is_finite()) {
+            return Err(Error::Integration {
+                reason: "the equations of motion are not finite at the initial state".into(),
+            });
+        }
+        self.h = self.initial_step(f, t0, span.max(f64::MIN_POSITIVE));
+        self.pending = false;
+        self.last_rejected = false;
+        self.steps = 0;
+        Ok(())
+    }
+
+    /// The time of the current state (the end of the last accepted step).
+    pub fn time(&self) -> f64 {
+        self.t
+    }
+
+    /// The current state (the end of the last accepted step).
+    pub fn state(&self) -> &[f64] {
+        if self.pending {
+            &self.y1
+        } else {
+            &self.y
+        }
+    }
+
+    /// Take one accepted step from the current state, not beyond `t_max`, and return it
+    /// (with its dense output). The step's end becomes the current state.
+    ///
+    /// # Errors
+    /// [`Error::Integration`] when the right-hand side becomes non-finite, the step size
+    /// underflows, or more than [`Dopri5::max_steps`] steps are needed.
+    pub fn advance(
+        &mut self,
+        f: &mut impl FnMut(f64, &[f64], &mut [f64]),
+        t_max: f64,
+    ) -> Result<Step<'_>> {
+        if self.pending {
+            std::mem::swap(&mut self.y, &mut self.y1);
+            self.k.swap(0, 6);
+            self.pending = false;
+        }
+        let t = self.t;
+        let mut h = self.h;
+        loop {
+            self.steps += 1;
+            if self.steps > self.max_steps {
+                return Err(Error::Integration {
+                    reason: "too many steps (the motion may be singular or stiff)".into(),
+                });
+            }
+            let last = t + h >= t_max;
+            if last {
+                h = t_max - t;
+            }
+            let err = self.step(f, t, h);
+            if !err.is_finite() {
+                // A non-finite stage: shrink hard.
+                h *= 0.1;
+                self.rejected += 1;
+                self.last_rejected = true;
+                if h <= f64::EPSILON * t.abs().max(1.0) {
+                    return Err(Error::Integration {
+                        reason: "the equations of motion became non-finite".into(),
+                    });
+                }
+                continue;
+            }
+            if err <= 1.0 {
+                self.accepted += 1;
+                let t1 = if last { t_max } else { t + h };
+                self.dense(h);
+                let fac =
+                    (0.9 * err.powf(-0.2)).clamp(0.2, if self.last_rejected { 1.0 } else { 10.0 });
+                // Keep the proposal of the untruncated step when the last one was shortened.
+                self.h = if last { self.h.max(h) } else { h * fac };
+                self.last_rejected = false;
+                self.t = t1;
+                self.pending = true;
+                return Ok(Step {
+                    t0: t,
+                    t1,
+                    y0: &self.y,
+                    y1: &self.y1,
+                    cont: &self.cont,
+                });
+            }
+            self.rejected += 1;
+            self.last_rejected = true;
+            h *= (0.9 * err.powf(-0.2)).max(0.2);
+            if h <= 4.0 * f64::EPSILON * t.abs().max(f64::MIN_POSITIVE) {
+                return Err(Error::Integration {
+                    reason: "the step size underflowed (the motion may be singular)".into(),
+                });
+            }
+        }
+    }
+
+    /// One Dormand–Prince step of size `h` from an arbitrary `(t0, y0)` without error
+    /// control, the fifth-order solution written into `out` (used to place an event exactly
+    /// on the discrete solution: re-step from the start of the step that contains it). Does
+    /// not disturb the current step.
+    pub fn trial_step(
+        &mut self,
+        f: &mut impl FnMut(f64, &[f64], &mut [f64]),
+        t0: f64,
+        y0: &[f64],
+        h: f64,
+        out: &mut [f64],
+    ) {
+        let n = y0.len();
+        let s = &mut self.trial_stage;
+        let [k1, k2, k3, k4, k5, k6] = &mut self.trial_k;
+        f(t0, y0, k1);
+        for i in 0..n {
+            s[i] = y0[i] + h * A21 * k1[i];
+        }
+        f(t0 + C2 * h, s, k2);
+        for i in 0..n {
+            s[i] = y0[i] + h * (A31 * k1[i] + A32 * k2[i]);
+        }
+        f(t0 + C3 * h, s, k3);
+        for i in 0..n {
+            s[i] = y0[i] + h * (A41 * k1[i] + A42 * k2[i] + A43 * k3[i]);
+        }
+        f(t0 + C4 * h, s, k4);
+        for i in 0..n {
+            s[i] = y0[i] + h * (A51 * k1[i] + A52 * k2[i] + A53 * k3[i] + A54 * k4[i]);
+        }
+        f(t0 + C5 * h, s, k5);
+        for i in 0..n {
+            s[i] =
+                y0[i] + h * (A61 * k1[i] + A62 * k2[i] + A63 * k3[i] + A64 * k4[i] + A65 * k5[i]);
+        }
+        f(t0 + h, s, k6);
+        for i in 0..n {
+            out[i] = y0[i] + h * (B1 * k1[i] + B3 * k3[i] + B4 * k4[i] + B5 * k5[i] + B6 * k6[i]);
+        }
     }
 
     /// Integrate `y' = f(t, y)` from `(t0, y0)` to `t_end` (forward, `t_end > t0`), calling
@@ -157,90 +337,20 @@ impl Dopri5 {
         t_end: f64,
         mut observe: impl FnMut(&Step<'_>) -> Option<f64>,
     ) -> Result<f64> {
-        let n = self.y.len();
-        assert_eq!(y0.len(), n, "state length differs from the integrator's");
         if t_end.is_nan() || t_end <= t0 {
             return Ok(t0);
         }
-        self.y.copy_from_slice(y0);
-        let mut t = t0;
-        f(t, &self.y, &mut self.k[0]);
-        if !self.k[0].iter().all(|x| x.is_finite()) {
-            return Err(Error::Integration {
-                reason: "the equations of motion are not finite at the initial state".into(),
-            });
-        }
-        let mut h = self.initial_step(&mut f, t, t_end - t0);
-        let mut steps = 0usize;
-        let mut last_rejected = false;
+        self.start(&mut f, t0, y0, t_end - t0)?;
         loop {
-            steps += 1;
-            if steps > self.max_steps {
-                return Err(Error::Integration {
-                    reason: "too many steps (the motion may be singular or stiff)".into(),
-                });
+            let step = self.advance(&mut f, t_end)?;
+            if let Some(ts) = observe(&step) {
+                let ts = ts.clamp(step.t0, step.t1);
+                step.interpolate(ts, y0);
+                return Ok(ts);
             }
-            let last = t + h >= t_end;
-            if last {
-                h = t_end - t;
-            }
-            let err = self.step(&mut f, t, h);
-            if !err.is_finite() {
-                // A non-finite stage: shrink hard, unless there is no room left.
-                h *= 0.1;
-                self.rejected += 1;
-                last_rejected = true;
-                if h <= f64::EPSILON * t.abs().max(1.0) {
-                    return Err(Error::Integration {
-                        reason: "the equations of motion became non-finite".into(),
-                    });
-                }
-                continue;
-            }
-            if err <= 1.0 {
-                self.accepted += 1;
-                let t1 = if last { t_end } else { t + h };
-                self.dense(h);
-                let stop = {
-                    let step = Step {
-                        t0: t,
-                        t1,
-                        y0: &self.y,
-                        y1: &self.y1,
-                        cont: &self.cont,
-                    };
-                    match observe(&step) {
-                        Some(ts) => {
-                            let ts = ts.clamp(t, t1);
-                            step.interpolate(ts, y0);
-                            Some(ts)
-                        }
-                        None => None,
-                    }
-                };
-                if let Some(ts) = stop {
-                    return Ok(ts);
-                }
-                std::mem::swap(&mut self.y, &mut self.y1);
-                self.k.swap(0, 6);
-                t = t1;
-                if last {
-                    y0.copy_from_slice(&self.y);
-                    return Ok(t);
-                }
-                let mut fac = 0.9 * err.powf(-0.2);
-                fac = fac.clamp(0.2, if last_rejected { 1.0 } else { 10.0 });
-                h *= fac;
-                last_rejected = false;
-            } else {
-                self.rejected += 1;
-                last_rejected = true;
-                h *= (0.9 * err.powf(-0.2)).max(0.2);
-            }
-            if h <= 4.0 * f64::EPSILON * t.abs().max(f64::MIN_POSITIVE) {
-                return Err(Error::Integration {
-                    reason: "the step size underflowed (the motion may be singular)".into(),
-                });
+            if step.t1 >= t_end {
+                y0.copy_from_slice(step.y1);
+                return Ok(step.t1);
             }
         }
     }

@@ -3,7 +3,7 @@
 
 use super::{gravity, positive};
 use crate::error::Result;
-use crate::mechanism::{BodyInertia, Contact, Mechanism, Pose, Real, Surface};
+use crate::mechanism::{BodyInertia, Contact, Mechanism, Pose, Real, RoundOnFloor, Surface};
 
 /// A sphere (or, with `inertia_factor = 1/2`, a disc) of mass `m`, radius `r`, central
 /// inertia `k m r²` (`k = 2/5` for a sphere), moving in the plane above the floor `y = floor`;
@@ -37,14 +37,33 @@ impl Sphere {
     /// # Errors
     /// Mass or radius not finite and positive; gravity negative; non-finite floor.
     pub fn new(mass: f64, radius: f64, g: f64, floor: f64) -> Result<Self> {
+        Self::round("sphere", 0.4, mass, radius, g, floor)
+    }
+
+    /// A uniform disc (`I = 1/2 m r²`) rolling in its plane.
+    ///
+    /// # Errors
+    /// As [`Sphere::new`].
+    pub fn disc(mass: f64, radius: f64, g: f64, floor: f64) -> Result<Self> {
+        Self::round("disc", 0.5, mass, radius, g, floor)
+    }
+
+    fn round(
+        name: &'static str,
+        k: f64,
+        mass: f64,
+        radius: f64,
+        g: f64,
+        floor: f64,
+    ) -> Result<Self> {
         let mass = positive("mass", mass)?;
         let radius = positive("radius", radius)?;
         crate::error::finite("floor", floor)?;
         Ok(Sphere {
             bodies: [BodyInertia {
-                name: "sphere",
+                name,
                 mass,
-                inertia: 0.4 * mass * radius * radius,
+                inertia: k * mass * radius * radius,
             }],
             radius,
             gravity: gravity(g)?,
@@ -75,6 +94,14 @@ impl Mechanism for Sphere {
     }
     fn contact_point<D: Real>(&self, _k: usize, q: &[D]) -> [D; 2] {
         [q[0], q[1] - self.radius]
+    }
+    fn round_on_floor(&self) -> Option<RoundOnFloor> {
+        Some(RoundOnFloor {
+            mass: self.bodies[0].mass,
+            inertia: self.bodies[0].inertia,
+            radius: self.radius,
+            floor: self.contacts[0].surface.point.y,
+        })
     }
 }
 

@@ -50,7 +50,7 @@ pub(crate) fn gravity(x: f64) -> Result<f64> {
 }
 
 use super::conserved::Symmetry;
-use super::{BodyInertia, Contact, Mechanism, Pose, Real};
+use super::{BodyInertia, Contact, Mechanism, Pose, Real, RoundOnFloor};
 
 /// Any built-in mechanism, selectable by its stable name (CLI, TOML, bindings).
 #[derive(Debug, Clone, PartialEq)]
@@ -136,5 +136,8 @@ impl Mechanism for BuiltIn {
     }
     fn contact_point<D: Real>(&self, k: usize, q: &[D]) -> [D; 2] {
         each!(self, m => m.contact_point(k, q))
+    }
+    fn round_on_floor(&self) -> Option<RoundOnFloor> {
+        each!(self, m => m.round_on_floor())
     }
 }
