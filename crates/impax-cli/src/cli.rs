@@ -28,6 +28,9 @@ pub enum Command {
     /// (generalized momenta, cyclic coordinates, energy, momentum, angular momentum, Noether
     /// charges).
     Conserved(ConservedArgs),
+    /// Simulate a motion with impacts (event-driven): `bouncing-ball`, `rod-drop`,
+    /// `double-pendulum-drop`, or a TOML scenario; impacts table, JSON, CSV, plot, animation.
+    Simulate(SimulateArgs),
     /// Draw a 2-parameter sweep as maps, one panel per law: the energy-gain region (sign of
     /// ΔT), the phase sequence, or any numeric output as a heatmap (PNG or SVG).
     Map(MapArgs),
@@ -223,6 +226,85 @@ pub struct ConservedArgs {
     /// Also draw every quantity's relative change against time to FILE (.png or .svg).
     #[arg(long, value_name = "FILE")]
     pub plot: Option<PathBuf>,
+}
+
+#[derive(Debug, Args)]
+pub struct SimulateArgs {
+    /// A built-in scenario (`bouncing-ball`, `rod-drop`, `double-pendulum-drop`) or a TOML
+    /// file with a `simulation` key.
+    pub scenario: String,
+    /// The impact law (default `energetic`).
+    #[arg(long)]
+    pub law: Option<String>,
+    /// Coulomb friction μ ≥ 0 (impacts and sliding).
+    #[arg(long, allow_hyphen_values = true)]
+    pub friction: Option<f64>,
+    /// Coefficient of restitution e ∈ [0, 1].
+    #[arg(long, allow_hyphen_values = true)]
+    pub restitution: Option<f64>,
+    /// End time, seconds.
+    #[arg(long, allow_hyphen_values = true)]
+    pub until: Option<f64>,
+    /// Number of sample intervals of the trajectory output (default 1000).
+    #[arg(long)]
+    pub samples: Option<usize>,
+    /// Gravitational acceleration along −y (default 9.81).
+    #[arg(long, allow_hyphen_values = true)]
+    pub gravity: Option<f64>,
+    /// bouncing-ball, rod-drop: the mass.
+    #[arg(long, allow_hyphen_values = true)]
+    pub mass: Option<f64>,
+    /// bouncing-ball: the radius.
+    #[arg(long, allow_hyphen_values = true)]
+    pub radius: Option<f64>,
+    /// bouncing-ball, rod-drop: the height of the lowest point above the floor.
+    #[arg(long, allow_hyphen_values = true)]
+    pub height: Option<f64>,
+    /// bouncing-ball: the initial speed v0.
+    #[arg(long, allow_hyphen_values = true)]
+    pub speed: Option<f64>,
+    /// bouncing-ball: the angle α of the initial velocity from the downward vertical, degrees.
+    #[arg(long, allow_hyphen_values = true)]
+    pub alpha_deg: Option<f64>,
+    /// bouncing-ball: the spin ratio γ = ω r / v0 (the slip at contact is v0 (sin α + γ)).
+    #[arg(long, allow_hyphen_values = true)]
+    pub spin_ratio: Option<f64>,
+    /// bouncing-ball: a disc (I = m r²/2) instead of a sphere.
+    #[arg(long)]
+    pub disc: bool,
+    /// rod-drop: the rod's length.
+    #[arg(long, allow_hyphen_values = true)]
+    pub length: Option<f64>,
+    /// rod-drop: the rod's angle from the floor, degrees.
+    #[arg(long, allow_hyphen_values = true)]
+    pub angle_deg: Option<f64>,
+    /// double-pendulum-drop: the masses m1,m2.
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
+    pub masses: Option<Vec<f64>>,
+    /// double-pendulum-drop: the lengths l1,l2.
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
+    pub lengths: Option<Vec<f64>>,
+    /// double-pendulum-drop: the release angles θ1,θ2 from the downward vertical, degrees.
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
+    pub angles_deg: Option<Vec<f64>>,
+    /// double-pendulum-drop: the release rates, rad/s.
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
+    pub rates: Option<Vec<f64>>,
+    /// double-pendulum-drop: the floor's height (the pivot is at the origin).
+    #[arg(long, allow_hyphen_values = true)]
+    pub floor: Option<f64>,
+    /// Print one JSON object instead of the table.
+    #[arg(long)]
+    pub json: bool,
+    /// Write the sampled trajectory to FILE as CSV.
+    #[arg(long, value_name = "FILE")]
+    pub csv: Option<PathBuf>,
+    /// Draw the path and the energy curve to FILE (.png or .svg).
+    #[arg(long, value_name = "FILE")]
+    pub plot: Option<PathBuf>,
+    /// Write an animation of the motion to FILE.svg (animated SVG, real time, looping).
+    #[arg(long, value_name = "FILE")]
+    pub animate: Option<PathBuf>,
 }
 
 #[derive(Debug, Args)]

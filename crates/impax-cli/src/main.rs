@@ -4,9 +4,10 @@
 //! sphere; `--plot` draws Routh's diagram and energy bars), `resolve` (a contact-space problem
 //! directly), `paper` (reproduction reports), `sweep` (parameter sweeps streamed as CSV),
 //! `map` (maps of a 2-parameter sweep as PNG/SVG), `conserved` (conserved quantities of a
-//! mechanism's motion).
+//! mechanism's motion), `simulate` (trajectories with impacts).
 //! Bad input of any kind prints one line on stderr and exits with code 2.
 
+mod animation;
 mod cli;
 mod columns;
 mod compare;
@@ -26,6 +27,7 @@ mod plot;
 mod progress;
 mod resolve;
 mod scenario;
+mod simulate;
 mod space;
 mod sweep;
 mod template;
@@ -69,6 +71,7 @@ fn main() -> ExitCode {
         cli::Command::Sweep(args) => sweep::run(args),
         cli::Command::Map(args) => map::run(args, &mut out),
         cli::Command::Conserved(args) => conserved::run(args, &mut out),
+        cli::Command::Simulate(args) => simulate::run(args, &mut out),
     };
     match result {
         Ok(()) => {

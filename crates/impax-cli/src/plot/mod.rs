@@ -8,6 +8,7 @@ pub mod energy;
 pub mod font;
 pub mod map;
 pub mod routh;
+pub mod trajectory;
 
 use crate::input::{CliError, CliResult};
 use plotters::coord::Shift;

@@ -1,0 +1,269 @@
+//! The picture of a simulated motion: the path in the plane with snapshots of the body at
+//! its impacts (equal scales on both axes), and the energy T, V, T + V against time with the
+//! impacts marked (a gain in red).
+
+use super::map::tick;
+use super::{err, text, DrawResult, Figure};
+use crate::simulate::Shape;
+use impax::mechanism::builtin::BuiltIn;
+use impax::mechanism::{Mechanism, Pose};
+use impax::simulation::Run;
+use plotters::coord::Shift;
+use plotters::prelude::*;
+
+/// One energy curve: name, colour, width, and the value of a sample.
+type EnergySeries = (&'static str, RGBColor, u32, fn(&impax::simulation::Sample) -> f64);
+
+pub struct TrajectoryFigure<'a> {
+    pub title: String,
+    pub mechanism: &'a BuiltIn,
+    pub run: &'a Run,
+    pub shapes: &'a [Shape],
+}
+
+/// Outline segments (or a circle) of each body at `q`.
+fn outlines(shapes: &[Shape], poses: &[Pose<f64>]) -> Vec<Vec<(f64, f64)>> {
+    shapes
+        .iter()
+        .zip(poses)
+        .map(|(shape, p)| match *shape {
+            Shape::Ball(r) => {
+                let mut pts: Vec<(f64, f64)> = (0..=48)
+                    .map(|i| {
+                        let a = std::f64::consts::TAU * i as f64 / 48.0;
+                        (p.x + r * a.cos(), p.y + r * a.sin())
+                    })
+                    .collect();
+                pts.push((p.x, p.y));
+                pts.push((p.x + r * p.angle.cos(), p.y + r * p.angle.sin()));
+                pts
+            }
+            Shape::Rod(l) => {
+                let (s, c) = p.angle.sin_cos();
+                vec![
+                    (p.x - 0.5 * l * c, p.y - 0.5 * l * s),
+                    (p.x + 0.5 * l * c, p.y + 0.5 * l * s),
+                ]
+            }
+            Shape::Pendulum(l) => {
+                let (s, c) = p.angle.sin_cos();
+                vec![
+                    (p.x - 0.5 * l * s, p.y + 0.5 * l * c),
+                    (p.x + 0.5 * l * s, p.y - 0.5 * l * c),
+                ]
+            }
+        })
+        .collect()
+}
+
+impl Figure for TrajectoryFigure<'_> {
+    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> DrawResult
+    where
+        DB::ErrorType: 'static,
+    {
+        let m = self.mechanism;
+        let run = self.run;
+        let (title, body) = root.split_vertically(36);
+        title
+            .draw(&Text::new(self.title.clone(), (16, 8), text(18.0)))
+            .map_err(err)?;
+        let (top, bottom) = body.split_vertically(body.dim_in_pixel().1 * 11 / 20);
+        // ---- the path ----
+        let mut poses = vec![Pose::new(0.0, 0.0, 0.0); m.bodies().len()];
+        let mut paths: Vec<Vec<(f64, f64)>> = vec![Vec::new(); m.bodies().len()];
+        let mut tip: Vec<(f64, f64)> = Vec::new();
+        for s in &run.samples {
+            m.poses(&s.q, &mut poses);
+            for (p, pose) in paths.iter_mut().zip(&poses) {
+                p.push((pose.x, pose.y));
+            }
+            if !m.contacts().is_empty() {
+                let c = m.contact_point(0, &s.q);
+                tip.push((c[0], c[1]));
+            }
+        }
+        let mut snaps: Vec<Vec<Vec<(f64, f64)>>> = Vec::new();
+        m.poses(&run.samples[0].q, &mut poses);
+        snaps.push(outlines(self.shapes, &poses));
+        for imp in run.impacts.iter().take(12) {
+            m.poses(&imp.q, &mut poses);
+            snaps.push(outlines(self.shapes, &poses));
+        }
+        let floor = m.contacts().first().map_or(0.0, |c| c.surface.point.y);
+        let all = paths
+            .iter()
+            .flatten()
+            .chain(&tip)
+            .chain(snaps.iter().flatten().flatten());
+        let (mut x0, mut x1, mut y0, mut y1) = (f64::INFINITY, f64::NEG_INFINITY, floor, floor);
+        for &(x, y) in all {
+            x0 = x0.min(x);
+            x1 = x1.max(x);
+            y0 = y0.min(y);
+            y1 = y1.max(y);
+        }
+        // Equal scales: widen the shorter range to the panel's aspect.
+        let (pw, ph) = top.dim_in_pixel();
+        let (aw, ah) = (pw as f64 - 100.0, ph as f64 - 70.0);
+        let (dx, dy) = ((x1 - x0).max(1e-9), (y1 - y0).max(1e-9));
+        let k = (dx / aw).max(dy / ah) * 1.08;
+        let (cx, cy) = (0.5 * (x0 + x1), 0.5 * (y0 + y1));
+        let (xr, yr) = (0.5 * k * aw, 0.5 * k * ah);
+        let mut chart = ChartBuilder::on(&top)
+            .margin(10)
+            .x_label_area_size(36)
+            .y_label_area_size(60)
+            .build_cartesian_2d((cx - xr)..(cx + xr), (cy - yr)..(cy + yr))
+            .map_err(err)?;
+        chart
+            .configure_mesh()
+            .light_line_style(RGBColor(240, 240, 240))
+            .bold_line_style(RGBColor(222, 222, 222))
+            .x_desc("x (m)")
+            .y_desc("y (m)")
+            .x_label_formatter(&|v| tick(*v))
+            .y_label_formatter(&|v| tick(*v))
+            .label_style(text(12.0))
+            .axis_desc_style(text(13.0))
+            .draw()
+            .map_err(err)?;
+        chart
+            .draw_series(std::iter::once(Rectangle::new(
+                [(cx - xr, cy - yr), (cx + xr, floor)],
+                RGBColor(225, 225, 225).filled(),
+            )))
+            .map_err(err)?;
+        chart
+            .draw_series(LineSeries::new(
+                vec![(cx - xr, floor), (cx + xr, floor)],
+                BLACK.stroke_width(2),
+            ))
+            .map_err(err)?;
+        for (i, snap) in snaps.iter().enumerate() {
+            let shade = if i == 0 {
+                RGBColor(120, 120, 120)
+            } else {
+                RGBColor(49, 130, 189)
+            };
+            for outline in snap {
+                chart
+                    .draw_series(LineSeries::new(outline.clone(), shade.stroke_width(2)))
+                    .map_err(err)?;
+            }
+        }
+        for (i, p) in paths.iter().enumerate() {
+            let drawn = chart
+                .draw_series(LineSeries::new(
+                    p.clone(),
+                    RGBColor(8, 48, 107).stroke_width(1),
+                ))
+                .map_err(err)?;
+            if i == 0 {
+                drawn
+                    .label(if paths.len() > 1 {
+                        "centres of mass"
+                    } else {
+                        "centre of mass"
+                    })
+                    .legend(|(x, y)| {
+                        PathElement::new(
+                            vec![(x, y), (x + 18, y)],
+                            RGBColor(8, 48, 107).stroke_width(2),
+                        )
+                    });
+            }
+        }
+        if !tip.is_empty() {
+            chart
+                .draw_series(LineSeries::new(
+                    tip.clone(),
+                    RGBColor(230, 85, 13).stroke_width(1),
+                ))
+                .map_err(err)?
+                .label("contact point")
+                .legend(|(x, y)| {
+                    PathElement::new(
+                        vec![(x, y), (x + 18, y)],
+                        RGBColor(230, 85, 13).stroke_width(2),
+                    )
+                });
+        }
+        chart
+            .configure_series_labels()
+            .background_style(WHITE.mix(0.9))
+            .border_style(RGBColor(180, 180, 180))
+            .label_font(text(12.0))
+            .position(SeriesLabelPosition::UpperRight)
+            .draw()
+            .map_err(err)?;
+        // ---- the energy ----
+        let t_end = run.end_time.max(1e-9);
+        let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+        for s in &run.samples {
+            for v in [s.kinetic, s.potential, s.kinetic + s.potential] {
+                lo = lo.min(v);
+                hi = hi.max(v);
+            }
+        }
+        let pad = 0.06 * (hi - lo).max(1e-9);
+        let mut chart = ChartBuilder::on(&bottom)
+            .margin(10)
+            .x_label_area_size(36)
+            .y_label_area_size(60)
+            .build_cartesian_2d(0.0..t_end, (lo - pad)..(hi + pad))
+            .map_err(err)?;
+        chart
+            .configure_mesh()
+            .light_line_style(RGBColor(240, 240, 240))
+            .bold_line_style(RGBColor(222, 222, 222))
+            .x_desc("time t (s)")
+            .y_desc("energy (J)")
+            .x_label_formatter(&|v| tick(*v))
+            .y_label_formatter(&|v| tick(*v))
+            .label_style(text(12.0))
+            .axis_desc_style(text(13.0))
+            .draw()
+            .map_err(err)?;
+        for imp in &run.impacts {
+            let colour = if imp.energy_change > 0.0 {
+                RGBColor(214, 39, 40)
+            } else {
+                RGBColor(200, 200, 200)
+            };
+            chart
+                .draw_series(LineSeries::new(
+                    vec![(imp.time, lo - pad), (imp.time, hi + pad)],
+                    colour.stroke_width(1),
+                ))
+                .map_err(err)?;
+        }
+        let series: [EnergySeries; 3] = [
+            ("kinetic T", RGBColor(49, 130, 189), 1, |s| s.kinetic),
+            ("potential V", RGBColor(116, 196, 118), 1, |s| s.potential),
+            ("total T + V", RGBColor(0, 0, 0), 3, |s| {
+                s.kinetic + s.potential
+            }),
+        ];
+        for (name, colour, width, f) in series {
+            chart
+                .draw_series(LineSeries::new(
+                    run.samples.iter().map(|s| (s.t, f(s))),
+                    colour.stroke_width(width),
+                ))
+                .map_err(err)?
+                .label(name)
+                .legend(move |(x, y)| {
+                    PathElement::new(vec![(x, y), (x + 18, y)], colour.stroke_width(3))
+                });
+        }
+        chart
+            .configure_series_labels()
+            .background_style(WHITE.mix(0.9))
+            .border_style(RGBColor(180, 180, 180))
+            .label_font(text(12.0))
+            .position(SeriesLabelPosition::UpperRight)
+            .draw()
+            .map_err(err)?;
+        Ok(())
+    }
+}
