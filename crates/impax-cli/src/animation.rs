@@ -1,5 +1,5 @@
 //! An animated SVG of a simulated motion (SMIL `<animate>` of each body's geometry, in real
-//! time, looping), with the floor, the path traced, a clock bar and an energy bar.
+//! time or slowed to at least four seconds, looping), with the floor, the path traced, a clock bar and an energy bar.
 
 use crate::simulate::{Case, Shape};
 use impax::mechanism::{Mechanism, Pose};
@@ -108,7 +108,14 @@ pub fn svg(case: &Case, run: &Run) -> String {
     let cx = 0.5 * (x0 + x1);
     let sx = |x: f64| w / 2.0 + (x - cx) * scale;
     let sy = |y: f64| h - margin - 30.0 - (y - y0) * scale;
-    let dur = format!("{duration:.4}s");
+    // Short motions are slowed down to at least four seconds of playback.
+    let playback = duration.max(4.0);
+    let dur = format!("{playback:.4}s");
+    let pace = if playback > duration {
+        format!("slowed ×{:.1}", playback / duration)
+    } else {
+        "real time".to_string()
+    };
     let mut s = String::new();
     let _ = writeln!(
         s,
@@ -117,7 +124,7 @@ pub fn svg(case: &Case, run: &Run) -> String {
     let _ = writeln!(s, r##"<rect width="{w}" height="{h}" fill="#ffffff"/>"##);
     let _ = writeln!(
         s,
-        r##"<text x="16" y="24" font-size="16">{} — {} (μ = {}, e = {}), real time, {:.2} s</text>"##,
+        r##"<text x="16" y="24" font-size="16">{} — {} (μ = {}, e = {}), {:.2} s of motion, {pace}</text>"##,
         case.name, case.options.law, case.options.friction, case.options.restitution, duration
     );
     // Floor.
