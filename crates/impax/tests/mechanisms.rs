@@ -545,3 +545,46 @@ fn bad_input_is_an_error_not_a_panic() {
     };
     assert!(conserved::track(&ring, &[0.0, 0.1], &[0.0, 0.0], &[], &[], bad).is_err());
 }
+
+#[test]
+fn whittaker_gains_energy_on_the_double_pendulum_above_a_friction_threshold() {
+    // The documented region: at θ = (30°, 0°), u = (−1, 2) rad/s, unit rods, e = 0.5,
+    // Whittaker's rule gains energy exactly for μ above a threshold μ* (ΔT(μ) changes sign
+    // once on [0, 2]); the Darboux–Keller laws never do.
+    let q = [30f64.to_radians(), 0.0];
+    let dp = DoublePendulum::unit_at(q);
+    let imp = MechanismImpact::new(&dp, &q, &[-1.0, 2.0], 0).unwrap();
+    let gain = |mu: f64| {
+        imp.resolve(LawId::Whittaker, mu, 0.5)
+            .unwrap()
+            .resolution
+            .map(|o| o.energy_change)
+            .unwrap()
+    };
+    let (mut lo, mut hi) = (0.0, 2.0);
+    assert!(gain(lo) < 0.0 && gain(hi) > 0.0);
+    for _ in 0..100 {
+        let mid = 0.5 * (lo + hi);
+        if gain(mid) > 0.0 {
+            hi = mid
+        } else {
+            lo = mid
+        }
+    }
+    println!(
+        "whittaker gains energy on the documented double-pendulum state (e = 0.5) for μ > {hi:.6}"
+    );
+    assert!(hi > 0.43 && hi < 0.45, "μ* = {hi}");
+    for i in 0..=200 {
+        let mu = 0.01 * i as f64;
+        assert_eq!(gain(mu) > 0.0, mu > hi, "μ = {mu}");
+        for law in [LawId::Newton, LawId::Poisson, LawId::Energetic] {
+            let de = imp
+                .resolve(law, mu, 0.5)
+                .unwrap()
+                .energy_change_from_velocities
+                .unwrap();
+            assert!(de < 0.0, "{law:?} at μ = {mu}");
+        }
+    }
+}

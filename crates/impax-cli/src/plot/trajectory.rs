@@ -12,7 +12,12 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 
 /// One energy curve: name, colour, width, and the value of a sample.
-type EnergySeries = (&'static str, RGBColor, u32, fn(&impax::simulation::Sample) -> f64);
+type EnergySeries = (
+    &'static str,
+    RGBColor,
+    u32,
+    fn(&impax::simulation::Sample) -> f64,
+);
 
 pub struct TrajectoryFigure<'a> {
     pub title: String,
