@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# The whole test suite (the README's test command): the Rust workspace, the optional-feature
+# tests, then every stage in scripts/test.d/ in name order (each stage installs what it needs
+# from the project's own pinned lists, into folders inside the checkout).
+#
+#   bash scripts/test.sh            # everything
+#   bash scripts/test.sh --rust     # the Rust workspace only (what `cargo test --workspace` runs)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+echo "== cargo test --workspace"
+cargo test --workspace
+
+if [[ "${1:-}" == "--rust" ]]; then
+    exit 0
+fi
+
+echo "== Parquet output (feature \`parquet\`)"
+cargo test -p impax-cli --features parquet --test parquet
+
+for stage in scripts/test.d/*.sh; do
+    [[ -e "$stage" ]] || continue
+    echo "== stage $(basename "$stage")"
+    bash "$stage"
+done
