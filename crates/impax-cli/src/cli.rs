@@ -34,6 +34,19 @@ pub enum Command {
     /// Draw a 2-parameter sweep as maps, one panel per law: the energy-gain region (sign of
     /// ΔT), the phase sequence, or any numeric output as a heatmap (PNG or SVG).
     Map(MapArgs),
+    /// The interactive explorer in the browser: serve the page (the impax core compiled to
+    /// WebAssembly) on 127.0.0.1 and print its URL, or write its static files with --out.
+    Explore(ExploreArgs),
+}
+
+#[derive(Debug, Args)]
+pub struct ExploreArgs {
+    /// TCP port on 127.0.0.1 (0: any free port).
+    #[arg(long, default_value_t = 8717)]
+    pub port: u16,
+    /// Write the page's static files to DIR (created if needed) instead of serving them.
+    #[arg(long, value_name = "DIR")]
+    pub out: Option<PathBuf>,
 }
 
 /// The points of a sweep and the scenario they vary (shared by `sweep` and `map`).

@@ -256,7 +256,7 @@ fn body_case(spec: &BodySpec) -> Result<BodyCase, String> {
         ));
     }
     let rho = body.contact().norm();
-    if !(rho > 0.0) {
+    if rho <= 0.0 {
         return Err("contact: the contact point must not be the centre of mass".into());
     }
     let state = bodies::spin_state(v0, alpha.to_radians(), gamma, rho).map_err(text)?;

@@ -248,7 +248,8 @@ fn body_animation(case: &BodyCase, problem: &ContactProblem) -> Value {
     let rho = case.length_scale;
     let before = case.state();
     let speed = before.velocity.norm().max(1e-300);
-    let duration = 1.2 * rho / speed;
+    // The centre travels 2.5 ρ before the impact.
+    let duration = 2.5 * rho / speed;
     let c0 = -case.impact.body.0.contact();
     let frames = |vx: f64, vy: f64, omega: f64, sign: f64| -> Value {
         Value::Array(
