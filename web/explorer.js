@@ -71,6 +71,7 @@ const LAW_STYLE = {
   newton: { colour: "#1f77b4", dash: [] },
   poisson: { colour: "#17becf", dash: [6, 3] },
   energetic: { colour: "#2ca02c", dash: [] },
+  lcp: { colour: "#7f7f7f", dash: [1, 4] },
 };
 const styleOf = (law) => LAW_STYLE[law] || { colour: "#444", dash: [2, 2] };
 
