@@ -232,3 +232,63 @@ fn bad_input_one_line_exit_2() {
     bad(&["audit", broken.path()], "broken.toml");
     bad(&["audit"], "SCENARIO");
 }
+
+fn docs_rod() -> String {
+    format!(
+        "{}/../../docs/engine-audit-rod.toml",
+        env!("CARGO_MANIFEST_DIR")
+    )
+}
+
+/// The gain region of `lcp` drawn in docs/engine-audit.md: where the rod sticks at e = 1,
+/// ΔT = ½ v_t⁻ p_t > 0 exactly when 12 sin θ cos θ > 1 + 3 cos² θ (W_tn = −3 sin θ cos θ,
+/// W_nn = 1 + 3 cos² θ for m = l = 1, v⁻ = (0.5, −1)), whatever μ.
+#[test]
+fn sweep_and_map_show_the_lcp_gain_region() {
+    let rod = docs_rod();
+    let csv = run_ok(&[
+        "sweep",
+        &rod,
+        "--grid",
+        "angle-deg=5:89:85",
+        "--set",
+        "friction=1.0",
+        "--law",
+        "lcp",
+        "--columns",
+        "status,sequence,energy_ratio",
+        "--quiet",
+    ]);
+    let mut sticks = 0;
+    for line in csv.lines().skip(1) {
+        let f: Vec<&str> = line.split(',').collect();
+        let theta = f[0].parse::<f64>().unwrap().to_radians();
+        if f[3] != "stick" {
+            continue;
+        }
+        sticks += 1;
+        let (s, c) = theta.sin_cos();
+        let margin = 12.0 * s * c - 1.0 - 3.0 * c * c;
+        if margin.abs() > 1e-9 {
+            assert_eq!(f[2] == "energy-gained", margin > 0.0, "{line}");
+        }
+    }
+    assert!(sticks > 70, "{sticks}");
+    let out = std::env::temp_dir().join(format!("impax-audit-map-{}.png", std::process::id()));
+    run_ok(&[
+        "map",
+        &rod,
+        "--grid",
+        "angle-deg=1:89:45",
+        "--grid",
+        "friction=0:1.5:31",
+        "--law",
+        "lcp",
+        "--out",
+        out.to_str().unwrap(),
+        "--quiet",
+    ]);
+    let png = std::fs::read(&out).unwrap();
+    let _ = std::fs::remove_file(&out);
+    assert_eq!(&png[..8], b"\x89PNG\r\n\x1a\n");
+}
