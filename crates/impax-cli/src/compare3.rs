@@ -259,7 +259,8 @@ pub fn run(
     };
     if let Some(l) = laws.iter().find(|l| !LawId::SPATIAL.contains(l)) {
         return Err(CliError::input(format!(
-            "law: `{l}` is defined for planar impacts only (spatial laws: whittaker, brach, newton, poisson, energetic)"
+            "law: `{l}` is defined for planar impacts only (spatial laws: {})",
+            LawId::SPATIAL.map(|l| l.as_str()).join(", ")
         )));
     }
     let (a, sa, mut desc) = build(&spec.body, "body", Side::Below)?;

@@ -27,6 +27,10 @@ fn detail(d: &LawDetail) -> Value {
         }),
         LawDetail::Brach { ratio, capped } => json!({ "ratio": ratio, "capped": capped }),
         LawDetail::DarbouxKeller { slip_halt } => json!({ "slip_halt": slip_halt }),
+        LawDetail::Lcp {
+            ratio,
+            consistent_candidates,
+        } => json!({ "ratio": ratio, "consistent_candidates": consistent_candidates }),
     }
 }
 

@@ -169,6 +169,7 @@ fn spatial_entry(
             let detail = match o.detail {
                 Detail3::None => Value::Null,
                 Detail3::Brach { ratio, capped } => json!({ "ratio": ratio, "capped": capped }),
+                Detail3::Lcp { solutions } => json!({ "solutions": solutions }),
                 Detail3::DarbouxKeller {
                     slip_halt,
                     second_compression,
@@ -188,6 +189,9 @@ fn spatial_entry(
                 Value::Null
             };
             m.insert("hodograph".into(), hodograph);
+            if law == LawId::Lcp {
+                m.insert("all_solutions".into(), lcp_solutions(problem));
+            }
         }
         Err(b) => {
             m.insert("verdict".into(), json!("breakdown"));
@@ -214,6 +218,28 @@ fn spatial_entry(
     Value::Object(m)
 }
 
+/// Every solution of the spatial LCP (least kinetic energy after first): `kind` (`stick`
+/// or `slip`), `slip_angle_deg` (slip only), `impulse`, `velocity_after`, `energy_change`.
+fn lcp_solutions(problem: &ContactProblem3) -> Value {
+    Value::Array(
+        impax::spatial::lcp::solutions(problem)
+            .iter()
+            .map(|s| {
+                let mut e = json!({
+                    "kind": s.kind.label(),
+                    "impulse": vec3_json(s.impulse),
+                    "velocity_after": vec3_json(s.velocity_after),
+                    "energy_change": json::num(s.energy_change),
+                });
+                if let Phase3Kind::Slip { to, .. } = s.kind {
+                    e["slip_angle_deg"] = json!(to.to_degrees());
+                }
+                e
+            })
+            .collect(),
+    )
+}
+
 /// `impax resolve` with a 3×3 `W` (upper triangle) and `(v_t1, v_t2, v_n)`.
 fn run_spatial(args: &ResolveArgs, out: &mut Vec<u8>) -> CliResult<()> {
     let w = parse_numbers("w", &args.w, 6, "W11,W12,W13,W22,W23,W33")?;
@@ -233,7 +259,8 @@ fn run_spatial(args: &ResolveArgs, out: &mut Vec<u8>) -> CliResult<()> {
     };
     if let Some(l) = laws.iter().find(|l| !LawId::SPATIAL.contains(l)) {
         return Err(CliError::input(format!(
-            "law: `{l}` is defined for planar impacts only (spatial laws: whittaker, brach, newton, poisson, energetic)"
+            "law: `{l}` is defined for planar impacts only (spatial laws: {})",
+            LawId::SPATIAL.map(|l| l.as_str()).join(", ")
         )));
     }
     let rays = invariant_rays(&problem);

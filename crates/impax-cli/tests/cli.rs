@@ -197,7 +197,7 @@ omega = 0.0
     );
     let doc = json_ok(&["compare", rod.path(), "--json"]);
     let results = doc["results"].as_array().unwrap();
-    assert_eq!(results.len(), 8);
+    assert_eq!(results.len(), 9);
     let table = run_ok(&["compare", rod.path()]);
     assert!(table.contains("rod m = 1"));
     let pair = scenario_file(
@@ -267,7 +267,7 @@ fn resolve_prints_one_entry_per_law() {
         "0.5",
         "--json",
     ]);
-    assert_eq!(doc["results"].as_array().unwrap().len(), 7);
+    assert_eq!(doc["results"].as_array().unwrap().len(), 8);
     let text = run_ok(&[
         "resolve",
         "--w",

@@ -56,7 +56,7 @@ fn double_pendulum_compare_shows_kanes_paradox() {
     let e0 = doc["energy_before"].as_f64().unwrap();
     assert!((e0 - t0).abs() < 1e-14, "{e0} vs {t0}");
     let results = doc["results"].as_array().unwrap();
-    assert_eq!(results.len(), 7);
+    assert_eq!(results.len(), 8);
     let by = |id: &str| results.iter().find(|r| r["law"] == id).unwrap();
     let w = by("whittaker");
     assert!(w["energy_change"].as_f64().unwrap() > 0.0);

@@ -435,7 +435,7 @@ fn throughput_line_without_a_terminal_and_nothing_when_quiet() {
     let stderr = String::from_utf8(out.stderr).unwrap();
     // No progress bar when stderr is not a terminal: exactly the throughput line.
     assert_eq!(stderr.lines().count(), 1, "{stderr:?}");
-    assert!(stderr.contains("11 points × 8 laws = 88 impacts") && stderr.contains("M impacts/s"));
+    assert!(stderr.contains("11 points × 9 laws = 99 impacts") && stderr.contains("M impacts/s"));
     let mut quiet = args.to_vec();
     quiet.push("--quiet");
     let out = impax().args(quiet).output().unwrap();

@@ -27,11 +27,15 @@ pub enum LawId {
     /// `energetic`: Darboux–Keller integration ended by Stronge's energetic restitution
     /// `W_r = −e² W_c`.
     Energetic,
+    /// `lcp`: the velocity-level complementarity impact that physics engines converge to
+    /// (Anitescu & Potra 1997; the fixed point of sequential impulses): Newton's target
+    /// `v_n⁺ = −e v_n⁻` and Coulomb friction with maximal dissipation on the final velocity.
+    Lcp,
 }
 
 impl LawId {
-    /// The seven laws defined in contact space, in presentation order.
-    pub const CONTACT_SPACE: [LawId; 7] = [
+    /// The eight laws defined in contact space, in presentation order.
+    pub const CONTACT_SPACE: [LawId; 8] = [
         LawId::Whittaker,
         LawId::TwoPhase,
         LawId::Smith,
@@ -39,10 +43,11 @@ impl LawId {
         LawId::Newton,
         LawId::Poisson,
         LawId::Energetic,
+        LawId::Lcp,
     ];
 
     /// Every law, including the body-only `smith-centre`, in presentation order.
-    pub const ALL: [LawId; 8] = [
+    pub const ALL: [LawId; 9] = [
         LawId::Whittaker,
         LawId::TwoPhase,
         LawId::Smith,
@@ -51,15 +56,17 @@ impl LawId {
         LawId::Newton,
         LawId::Poisson,
         LawId::Energetic,
+        LawId::Lcp,
     ];
 
     /// The laws defined for spatial (3D) problems, in presentation order.
-    pub const SPATIAL: [LawId; 5] = [
+    pub const SPATIAL: [LawId; 6] = [
         LawId::Whittaker,
         LawId::Brach,
         LawId::Newton,
         LawId::Poisson,
         LawId::Energetic,
+        LawId::Lcp,
     ];
 
     /// The stable id string.
@@ -73,6 +80,7 @@ impl LawId {
             LawId::Newton => "newton",
             LawId::Poisson => "poisson",
             LawId::Energetic => "energetic",
+            LawId::Lcp => "lcp",
         }
     }
 
@@ -106,6 +114,7 @@ impl LawId {
             LawId::Newton => Newton.resolve(problem),
             LawId::Poisson => Poisson.resolve(problem),
             LawId::Energetic => Energetic.resolve(problem),
+            LawId::Lcp => Lcp.resolve(problem),
         }
     }
 }

@@ -15,6 +15,7 @@ pub fn law(law: LawId) -> RGBColor {
         LawId::Newton => RGBColor(31, 119, 180),
         LawId::Poisson => RGBColor(23, 190, 207),
         LawId::Energetic => RGBColor(44, 160, 44),
+        LawId::Lcp => RGBColor(127, 127, 127),
     }
 }
 

@@ -27,7 +27,7 @@
 use crate::error::{Error, Result};
 use crate::law::{ImpactLaw, LawId};
 use crate::math::Vec2;
-use crate::planar::laws::{Brach, Energetic, Newton, Poisson, Smith, TwoPhase, Whittaker};
+use crate::planar::laws::{Brach, Energetic, Lcp, Newton, Poisson, Smith, TwoPhase, Whittaker};
 use crate::planar::{ContactProblem, Outcome, PhaseKind, Phases, Resolution, Verdict, WorkSplit};
 
 /// What became of one problem of a batch.
@@ -306,6 +306,10 @@ macro_rules! with_law {
             }
             LawId::Energetic => {
                 let $l = Energetic;
+                $body
+            }
+            LawId::Lcp => {
+                let $l = Lcp;
                 $body
             }
             LawId::SmithCentre => {

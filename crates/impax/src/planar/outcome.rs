@@ -199,14 +199,22 @@ pub enum Inconsistency {
         /// Tangential contact velocity after the impact.
         slip_after: f64,
     },
+    /// The velocity-level LCP (`lcp`, spatial) has several solutions: the rule alone does not
+    /// say which one an engine returns (it depends on the engine's iteration). The one of
+    /// least kinetic energy after is reported.
+    MultipleSolutions {
+        /// Number of distinct solutions (2 or 3).
+        count: usize,
+    },
 }
 
 impl Inconsistency {
-    /// Stable id: `slip-reversed` or `reversal-did-not-happen`.
+    /// Stable id: `slip-reversed`, `reversal-did-not-happen` or `multiple-solutions`.
     pub fn id(&self) -> &'static str {
         match self {
             Inconsistency::SlipReversed { .. } => "slip-reversed",
             Inconsistency::ReversalDidNotHappen { .. } => "reversal-did-not-happen",
+            Inconsistency::MultipleSolutions { .. } => "multiple-solutions",
         }
     }
 }
@@ -221,6 +229,10 @@ impl fmt::Display for Inconsistency {
             Inconsistency::ReversalDidNotHappen { slip_after } => write!(
                 f,
                 "assumed the slip reverses after it halts, but v_t+ = {slip_after:.6} keeps the initial direction"
+            ),
+            Inconsistency::MultipleSolutions { count } => write!(
+                f,
+                "the complementarity conditions have {count} solutions; the one of least kinetic energy after is shown"
             ),
         }
     }
@@ -261,6 +273,15 @@ pub enum LawDetail {
         ratio: f64,
         /// Whether `|μ0| > μ` so that `μ sign(μ0)` was used.
         capped: bool,
+    },
+    /// The engine rule `lcp`: the friction ratio of the solution and how many of the three
+    /// enumerated candidates (stick, slip+, slip−) satisfy the complementarity conditions.
+    Lcp {
+        /// `p_t / p_n`.
+        ratio: f64,
+        /// `1`, or `2` on the stick/slip boundary (the same impulse); `0` only when
+        /// round-off leaves every candidate a hair outside its test (the nearest is used).
+        consistent_candidates: usize,
     },
     /// Darboux–Keller integration: the normal impulse at which slip halted, if it did.
     DarbouxKeller {
@@ -320,6 +341,9 @@ pub enum BreakdownReason {
     /// The law reads a body's centre velocity (`smith-centre`) and was given only a
     /// contact-space problem.
     NeedsBody,
+    /// The complementarity conditions of `lcp` have no solution (not observed for a
+    /// positive definite `W`; reported rather than guessed).
+    NoSolution,
 }
 
 impl BreakdownReason {
@@ -332,6 +356,7 @@ impl BreakdownReason {
             BreakdownReason::NeedsBody => "needs-body",
             BreakdownReason::NoSeparation => "no-separation",
             BreakdownReason::PlanarOnly => "planar-only",
+            BreakdownReason::NoSolution => "no-solution",
         }
     }
 }
@@ -357,6 +382,9 @@ impl fmt::Display for BreakdownReason {
             BreakdownReason::PlanarOnly => f.write_str("the law is defined for planar impacts only"),
             BreakdownReason::NeedsBody => {
                 f.write_str("the law reads a body's centre velocity; contact space has none")
+            }
+            BreakdownReason::NoSolution => {
+                f.write_str("the complementarity conditions have no solution")
             }
         }
     }

@@ -1,5 +1,6 @@
 //! The spatial laws: `whittaker` and `brach` in closed form, `newton`, `poisson` and
-//! `energetic` by the Darboux–Keller integration ([`super::darboux_keller`]).
+//! `energetic` by the Darboux–Keller integration ([`super::darboux_keller`]), `lcp` by
+//! [`super::lcp`].
 
 use super::darboux_keller::{integrate, PathEnd, Termination};
 use super::outcome::{Detail3, Outcome3, Phase3Kind, Phases3, Resolution3};
@@ -25,7 +26,7 @@ pub fn is_energy_gain3(
     energy_change > round_off && energy_change > ENERGY_GAIN_TOL * problem.approach_energy()
 }
 
-fn assemble(
+pub(crate) fn assemble(
     problem: &ContactProblem3,
     law: LawId,
     end: &PathEnd,
@@ -59,7 +60,13 @@ fn assemble(
 }
 
 /// The closed-form record of a straight path `p = p_n (k, 1)` (`k` a 2-vector).
-fn straight(problem: &ContactProblem3, law: LawId, kind: Phase3Kind, k: Vec2, pf: f64) -> PathEnd {
+pub(crate) fn straight(
+    problem: &ContactProblem3,
+    law: LawId,
+    kind: Phase3Kind,
+    k: Vec2,
+    pf: f64,
+) -> PathEnd {
     let w = problem.w();
     let v = problem.velocity();
     let slope = w * Vec3::new(k.x, k.y, 1.0);
@@ -230,6 +237,7 @@ pub fn resolve(law: LawId, problem: &ContactProblem3) -> Resolution3 {
         LawId::Newton | LawId::Poisson | LawId::Energetic => {
             darboux_keller_observed(problem, law, &mut |_, _| {})
         }
+        LawId::Lcp => super::lcp::resolve(problem),
         LawId::TwoPhase | LawId::Smith | LawId::SmithCentre => Err(Breakdown {
             law,
             reason: BreakdownReason::PlanarOnly,

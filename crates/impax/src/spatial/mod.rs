@@ -13,6 +13,7 @@
 pub mod darboux_keller;
 pub mod invariant;
 pub mod laws;
+pub mod lcp;
 mod outcome;
 mod problem;
 mod rk;

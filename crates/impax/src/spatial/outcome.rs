@@ -114,6 +114,11 @@ pub enum Detail3 {
         /// Whether `|μ0| > μ`.
         capped: bool,
     },
+    /// The engine rule `lcp`: how many solutions the complementarity conditions have.
+    Lcp {
+        /// Number of distinct solutions (1, or 2–3 for some anisotropic coupled `W`).
+        solutions: usize,
+    },
     /// Darboux–Keller integration.
     DarbouxKeller {
         /// Normal impulse at which the initial slip halted, if it did before the end.

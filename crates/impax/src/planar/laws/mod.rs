@@ -9,10 +9,12 @@
 //! | `newton` | [`newton`] | Darboux–Keller, `v_n⁺ = −e v_n⁻` |
 //! | `poisson` | [`poisson`] | Darboux–Keller, `p_f = (1+e) p_c` |
 //! | `energetic` | [`energetic`] | Darboux–Keller, `W_r = −e² W_c` |
+//! | `lcp` | [`lcp`] | engines' velocity-level LCP: `v_n⁺ = −e v_n⁻`, friction against `v_t⁺` |
 
 pub mod brach;
 pub mod darboux_keller;
 pub mod energetic;
+pub mod lcp;
 pub mod newton;
 pub mod poisson;
 pub mod smith;
@@ -22,6 +24,7 @@ pub mod whittaker;
 pub use crate::law::ImpactLaw;
 pub use brach::Brach;
 pub use energetic::Energetic;
+pub use lcp::Lcp;
 pub use newton::Newton;
 pub use poisson::Poisson;
 pub use smith::Smith;
