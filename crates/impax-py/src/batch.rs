@@ -15,9 +15,7 @@ use impax::planar::{ContactProblem, Verdict};
 use impax::spatial::{ContactProblem3, Phase3Kind};
 use impax::LawId;
 use numpy::ndarray::ArrayViewD;
-use numpy::{
-    AllowTypeChange, PyArray1, PyArray2, PyArrayLikeDyn, PyArrayMethods,
-};
+use numpy::{AllowTypeChange, PyArray1, PyArray2, PyArrayLikeDyn, PyArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use std::borrow::Cow;
@@ -409,7 +407,11 @@ pub fn resolve_batch<'py>(
     if v_view.shape() != [n, dim] {
         return Err(value_error(format!(
             "v: expected shape ({n}, {dim}) ({}) for W of shape {}, got {}",
-            if spatial { "v_t1, v_t2, v_n" } else { "v_t, v_n" },
+            if spatial {
+                "v_t1, v_t2, v_n"
+            } else {
+                "v_t, v_n"
+            },
             shape_text(w_view.shape()),
             shape_text(v_view.shape())
         )));

@@ -168,7 +168,12 @@ pub struct MechanismImpact {
 
 impl MechanismImpact {
     fn impact(&self) -> PyResult<LibMechanismImpact<'_, BuiltIn>> {
-        lib(LibMechanismImpact::new(&self.mechanism, &self.q, &self.u, 0))
+        lib(LibMechanismImpact::new(
+            &self.mechanism,
+            &self.q,
+            &self.u,
+            0,
+        ))
     }
 
     fn outcome(&self, law: LawId) -> PyResult<Outcome> {
@@ -303,20 +308,23 @@ fn round_state(
     }
     let v0 = positive("speed", speed.unwrap_or(1.0), "must be > 0")?;
     let alpha = alpha.unwrap_or(FRAC_PI_6);
-    if !alpha.is_finite() || alpha <= -std::f64::consts::FRAC_PI_2 || alpha >= std::f64::consts::FRAC_PI_2 {
+    if !alpha.is_finite()
+        || alpha <= -std::f64::consts::FRAC_PI_2
+        || alpha >= std::f64::consts::FRAC_PI_2
+    {
         return Err(value_error(format!(
             "alpha: must be in (-π/2, π/2) for the body to approach the surface, got {alpha}"
         )));
     }
     let gamma = spin_ratio.unwrap_or(0.0);
     let state = lib(bodies::spin_state(v0, alpha, gamma, radius))?;
-    Ok((
-        state,
-        format!("v0 = {v0}, α = {alpha} rad, γ = {gamma}"),
-    ))
+    Ok((state, format!("v0 = {v0}, α = {alpha} rad, γ = {gamma}")))
 }
 
-fn direct_state(velocity: Option<(f64, f64)>, omega: Option<f64>) -> PyResult<(BodyState2, String)> {
+fn direct_state(
+    velocity: Option<(f64, f64)>,
+    omega: Option<f64>,
+) -> PyResult<(BodyState2, String)> {
     let (vx, vy) = velocity.unwrap_or((0.0, 0.0));
     let omega = omega.unwrap_or(0.0);
     for (field, x) in [("velocity", vx), ("velocity", vy), ("omega", omega)] {
@@ -561,7 +569,13 @@ pub fn mechanism(
             let m = values("masses", masses, &[1.0, 1.0])?;
             let l = values("lengths", lengths, &[1.0])?;
             if name == "ring-pendulum" {
-                lib(RingPendulum::new(m[0], radius.unwrap_or(1.0), m[1], l[0], g))?;
+                lib(RingPendulum::new(
+                    m[0],
+                    radius.unwrap_or(1.0),
+                    m[1],
+                    l[0],
+                    g,
+                ))?;
             } else {
                 lib(CartPendulum::new(m[0], m[1], l[0], g))?;
             }
@@ -640,7 +654,20 @@ pub fn compare<'py>(
     let target = match impact {
         Some(obj) => obj.clone(),
         None => {
-            seed = Bound::new(py, sphere(1.0, 1.0, None, None, None, None, None, SEED_FRICTION, SEED_RESTITUTION)?)?;
+            seed = Bound::new(
+                py,
+                sphere(
+                    1.0,
+                    1.0,
+                    None,
+                    None,
+                    None,
+                    None,
+                    None,
+                    SEED_FRICTION,
+                    SEED_RESTITUTION,
+                )?,
+            )?;
             seed.into_any()
         }
     };

@@ -47,7 +47,10 @@ fn _impax(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("STATUSES", batch::STATUSES.to_vec())?;
     m.add("SEQUENCES", batch::SEQUENCES.to_vec())?;
     m.add("SEQUENCES_3D", batch::SEQUENCES_3D.to_vec())?;
-    m.add("MECHANISMS", impax::mechanism::builtin::BuiltIn::NAMES.to_vec())?;
+    m.add(
+        "MECHANISMS",
+        impax::mechanism::builtin::BuiltIn::NAMES.to_vec(),
+    )?;
     m.add_class::<outcome::Outcome>()?;
     m.add_class::<bodies::BodyImpact>()?;
     m.add_class::<bodies::MechanismImpact>()?;

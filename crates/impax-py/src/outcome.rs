@@ -223,6 +223,13 @@ impl Outcome {
                 LawDetail::DarbouxKeller { slip_halt } => {
                     d.set_item("slip_halt", slip_halt.and_then(fin))?;
                 }
+                LawDetail::Lcp {
+                    ratio,
+                    consistent_candidates,
+                } => {
+                    d.set_item("ratio", fin(ratio))?;
+                    d.set_item("consistent_candidates", consistent_candidates)?;
+                }
                 _ => return Ok(None),
             },
             #[allow(unreachable_patterns)]
@@ -231,6 +238,9 @@ impl Outcome {
                 Detail3::Brach { ratio, capped } => {
                     d.set_item("ratio", fin(ratio))?;
                     d.set_item("capped", capped)?;
+                }
+                Detail3::Lcp { solutions } => {
+                    d.set_item("solutions", solutions)?;
                 }
                 Detail3::DarbouxKeller {
                     slip_halt,

@@ -98,7 +98,7 @@ def test_random_spatial_problems_equal_cli(cli):
         ref = cli.json(*resolve_args(w[i], v[i], mu[i], e[i]))
         for r in ref["results"]:
             law = r["law"]
-            r = {k: x for k, x in r.items() if k not in ("hodograph", "invariant_rays")}
+            r = {k: x for k, x in r.items() if k not in ("hodograph", "invariant_rays", "all_solutions")}
             assert_close(impax.resolve(w[i], v[i], mu[i], e[i], law).to_dict(), r, f"row {i} {law}")
             check_batch_row(batches[law], i, r, 3)
 
