@@ -34,6 +34,12 @@ pub enum Command {
     /// Draw a 2-parameter sweep as maps, one panel per law: the energy-gain region (sign of
     /// ΔT), the phase sequence, or any numeric output as a heatmap (PNG or SVG).
     Map(MapArgs),
+    /// Audit an impact as a physics engine computes it: the exact laws beside `lcp` (the rule
+    /// sequential-impulse engines converge to) and `whittaker`, each engine-style rule's
+    /// deviation from `energetic`, and a verdict in words. Built-in scenarios: `sphere`
+    /// (μ = 0.4, e = 0.7), `rod` (50°, v = (0.5, −1), μ = 0.8, e = 1), `double-pendulum`
+    /// (μ = e = 0.5); or a TOML scenario (a body or a mechanism).
+    Audit(AuditArgs),
 }
 
 /// The points of a sweep and the scenario they vary (shared by `sweep` and `map`).
@@ -305,6 +311,27 @@ pub struct SimulateArgs {
     /// Write an animation of the motion to FILE.svg (animated SVG, real time, looping).
     #[arg(long, value_name = "FILE")]
     pub animate: Option<PathBuf>,
+}
+
+#[derive(Debug, Args)]
+pub struct AuditArgs {
+    /// `sphere`, `rod`, `double-pendulum`, or a TOML scenario file (a body, as `impax compare`
+    /// reads it, or a mechanism with a `mechanism` key).
+    pub scenario: String,
+    /// Coulomb friction coefficient μ ≥ 0 (overrides the scenario's).
+    #[arg(long, allow_hyphen_values = true)]
+    pub friction: Option<f64>,
+    /// Coefficient of restitution e ∈ [0, 1] (overrides the scenario's).
+    #[arg(long, allow_hyphen_values = true)]
+    pub restitution: Option<f64>,
+    /// Sphere: the radius.
+    #[arg(long, allow_hyphen_values = true)]
+    pub radius: Option<f64>,
+    #[command(flatten)]
+    pub mechanism: MechanismFlags,
+    /// Print one JSON object instead of the table.
+    #[arg(long)]
+    pub json: bool,
 }
 
 #[derive(Debug, Args)]

@@ -193,7 +193,13 @@ fn state(s: &BodyState3) -> Value {
     })
 }
 
-fn entry(law: LawId, r: &Result<BodyOutcome3, Breakdown>, t0: f64, two: bool) -> Value {
+fn entry(
+    problem: &impax::spatial::ContactProblem3,
+    law: LawId,
+    r: &Result<BodyOutcome3, Breakdown>,
+    t0: f64,
+    two: bool,
+) -> Value {
     match r {
         Ok(b) => {
             let o = &b.outcome;
@@ -220,6 +226,9 @@ fn entry(law: LawId, r: &Result<BodyOutcome3, Breakdown>, t0: f64, two: bool) ->
             });
             if two {
                 e["other_body_velocity_after"] = b.other_after.as_ref().map_or(Value::Null, state);
+            }
+            if law == LawId::Lcp {
+                e["all_solutions"] = crate::resolve::lcp_solutions(problem);
             }
             e
         }
@@ -296,7 +305,7 @@ pub fn run(
             },
             "energy_before": ea.total() + eb.total(),
             "t0": t0,
-            "results": results.iter().map(|(l, r)| entry(*l, r, t0, two)).collect::<Vec<_>>(),
+            "results": results.iter().map(|(l, r)| entry(&problem, *l, r, t0, two)).collect::<Vec<_>>(),
         });
         serde_json::to_string_pretty(&doc).map_err(CliError::failure)? + "\n"
     } else {

@@ -4,10 +4,12 @@
 //! sphere; `--plot` draws Routh's diagram and energy bars), `resolve` (a contact-space problem
 //! directly), `paper` (reproduction reports), `sweep` (parameter sweeps streamed as CSV),
 //! `map` (maps of a 2-parameter sweep as PNG/SVG), `conserved` (conserved quantities of a
-//! mechanism's motion), `simulate` (trajectories with impacts).
+//! mechanism's motion), `simulate` (trajectories with impacts), `audit` (an impact as a
+//! physics engine computes it, against the rigid-body answer).
 //! Bad input of any kind prints one line on stderr and exits with code 2.
 
 mod animation;
+mod audit;
 mod cli;
 mod columns;
 mod compare;
@@ -72,6 +74,7 @@ fn main() -> ExitCode {
         cli::Command::Map(args) => map::run(args, &mut out),
         cli::Command::Conserved(args) => conserved::run(args, &mut out),
         cli::Command::Simulate(args) => simulate::run(args, &mut out),
+        cli::Command::Audit(args) => audit::run(args, &mut out),
     };
     match result {
         Ok(()) => {

@@ -220,7 +220,7 @@ fn spatial_entry(
 
 /// Every solution of the spatial LCP (least kinetic energy after first): `kind` (`stick`
 /// or `slip`), `slip_angle_deg` (slip only), `impulse`, `velocity_after`, `energy_change`.
-fn lcp_solutions(problem: &ContactProblem3) -> Value {
+pub(crate) fn lcp_solutions(problem: &ContactProblem3) -> Value {
     Value::Array(
         impax::spatial::lcp::solutions(problem)
             .iter()

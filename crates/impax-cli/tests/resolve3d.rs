@@ -169,3 +169,60 @@ fn bad_spatial_input_is_one_line_and_exit_2() {
         assert!(err.contains(needle), "`{err}` lacks `{needle}`");
     }
 }
+
+/// The spatial `lcp` lists every solution of the complementarity conditions. This problem
+/// (an anisotropic, coupled W found by a seeded random search, see
+/// crates/impax/tests/lcp_spatial.rs) has three: a stick and two slips; the least-energy one
+/// is the result, flagged `multiple-solutions`. A sphere has one.
+#[test]
+fn lcp_lists_all_solutions() {
+    let doc = json(&[
+        "resolve",
+        "--w",
+        "8.692015037824595,4.6411520047113655,-3.900836733792748,6.574816256667819,0.29757123475977565,4.097896762849426",
+        "--v",
+        "1.46566513942255,1.9939154706775324,-0.19369561711812847",
+        "--friction",
+        "1.9481176108815623",
+        "--restitution",
+        "0.5110468279631739",
+        "--law",
+        "lcp",
+        "--json",
+    ]);
+    let all = doc["all_solutions"].as_array().unwrap();
+    assert_eq!(all.len(), 3);
+    assert_eq!(doc["inconsistency"]["id"], "multiple-solutions");
+    assert_eq!(doc["detail"]["solutions"], 3);
+    assert_eq!(doc["verdict"], "inconsistent-assumption");
+    let kinds: Vec<&str> = all.iter().map(|s| s["kind"].as_str().unwrap()).collect();
+    assert_eq!(kinds, ["stick", "slip", "slip"]);
+    assert!(all[1]["slip_angle_deg"].is_number() && all[0].get("slip_angle_deg").is_none());
+    let energies: Vec<f64> = all
+        .iter()
+        .map(|s| s["energy_change"].as_f64().unwrap())
+        .collect();
+    assert!(energies[0] < energies[1] && energies[1] < energies[2]);
+    assert_eq!(doc["impulse"], all[0]["impulse"]);
+    // Every solution meets Newton's target v_n⁺ = −e v_n⁻.
+    for s in all {
+        let vn = s["velocity_after"]["n"].as_f64().unwrap();
+        assert!((vn - 0.5110468279631739 * 0.19369561711812847).abs() < 1e-14);
+    }
+    let sphere = json(&[
+        "resolve",
+        "--w",
+        "3.5,0,0,3.5,0,1",
+        "--v",
+        "0.5,0.2,-1",
+        "--friction",
+        "0.3",
+        "--restitution",
+        "0.5",
+        "--law",
+        "lcp",
+        "--json",
+    ]);
+    assert_eq!(sphere["all_solutions"].as_array().unwrap().len(), 1);
+    assert!(sphere["inconsistency"].is_null());
+}

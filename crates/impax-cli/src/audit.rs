@@ -1,0 +1,504 @@
+//! `impax audit SCENARIO`: what an engine computes at one impact, and how far it is from the
+//! rigid-body answer.
+//!
+//! The exact Darboux–Keller laws (`newton`, `poisson`, `energetic`) are shown beside the two
+//! engine-style rules: `lcp` (the velocity-level complementarity impact that sequential-impulse
+//! and projected Gauss–Seidel engines converge to, validated against pymunk) and `whittaker`
+//! (Newton's restitution with Coulomb friction on the total impulse, the closed-form rule of
+//! simple engines). Each engine-style rule is compared with `energetic` (Stronge's energetic
+//! restitution, which never creates energy): the differences of the velocities after, of `ΔT`
+//! and of `T⁺/T⁻`, and a verdict in words.
+
+use crate::cli::{AuditArgs, CompareArgs};
+use crate::fmt::{signed, Table};
+use crate::input::{finite_flag, CliError, CliResult};
+use crate::json::{self, num};
+use crate::mechanism::{self, MechanismSpec};
+use impax::mechanism::impact::MechanismImpact;
+use impax::mechanism::Mechanism;
+use impax::planar::{Breakdown, ContactProblem, Outcome, Verdict};
+use impax::LawId;
+use serde_json::{json, Value};
+
+/// The laws of an audit, in presentation order: the exact ones, then the engine-style ones.
+pub const LAWS: [LawId; 5] = [
+    LawId::Newton,
+    LawId::Poisson,
+    LawId::Energetic,
+    LawId::Lcp,
+    LawId::Whittaker,
+];
+/// The engine-style rules audited against [`REFERENCE`].
+pub const ENGINE_RULES: [LawId; 2] = [LawId::Lcp, LawId::Whittaker];
+/// The rigid-body answer the engine-style rules are measured against.
+pub const REFERENCE: LawId = LawId::Energetic;
+
+/// The built-in scenarios and their default coefficients `(μ, e)`: the seed's sphere
+/// (30° from the normal, no spin), the rod (50° to the floor, translating at
+/// (0.5, −1)) and Kane & Levinson's double pendulum.
+const BUILT_INS: [(&str, f64, f64); 3] = [
+    ("sphere", 0.4, 0.7),
+    ("rod", 0.8, 1.0),
+    ("double-pendulum", 0.5, 0.5),
+];
+
+/// One law's result at the level of the bodies.
+struct Row {
+    law: LawId,
+    result: Result<(Outcome, Vec<f64>), Breakdown>,
+}
+
+/// Everything an audit reports, whatever the scenario's kind.
+struct Audit {
+    description: String,
+    /// Names of the velocity components (generalized velocities or body velocities).
+    names: Vec<String>,
+    before: Vec<f64>,
+    energy_before: f64,
+    problem: ContactProblem,
+    rows: Vec<Row>,
+}
+
+pub fn run(args: &AuditArgs, out: &mut Vec<u8>) -> CliResult<()> {
+    let audit = build(args)?;
+    let text = if args.json {
+        serde_json::to_string_pretty(&document(&audit)).map_err(CliError::failure)? + "\n"
+    } else {
+        table(&audit)
+    };
+    out.extend_from_slice(text.as_bytes());
+    Ok(())
+}
+
+fn build(args: &AuditArgs) -> CliResult<Audit> {
+    let source = args.scenario.as_str();
+    if let Some(x) = args.friction {
+        finite_flag("friction", x)?;
+    }
+    if let Some(x) = args.restitution {
+        finite_flag("restitution", x)?;
+    }
+    if let Some(&(name, mu, e)) = BUILT_INS.iter().find(|b| b.0 == source) {
+        let mut flags = mechanism_flags(args);
+        flags.friction = Some(args.friction.unwrap_or(mu));
+        flags.restitution = Some(args.restitution.unwrap_or(e));
+        return mechanism_audit(name, &flags);
+    }
+    if impax::mechanism::builtin::BuiltIn::NAMES.contains(&source) {
+        return Err(CliError::input(format!(
+            "scenario: `{source}` has no impact to audit (built-in scenarios: {}; or a TOML file)",
+            names()
+        )));
+    }
+    let text = std::fs::read_to_string(source).map_err(|e| {
+        CliError::input(format!(
+            "scenario: `{source}` is neither a built-in scenario ({}) nor a readable file: {e}",
+            names()
+        ))
+    })?;
+    if mechanism::is_mechanism_toml(&text) {
+        return mechanism_audit(source, &mechanism_flags(args));
+    }
+    if crate::compare3::is_spatial(&text) {
+        return Err(CliError::input(format!(
+            "{source}: 3D scenarios are not audited yet (use `impax compare {source} --law lcp,energetic`)"
+        )));
+    }
+    let m = &args.mechanism;
+    for (flag, given) in [
+        ("angles-deg", m.angles_deg.is_some()),
+        ("rates", m.rates.is_some()),
+        ("masses", m.masses.is_some()),
+        ("lengths", m.lengths.is_some()),
+        ("gravity", m.gravity.is_some()),
+        ("position", m.position.is_some()),
+        ("radius", args.radius.is_some()),
+    ] {
+        if given {
+            return Err(CliError::input(format!(
+                "--{flag}: only for a built-in scenario or a mechanism file; edit the body scenario file instead"
+            )));
+        }
+    }
+    body_audit(source, args)
+}
+
+fn names() -> String {
+    BUILT_INS.map(|b| b.0).join(", ")
+}
+
+fn mechanism_flags(args: &AuditArgs) -> MechanismSpec {
+    MechanismSpec {
+        mechanism: String::new(),
+        friction: args.friction,
+        restitution: args.restitution,
+        laws: None,
+        masses: args.mechanism.masses.clone(),
+        lengths: args.mechanism.lengths.clone(),
+        radius: args.radius,
+        gravity: args.mechanism.gravity,
+        angles_deg: args.mechanism.angles_deg.clone(),
+        rates: args.mechanism.rates.clone(),
+        position: args.mechanism.position.clone(),
+    }
+}
+
+/// A built-in scenario or a mechanism TOML file, through the mechanism's contact problem.
+fn mechanism_audit(source: &str, flags: &MechanismSpec) -> CliResult<Audit> {
+    let spec = mechanism::load(source, flags)?;
+    // A file's `laws` are for `compare`; an audit always shows its own laws.
+    let case = mechanism::build(&spec)?;
+    if case.mechanism.contacts().is_empty() {
+        return Err(CliError::input(format!(
+            "{}: has no contact point to strike",
+            spec.mechanism
+        )));
+    }
+    let friction = spec.friction.unwrap_or(0.5);
+    let restitution = spec.restitution.unwrap_or(0.5);
+    let impact = MechanismImpact::new(&case.mechanism, &case.q, &case.u, 0)?;
+    let problem = impact.problem(friction, restitution)?;
+    let mut rows = Vec::new();
+    for law in LAWS {
+        let r = impact.resolve(law, friction, restitution)?;
+        rows.push(Row {
+            law,
+            result: r
+                .resolution
+                .map(|o| (o, r.velocities_after.expect("applied to the mechanism"))),
+        });
+    }
+    Ok(Audit {
+        description: format!("{}; μ = {friction}, e = {restitution}", case.description),
+        names: case
+            .mechanism
+            .coordinates()
+            .iter()
+            .map(|c| format!("{c}'"))
+            .collect(),
+        before: case.u.clone(),
+        energy_before: impact.energy_before(),
+        problem,
+        rows,
+    })
+}
+
+/// A body scenario file (`impax compare`'s format, planar).
+fn body_audit(source: &str, args: &AuditArgs) -> CliResult<Audit> {
+    let compare = CompareArgs {
+        scenario: Some(source.into()),
+        alpha_deg: None,
+        restitution: args.restitution,
+        friction: args.friction,
+        spin_ratio: None,
+        mass: None,
+        radius: None,
+        speed: None,
+        law: Vec::new(),
+        mechanism: Default::default(),
+        json: args.json,
+        plot: None,
+    };
+    let sc = crate::scenario::load(&compare)?;
+    let problem = sc.impact.problem(sc.friction, sc.restitution)?;
+    let state = |s: &impax::bodies::BodyState2| vec![s.velocity.x, s.velocity.y, s.omega];
+    let mut names: Vec<String> = ["vx", "vy", "omega"].map(String::from).to_vec();
+    let mut before = state(&sc.impact.body.1);
+    if let Some(o) = &sc.impact.other {
+        names.extend(["other.vx", "other.vy", "other.omega"].map(String::from));
+        before.extend(state(&o.1));
+    }
+    let rows = LAWS
+        .iter()
+        .map(|&law| Row {
+            law,
+            result: sc.impact.resolve(law, &problem).map(|b| {
+                let mut v = state(&b.body_after);
+                if let Some(o) = &b.other_after {
+                    v.extend(state(o));
+                }
+                (b.outcome, v)
+            }),
+        })
+        .collect();
+    Ok(Audit {
+        description: format!(
+            "{}; μ = {}, e = {}",
+            sc.description, sc.friction, sc.restitution
+        ),
+        names,
+        before,
+        energy_before: sc.impact.energy_before().total(),
+        problem,
+        rows,
+    })
+}
+
+/// The role of a law in the audit.
+fn role(law: LawId) -> &'static str {
+    if ENGINE_RULES.contains(&law) {
+        "engine"
+    } else {
+        "exact"
+    }
+}
+
+/// The comparison of one engine-style rule with the reference.
+struct Judgement {
+    law: LawId,
+    /// `u_rule − u_reference`, per velocity component (None on a breakdown).
+    velocity_differences: Option<Vec<f64>>,
+    energy_change_difference: Option<f64>,
+    ratio: Option<f64>,
+    reference_ratio: Option<f64>,
+    id: &'static str,
+    text: String,
+}
+
+fn percent(x: f64) -> String {
+    format!("{:.1} %", 100.0 * x)
+}
+
+/// The verdict of one engine-style rule against the reference, in words.
+fn judge(audit: &Audit, law: LawId) -> Judgement {
+    let find = |l: LawId| audit.rows.iter().find(|r| r.law == l).expect("audited law");
+    let rule = find(law);
+    let reference = find(REFERENCE);
+    let t0 = audit.energy_before;
+    let name = match law {
+        LawId::Lcp => "an engine of this kind (sequential impulses / projected Gauss–Seidel: Box2D, Chipmunk, Bullet)",
+        _ => "an engine of this kind (restitution and Coulomb friction on the total impulse)",
+    };
+    let (o, u) = match &rule.result {
+        Ok(x) => x,
+        Err(b) => {
+            return Judgement {
+                law,
+                velocity_differences: None,
+                energy_change_difference: None,
+                ratio: None,
+                reference_ratio: None,
+                id: "breakdown",
+                text: format!("{name} has no answer here: {}", b.reason),
+            }
+        }
+    };
+    let ratio = (t0 + o.energy_change) / t0;
+    let Ok((r, ur)) = &reference.result else {
+        return Judgement {
+            law,
+            velocity_differences: None,
+            energy_change_difference: None,
+            ratio: Some(ratio),
+            reference_ratio: None,
+            id: "no-reference",
+            text: format!("{name}: the reference law `{REFERENCE}` has no answer here"),
+        };
+    };
+    let ref_ratio = (t0 + r.energy_change) / t0;
+    let diffs: Vec<f64> = u.iter().zip(ur).map(|(a, b)| a - b).collect();
+    let scale = audit
+        .before
+        .iter()
+        .chain(ur.iter())
+        .fold(0.0f64, |m, x| m.max(x.abs()))
+        .max(f64::MIN_POSITIVE);
+    let largest = diffs.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    let reference_words = if ref_ratio <= 1.0 {
+        format!(
+            "the rigid-body answer (`energetic`) dissipates {}",
+            percent(1.0 - ref_ratio)
+        )
+    } else {
+        format!(
+            "the rigid-body answer (`energetic`) returns {}",
+            percent(ref_ratio - 1.0)
+        )
+    };
+    let (id, text) = if o.verdict == Verdict::EnergyGained {
+        (
+            "gains-energy",
+            format!(
+                "{name} returns {} more energy than the bodies brought into this impact (T⁺/T⁻ = {ratio:.4}): energy from nowhere, where {reference_words} (T⁺/T⁻ = {ref_ratio:.4})",
+                percent(ratio - 1.0)
+            ),
+        )
+    } else if largest <= 1e-9 * scale {
+        (
+            "matches",
+            format!(
+                "{name} gets this impact right: it matches the rigid-body answer (`energetic`) to {:.1e} (T⁺/T⁻ = {ratio:.4})",
+                largest / scale
+            ),
+        )
+    } else if ratio < ref_ratio {
+        (
+            "dissipates-more",
+            format!(
+                "{name} dissipates {} of the kinetic energy here, {} of T⁻ more than it should: {reference_words}",
+                percent(1.0 - ratio),
+                percent(ref_ratio - ratio)
+            ),
+        )
+    } else {
+        (
+            "dissipates-less",
+            format!(
+                "{name} dissipates {} of the kinetic energy here, {} of T⁻ less than it should: {reference_words}",
+                percent(1.0 - ratio),
+                percent(ratio - ref_ratio)
+            ),
+        )
+    };
+    let text = if id == "matches" {
+        text
+    } else {
+        format!(
+            "{text}; its velocities after differ from the rigid-body answer by up to {:.4}",
+            largest
+        )
+    };
+    Judgement {
+        law,
+        velocity_differences: Some(diffs),
+        energy_change_difference: Some(o.energy_change - r.energy_change),
+        ratio: Some(ratio),
+        reference_ratio: Some(ref_ratio),
+        id,
+        text,
+    }
+}
+
+fn document(audit: &Audit) -> Value {
+    let t0 = audit.energy_before;
+    let results: Vec<Value> = audit
+        .rows
+        .iter()
+        .map(|row| {
+            let mut m = match &row.result {
+                Ok((o, u)) => {
+                    let mut m = json::outcome_fields(o, "contact_velocity_after");
+                    m.insert(
+                        "velocities_after".into(),
+                        json!(u.iter().map(|&x| num(x)).collect::<Vec<_>>()),
+                    );
+                    m.insert("energy_after".into(), num(t0 + o.energy_change));
+                    m.insert("energy_ratio".into(), num((t0 + o.energy_change) / t0));
+                    m
+                }
+                Err(b) => {
+                    let mut m = json::breakdown_fields(b, "contact_velocity_after", false);
+                    for k in ["velocities_after", "energy_after", "energy_ratio"] {
+                        m.insert(k.into(), Value::Null);
+                    }
+                    m
+                }
+            };
+            m.insert("role".into(), json!(role(row.law)));
+            Value::Object(m)
+        })
+        .collect();
+    let engine: Vec<Value> = ENGINE_RULES
+        .iter()
+        .map(|&law| {
+            let j = judge(audit, law);
+            json!({
+                "law": j.law.as_str(),
+                "reference": REFERENCE.as_str(),
+                "velocities_after_difference": j.velocity_differences.as_ref().map(|d| d.iter().map(|&x| num(x)).collect::<Vec<_>>()),
+                "largest_velocity_difference": j.velocity_differences.as_ref().map(|d| num(d.iter().fold(0.0f64, |m, x| m.max(x.abs())))),
+                "energy_change_difference": j.energy_change_difference.map(num),
+                "energy_ratio": j.ratio.map(num),
+                "reference_energy_ratio": j.reference_ratio.map(num),
+                "verdict": { "id": j.id, "text": j.text },
+            })
+        })
+        .collect();
+    json!({
+        "scenario": audit.description,
+        "velocity_names": audit.names,
+        "velocities_before": audit.before,
+        "problem": json::problem(&audit.problem),
+        "energy_before": num(t0),
+        "reference": REFERENCE.as_str(),
+        "results": results,
+        "engine_rules": engine,
+    })
+}
+
+fn table(audit: &Audit) -> String {
+    let t0 = audit.energy_before;
+    let mut columns: Vec<(String, bool)> = vec![("law".into(), false), ("role".into(), false)];
+    for n in &audit.names {
+        columns.push((format!("{n}+"), true));
+    }
+    columns.extend([
+        ("ΔT".into(), true),
+        ("T+/T-".into(), true),
+        ("phases".into(), false),
+        ("verdict".into(), false),
+    ]);
+    let cols: Vec<(&str, bool)> = columns.iter().map(|(s, r)| (s.as_str(), *r)).collect();
+    let mut t = Table::new(&cols);
+    for row in &audit.rows {
+        let mut cells = vec![row.law.to_string(), role(row.law).to_string()];
+        match &row.result {
+            Ok((o, u)) => {
+                cells.extend(u.iter().map(|&x| signed(x, 5)));
+                cells.push(signed(o.energy_change, 5));
+                cells.push(format!("{:.4}", (t0 + o.energy_change) / t0));
+                cells.push(o.phases.summary());
+                cells.push(o.verdict.id().to_string());
+            }
+            Err(_) => {
+                cells.extend(std::iter::repeat_n("—".to_string(), audit.names.len() + 3));
+                cells.push("breakdown".into());
+            }
+        }
+        t.row(cells);
+    }
+    let p = &audit.problem;
+    let v = p.velocity();
+    let mut s = format!(
+        "impax audit — {}\ncontact space: W = [[{:.6}, {:.6}], [{:.6}, {:.6}]], v⁻ = ({:.6}, {:.6}); T⁻ = {:.6}\n\n",
+        audit.description,
+        p.wtt(),
+        p.wtn(),
+        p.wtn(),
+        p.wnn(),
+        v.x,
+        v.y,
+        t0
+    );
+    s.push_str(&t.render());
+    s.push_str("\nexact: the Darboux–Keller integration (energetic: the rigid-body answer); engine: lcp = what sequential-impulse / PGS engines converge to (checked against pymunk), whittaker = restitution + Coulomb on the total impulse\n\n");
+    let mut d = Table::new(&[
+        ("engine rule − energetic", false),
+        ("largest |Δu|", true),
+        ("Δ(ΔT)", true),
+        ("Δ(T+/T-)", true),
+    ]);
+    let judgements: Vec<Judgement> = ENGINE_RULES.iter().map(|&l| judge(audit, l)).collect();
+    for j in &judgements {
+        match (
+            &j.velocity_differences,
+            j.energy_change_difference,
+            j.ratio,
+            j.reference_ratio,
+        ) {
+            (Some(dv), Some(de), Some(r), Some(rr)) => d.row(vec![
+                j.law.to_string(),
+                format!("{:.5}", dv.iter().fold(0.0f64, |m, x| m.max(x.abs()))),
+                signed(de, 5),
+                signed(r - rr, 5),
+            ]),
+            _ => d.row(vec![j.law.to_string(), "—".into(), "—".into(), "—".into()]),
+        }
+    }
+    s.push_str(&d.render());
+    s.push('\n');
+    for j in &judgements {
+        s.push_str(&format!("verdict — {}: {}\n", j.law, j.text));
+    }
+    s
+}
