@@ -108,7 +108,19 @@ function buildSliders() {
     const wrap = document.createElement("div");
     wrap.className = "slider";
     const id = SLIDER_IDS[p.key] || `p-${p.key}`;
-    wrap.innerHTML = `<div class="head"><label for="${id}">${p.label} <span class="unit">${p.unit}</span></label><output id="${id}-value"></output></div>`;
+    wrap.innerHTML = `<div class="head"><label for="${id}">${p.label} <span class="unit">${p.unit}</span></label></div>`;
+    // The exact value, typed (it may leave the slider's range: the core then says what is wrong).
+    const typed = document.createElement("input");
+    Object.assign(typed, { type: "number", id: `${id}-value`, step: "any", className: "typed" });
+    typed.setAttribute("aria-label", `${p.label}, exact value`);
+    typed.addEventListener("change", () => {
+      const x = Number(typed.value);
+      if (typed.value.trim() === "" || !Number.isFinite(x)) { showValue(p.key); return; }
+      state.values[p.key] = x;
+      $(id).value = x;
+      update();
+    });
+    wrap.firstChild.appendChild(typed);
     const input = document.createElement("input");
     Object.assign(input, { type: "range", id, min: p.min, max: p.max, step: p.step });
     input.value = state.values[p.key];
@@ -127,7 +139,7 @@ function buildSliders() {
 function showValue(key) {
   const id = SLIDER_IDS[key] || `p-${key}`;
   const out = $(`${id}-value`);
-  if (out) out.textContent = String(state.values[key]);
+  if (out) out.value = String(state.values[key]);
 }
 
 function setParameter(key, value) {

@@ -166,6 +166,25 @@ test("the table follows a slider while it is dragged", async () => {
   assert.equal(await cell("whittaker", "dT"), "+0.24240");
 });
 
+test("a value typed beside a slider is used exactly, and an impossible one is a clear error", async () => {
+  await page.fill("#gamma-value", "0.2058");
+  await page.press("#gamma-value", "Enter");
+  await page.waitForFunction(() => document.getElementById("gamma-value").value === "0.2058");
+  const json = impax("compare", "--json", "--spin-ratio", "0.2058");
+  await checkTable(json, bodyColumns);
+  await page.fill("#e-value", "1.5");
+  await page.press("#e-value", "Enter");
+  const message = await page.$eval("#error", (e) => (e.hidden ? "" : e.textContent));
+  assert.match(message, /^restitution: 1\.5 is out of range/);
+  assert.ok(!(await page.content()).includes("NaN"));
+  for (const [id, v] of [["e-value", "0.7"], ["gamma-value", "0"]]) {
+    await page.fill(`#${id}`, v);
+    await page.press(`#${id}`, "Enter");
+  }
+  assert.equal(await page.$eval("#error", (e) => e.hidden), true);
+  assert.equal(await cell("whittaker", "dT"), "+0.24240");
+});
+
 test("the energy-gain map is computed in the page and matches paper A eq. 13", async () => {
   await page.selectOption("#law", "whittaker");
   await page.waitForFunction(() => document.getElementById("map").dataset.cells === "40000");
