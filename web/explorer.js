@@ -340,6 +340,8 @@ function drawBars() {
   const { ctx, w } = context(canvas, (rows.length * rowH + 84) / width);
   const values = rows.filter((x) => x.energy).map((x) => x.energy_change_ratio);
   let lo = Math.min(0, ...values), hi = Math.max(0, ...values);
+  // Room on both sides of the zero line, for the labels and for the eye.
+  lo = Math.min(lo, -0.45 * hi); hi = Math.max(hi, -0.45 * lo);
   const span = Math.max(hi - lo, 1e-9);
   lo -= 0.04 * span; hi += 0.04 * span;
   const box = { x0: 112, y0: 10, w: w - 112 - 110, h: rows.length * rowH };
