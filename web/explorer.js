@@ -88,7 +88,7 @@ const state = {
   compare: null,
   map: null,
   mapKey: "",
-  mapPending: false,
+  mapTimer: 0,
   timings: [],
 };
 window.explorer = state;
@@ -534,11 +534,13 @@ function mapKey(req) {
   return JSON.stringify(copy);
 }
 
+// Recompute the map after the current event; a slow map (the double pendulum's) waits until
+// the slider rests for 150 ms, so that the table keeps following the drag.
 function scheduleMap(force) {
   if (force) state.mapKey = "";
-  if (state.mapPending) return;
-  state.mapPending = true;
-  setTimeout(() => { state.mapPending = false; computeMap(); }, 0);
+  clearTimeout(state.mapTimer);
+  const slow = state.map && state.map.ms > 40;
+  state.mapTimer = setTimeout(computeMap, slow ? 150 : 0);
 }
 
 function computeMap() {
