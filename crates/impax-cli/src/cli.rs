@@ -40,6 +40,19 @@ pub enum Command {
     /// (μ = 0.4, e = 0.7), `rod` (50°, v = (0.5, −1), μ = 0.8, e = 1), `double-pendulum`
     /// (μ = e = 0.5); or a TOML scenario (a body or a mechanism).
     Audit(AuditArgs),
+    /// The interactive explorer in the browser: serve the page (the impax core compiled to
+    /// WebAssembly) on 127.0.0.1 and print its URL, or write its static files with --out.
+    Explore(ExploreArgs),
+}
+
+#[derive(Debug, Args)]
+pub struct ExploreArgs {
+    /// TCP port on 127.0.0.1 (0: any free port).
+    #[arg(long, default_value_t = 8717)]
+    pub port: u16,
+    /// Write the page's static files to DIR (created if needed) instead of serving them.
+    #[arg(long, value_name = "DIR")]
+    pub out: Option<PathBuf>,
 }
 
 /// The points of a sweep and the scenario they vary (shared by `sweep` and `map`).

@@ -5,7 +5,8 @@
 //! directly), `paper` (reproduction reports), `sweep` (parameter sweeps streamed as CSV),
 //! `map` (maps of a 2-parameter sweep as PNG/SVG), `conserved` (conserved quantities of a
 //! mechanism's motion), `simulate` (trajectories with impacts), `audit` (an impact as a
-//! physics engine computes it, against the rigid-body answer).
+//! physics engine computes it, against the rigid-body answer), `explore` (the interactive
+//! page in the browser).
 //! Bad input of any kind prints one line on stderr and exits with code 2.
 
 mod animation;
@@ -17,6 +18,7 @@ mod compare3;
 mod compare_mech;
 mod conserved;
 mod evaluate;
+mod explore;
 mod fmt;
 mod input;
 mod json;
@@ -72,6 +74,7 @@ fn main() -> ExitCode {
         cli::Command::Paper(args) => paper::run(args, &mut out),
         cli::Command::Sweep(args) => sweep::run(args),
         cli::Command::Map(args) => map::run(args, &mut out),
+        cli::Command::Explore(args) => explore::run(args, &mut out),
         cli::Command::Conserved(args) => conserved::run(args, &mut out),
         cli::Command::Simulate(args) => simulate::run(args, &mut out),
         cli::Command::Audit(args) => audit::run(args, &mut out),

@@ -20,8 +20,8 @@
 use crate::input::{CliError, CliResult};
 use crate::scenario::{build_body, parse_file, parse_laws, BodySpec};
 use impax::bodies::{self, BodyState2, PlanarImpact, RigidBody2, Side};
-use impax::math::{Mat2, Vec2};
-use impax::planar::ContactProblem;
+use impax::math::Vec2;
+use impax::planar::{ContactProblem, InverseInertia};
 use impax::LawId;
 use std::path::Path;
 
@@ -376,7 +376,7 @@ impl BodyParams {
 struct Built {
     body: RigidBody2,
     other: Option<RigidBody2>,
-    w: Mat2,
+    w: InverseInertia,
 }
 
 /// A scenario whose numeric fields can be set by name.
@@ -525,6 +525,7 @@ impl Template {
             if let Some(o) = &other {
                 w += o.inverse_inertia();
             }
+            let w = InverseInertia::new(w)?;
             self.built = Some(Built { body, other, w });
         }
         let Some(built) = self.built.as_ref() else {
@@ -535,8 +536,8 @@ impl Template {
             // One body and no impact kept: the same numbers as `PlanarImpact`'s
             // `contact_velocity` and `energy_before`, without building it.
             let body = &built.body;
-            let problem = ContactProblem::new(
-                built.w,
+            let problem = ContactProblem::with_inertia(
+                &built.w,
                 body.contact_velocity(&state),
                 self.friction,
                 self.restitution,
@@ -557,8 +558,8 @@ impl Template {
             }
             _ => PlanarImpact::on_fixed_surface(built.body, state),
         };
-        let problem = ContactProblem::new(
-            built.w,
+        let problem = ContactProblem::with_inertia(
+            &built.w,
             impact.contact_velocity(),
             self.friction,
             self.restitution,

@@ -8,7 +8,7 @@
 use super::energy::{self, EnergyRow};
 use super::map::tick;
 use super::{colour, err, text, DrawResult, Figure};
-use impax::planar::{ContactProblem, Outcome, PhaseKind};
+use impax::planar::{ContactProblem, Outcome};
 use impax::LawId;
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -22,21 +22,9 @@ pub struct LawPath {
 }
 
 impl LawPath {
-    /// The path of an outcome: straight along the first phase's friction ratio up to its
-    /// end, then straight to the final impulse (every planar law's path has at most two
-    /// straight pieces).
+    /// The path of an outcome ([`Outcome::impulse_path`], shared with the explorer page).
     pub fn of(problem: &ContactProblem, o: &Outcome) -> Self {
-        let mut points = vec![(0.0, 0.0)];
-        let phases = o.phases.as_slice();
-        if phases.len() >= 2 {
-            let p1 = phases[0].ends_at;
-            let ratio = match phases[0].kind {
-                PhaseKind::Slip(dir) => -problem.friction() * dir.sign(),
-                PhaseKind::Stick => -problem.wtn() / problem.wtt(),
-            };
-            points.push((ratio * p1, p1));
-        }
-        points.push((o.impulse.x, o.impulse.y));
+        let points = o.impulse_path(problem).iter().map(|v| (v.x, v.y)).collect();
         Self { law: o.law, points }
     }
 }

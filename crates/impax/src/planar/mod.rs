@@ -11,4 +11,4 @@ pub use outcome::{
     Breakdown, BreakdownReason, Inconsistency, LawDetail, Outcome, Phase, PhaseKind, Phases,
     Resolution, SlipDirection, SmithReading, Verdict, WorkSplit,
 };
-pub use problem::ContactProblem;
+pub use problem::{ContactProblem, InverseInertia};

@@ -315,6 +315,50 @@ pub struct Outcome {
     pub detail: LawDetail,
 }
 
+impl Outcome {
+    /// The vertices of the law's impulse path in Routh's `(p_t, p_n)` plane, from the origin
+    /// to [`Outcome::impulse`] (Routh 1905; Stronge 2000, ch. 5).
+    ///
+    /// Every planar law moves the impulse along straight pieces, one per phase: each phase
+    /// but the last is followed along its friction ratio `dp_t/dp_n` (`−μ ŝ` in slip,
+    /// `−W_tn/W_tt` in stick, `0` without slip) up to its end; the last piece runs straight to
+    /// the final impulse (which also covers the algebraic laws' single line, whatever its
+    /// ratio, e.g. Smith's `−μ η`). `problem` must be the problem the outcome was resolved
+    /// from.
+    ///
+    /// ```
+    /// use impax::{LawId, planar::ContactProblem};
+    /// let a = 30f64.to_radians();
+    /// let p = ContactProblem::from_entries(3.5, 0.0, 1.0, a.sin(), -a.cos(), 0.4, 0.7).unwrap();
+    /// let o = LawId::Energetic.resolve(&p).unwrap();
+    /// let path = o.impulse_path(&p);
+    /// let path_halt = |v: &[impax::math::Vec2]| v[1].y;
+    /// // Slip halts at p_n = v_t⁻/(μ W_tt) = 0.3571, then stick to the end: three vertices.
+    /// assert!((path_halt(&path) - 0.5 / 1.4).abs() < 1e-12);
+    /// assert_eq!(path.len(), 3);
+    /// assert_eq!(path[0].x, 0.0);
+    /// assert!((path[1].x + 0.4 * path[1].y).abs() < 1e-15); // slip: p_t = −μ p_n
+    /// assert_eq!(path[2], o.impulse);
+    /// ```
+    pub fn impulse_path(&self, problem: &super::ContactProblem) -> Vec<Vec2> {
+        let mut points = Vec::with_capacity(Phases::CAPACITY + 1);
+        points.push(Vec2::new(0.0, 0.0));
+        let phases = self.phases.as_slice();
+        let mut at = Vec2::new(0.0, 0.0);
+        for phase in phases.iter().take(phases.len().saturating_sub(1)) {
+            let ratio = match phase.kind {
+                PhaseKind::Slip(dir) => -problem.friction() * dir.sign(),
+                PhaseKind::Stick => -problem.wtn() / problem.wtt(),
+            };
+            let dp = phase.ends_at - at.y;
+            at = Vec2::new(at.x + ratio * dp, phase.ends_at);
+            points.push(at);
+        }
+        points.push(self.impulse);
+        points
+    }
+}
+
 /// Why a law produced no admissible result.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum BreakdownReason {

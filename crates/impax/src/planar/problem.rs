@@ -37,13 +37,32 @@ pub struct ContactProblem {
 /// Relative tolerance on the asymmetry of `W` accepted as round-off.
 const SYMMETRY_TOL: f64 = 1e-12;
 
-impl ContactProblem {
-    /// Validate and build a problem.
-    ///
-    /// Errors (each names its field): a non-finite entry; `W` not symmetric (beyond round-off)
-    /// or not positive definite; `v_n ≥ 0`; `μ < 0`; `e ∉ [0, 1]`; a velocity so large
-    /// for `W` that the approach energy `½ v⁻ᵀ W⁻¹ v⁻` overflows.
-    pub fn new(w: Mat2, v: Vec2, friction: f64, restitution: f64) -> Result<Self> {
+/// A validated contact-space inverse inertia `W = J M⁻¹ Jᵀ` (symmetric positive definite):
+/// the part of a [`ContactProblem`] fixed by the bodies and the contact, checked once.
+///
+/// A sweep that varies only the velocities and coefficients builds this once and then each
+/// point with [`ContactProblem::with_inertia`], which checks only what changes.
+///
+/// ```
+/// use impax::planar::{ContactProblem, InverseInertia};
+/// use impax::math::{Mat2, Vec2};
+/// let w = InverseInertia::new(Mat2::new(3.5, 0.0, 0.0, 1.0)).unwrap();
+/// let p = ContactProblem::with_inertia(&w, Vec2::new(0.5, -0.8), 0.4, 0.7).unwrap();
+/// assert_eq!(p, ContactProblem::new(w.matrix(), Vec2::new(0.5, -0.8), 0.4, 0.7).unwrap());
+/// assert!(InverseInertia::new(Mat2::new(1.0, 2.0, 2.0, 1.0)).is_err()); // det < 0
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct InverseInertia {
+    a: f64,
+    b: f64,
+    c: f64,
+}
+
+impl InverseInertia {
+    /// Validate `W`. Errors (each names the field `w`): a non-finite entry; `W` not symmetric
+    /// beyond round-off (relative 1e-12; the mean of the two off-diagonal entries is kept);
+    /// `W_tt ≤ 0`, `W_nn ≤ 0` or `det W ≤ 1e-14 W_tt W_nn` (not positive definite).
+    pub fn new(w: Mat2) -> Result<Self> {
         for (i, j, name) in [
             (0, 0, "w[t,t]"),
             (0, 1, "w[t,n]"),
@@ -52,10 +71,6 @@ impl ContactProblem {
         ] {
             finite(name, w[(i, j)])?;
         }
-        finite("v[t]", v.x)?;
-        finite("v[n]", v.y)?;
-        finite("friction", friction)?;
-        finite("restitution", restitution)?;
         let (a, c) = (w[(0, 0)], w[(1, 1)]);
         let (upper, lower) = (w[(0, 1)], w[(1, 0)]);
         let scale = a.abs().max(c.abs()).max(upper.abs()).max(f64::MIN_POSITIVE);
@@ -86,26 +101,86 @@ impl ContactProblem {
                 reason: format!("det W = {det} is not positive (W_tt W_nn − W_tn² must be > 0)"),
             });
         }
-        if v.y >= 0.0 {
-            return Err(Error::NotApproaching {
-                field: "v".into(),
-                value: v.y,
-            });
-        }
-        crate::error::coefficients(friction, restitution)?;
+        Ok(Self { a, b, c })
+    }
+
+    /// The matrix `[[W_tt, W_tn], [W_tn, W_nn]]`.
+    pub fn matrix(&self) -> Mat2 {
+        Mat2::new(self.a, self.b, self.b, self.c)
+    }
+}
+
+impl ContactProblem {
+    /// Validate and build a problem.
+    ///
+    /// Errors (each names its field): a non-finite entry; `W` not symmetric (beyond round-off)
+    /// or not positive definite (see [`InverseInertia::new`]); `v_n ≥ 0`; `μ < 0`;
+    /// `e ∉ [0, 1]`; a velocity so large for `W` that the approach energy `½ v⁻ᵀ W⁻¹ v⁻`
+    /// overflows.
+    pub fn new(w: Mat2, v: Vec2, friction: f64, restitution: f64) -> Result<Self> {
+        Self::with_inertia(&InverseInertia::new(w)?, v, friction, restitution)
+    }
+
+    /// Build a problem on an already validated `W`: checks only the velocity (finite,
+    /// approaching: `v_n < 0`, approach energy representable) and the coefficients
+    /// (finite, `μ ≥ 0`, `0 ≤ e ≤ 1`). The result equals [`ContactProblem::new`]'s bit for
+    /// bit; this is the per-point path of sweeps (no allocation unless the point is invalid).
+    #[inline]
+    pub fn with_inertia(
+        w: &InverseInertia,
+        v: Vec2,
+        friction: f64,
+        restitution: f64,
+    ) -> Result<Self> {
         let problem = Self {
-            a,
-            b,
-            c,
+            a: w.a,
+            b: w.b,
+            c: w.c,
             v,
             mu: friction,
             e: restitution,
         };
         // Every impulse and work of an impact is bounded by the approach energy scale; if
-        // that overflows the numbers cannot be represented.
+        // that overflows the numbers cannot be represented. One branch on the common path:
+        // a finite energy with finite inputs, approach, and coefficients in range.
         let energy = problem.approach_energy();
-        crate::error::representable_energy(energy, v.norm())?;
-        Ok(problem)
+        let ok = energy.is_finite()
+            && v.x.is_finite()
+            && v.y < 0.0
+            && friction >= 0.0
+            && friction.is_finite()
+            && (0.0..=1.0).contains(&restitution);
+        if ok {
+            Ok(problem)
+        } else {
+            Err(Self::velocity_error(v, friction, restitution, energy))
+        }
+    }
+
+    /// The error of [`ContactProblem::with_inertia`], in the order of the checks of
+    /// [`ContactProblem::new`] (kept off the common path).
+    #[cold]
+    #[inline(never)]
+    fn velocity_error(v: Vec2, friction: f64, restitution: f64, energy: f64) -> Error {
+        let check = || -> Result<()> {
+            finite("v[t]", v.x)?;
+            finite("v[n]", v.y)?;
+            finite("friction", friction)?;
+            finite("restitution", restitution)?;
+            if v.y >= 0.0 {
+                return Err(Error::NotApproaching {
+                    field: "v".into(),
+                    value: v.y,
+                });
+            }
+            crate::error::coefficients(friction, restitution)?;
+            crate::error::representable_energy(energy, v.norm())
+        };
+        // Every way `with_inertia`'s test can fail is one of the checks above.
+        check().err().unwrap_or(Error::NotFinite {
+            field: "v".into(),
+            value: energy,
+        })
     }
 
     /// Build from the three independent entries `(W_tt, W_tn, W_nn)` and `(v_t, v_n)`.
@@ -199,6 +274,16 @@ impl ContactProblem {
     /// The same problem with another friction coefficient and restitution (unchecked
     /// ranges are re-validated).
     pub fn with_coefficients(&self, friction: f64, restitution: f64) -> Result<Self> {
-        Self::new(self.w(), self.v, friction, restitution)
+        Self::with_inertia(&self.inverse_inertia(), self.v, friction, restitution)
+    }
+
+    /// The validated `W` of this problem.
+    #[inline]
+    pub fn inverse_inertia(&self) -> InverseInertia {
+        InverseInertia {
+            a: self.a,
+            b: self.b,
+            c: self.c,
+        }
     }
 }

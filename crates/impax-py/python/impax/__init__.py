@@ -1,0 +1,73 @@
+"""impax — rigid-body impact with friction, on numpy arrays.
+
+Every classical frictional impact law side by side — ``whittaker`` (Newton restitution with
+Coulomb friction on the total impulses, paper A eq. 7), ``two-phase`` (paper A §3), ``smith``
+(Smith 1991), ``brach`` (Brach 1989) and the exact Darboux–Keller integration in normal
+impulse terminated by ``newton``, ``poisson`` or ``energetic`` (Stronge) restitution — with
+the energy audit of each and a verdict (energy gained: Kane's paradox).
+
+Contact space (theory §1): ``W = J M⁻¹ Jᵀ`` (2×2 planar, 3×3 spatial), tangent(s) first and
+normal last; approach means ``v_n < 0``; the impulse ``p`` acts on the moving body and
+``v(p) = v⁻ + W p``; ``ΔT = v⁻·p + ½ pᵀ W p``.
+
+* :func:`resolve` — one problem, an :class:`Outcome`;
+* :func:`resolve_batch` — many problems on numpy arrays, in parallel with the GIL released;
+* :func:`sphere`, :func:`disc`, :func:`rod`, :func:`ellipse`, :func:`rigid_body`,
+  :func:`double_pendulum`, :func:`mechanism` — bodies and mechanisms producing problems;
+* :func:`compare` — every law side by side, as ``impax compare --json``;
+* :mod:`impax.study` — parameter spaces (grids, random samples) of built-in scenarios, run
+  in chunks, reduced;
+* :mod:`impax.dask` — the same sweeps on a Dask cluster (needs ``dask[distributed]``).
+
+Errors are ``ValueError`` with the command line's message (a batch names the row).
+"""
+
+from ._impax import (
+    CONTACT_SPACE_LAWS,
+    LAWS,
+    MECHANISMS,
+    SEQUENCES,
+    SEQUENCES_3D,
+    SPATIAL_LAWS,
+    STATUSES,
+    BodyImpact,
+    MechanismImpact,
+    Outcome,
+    __version__,
+    compare,
+    disc,
+    double_pendulum,
+    ellipse,
+    mechanism,
+    resolve,
+    resolve_batch,
+    rigid_body,
+    rod,
+    sphere,
+)
+from . import study
+
+__all__ = [
+    "CONTACT_SPACE_LAWS",
+    "LAWS",
+    "MECHANISMS",
+    "SEQUENCES",
+    "SEQUENCES_3D",
+    "SPATIAL_LAWS",
+    "STATUSES",
+    "BodyImpact",
+    "MechanismImpact",
+    "Outcome",
+    "__version__",
+    "compare",
+    "disc",
+    "double_pendulum",
+    "ellipse",
+    "mechanism",
+    "resolve",
+    "resolve_batch",
+    "rigid_body",
+    "rod",
+    "sphere",
+    "study",
+]

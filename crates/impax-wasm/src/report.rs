@@ -1,0 +1,408 @@
+//! The answer to a compare request: every law's result, Routh's diagram, the energy bars and
+//! the animation frames, as JSON for the page.
+//!
+//! ```text
+//! {
+//!   "kind": "body" | "mechanism",
+//!   "scenario": one line,
+//!   "problem": {"w": [[W_tt, W_tn], [W_tn, W_nn]], "v": {"t", "n"}, "friction", "restitution"},
+//!   "energy_before", "t0",
+//!   "columns": [{"key", "label"}],       // the table's numeric columns, in order
+//!   "results": [{
+//!     "law", "verdict" (consistent | energy-gained | inconsistent-assumption | breakdown),
+//!     "inconsistency": null | {"id", "message"}, "breakdown": null | {"id", "message"},
+//!     "values": [one number per column] | null,
+//!     "impulse": {"t", "n"}, "contact_velocity_after": {"t", "n"},
+//!     "body_velocity_after": {"vx", "vy", "omega"}      (body)
+//!     "velocities_after": [θ̇₁, θ̇₂]                       (mechanism)
+//!     "energy_change", "energy_change_ratio",
+//!     "energy": {"normal", "friction", "translational", "rotational"}  // each / T0
+//!     "phases": [{"kind", "ends_at"}], "path": [[p_t, p_n], …]
+//!   }],
+//!   "routh": {"friction", "restitution", "lines": [{"id", "label", "coef": [u, v, w]}]},
+//!   "threshold": null | {"upper", "lower"},   // Whittaker's γ* for a sphere (paper A eq. 13)
+//!   "animation": {"duration", "shapes", "pins", "before", "after": {law: frames}}
+//! }
+//! ```
+//!
+//! Numbers are those of the library (`-0` written as `0`); a law that breaks down has
+//! `values = null` and no path. The body's velocities are normalised by `v0` and `ω` by
+//! `v0/ρ` in `values`, as in `impax compare`'s table for round bodies.
+
+use crate::case::{BodyCase, Case, MechanismCase, Request};
+use impax::mechanism::{Mechanism, Pose};
+use impax::planar::{Breakdown, ContactProblem, Outcome};
+use impax::LawId;
+use serde_json::{json, Map, Value};
+
+/// Frames in each half of the animation (approach, rebound).
+pub const FRAMES: usize = 48;
+
+/// JSON number, `-0` as `0`, non-finite as `null`.
+pub fn num(x: f64) -> Value {
+    if x == 0.0 {
+        json!(0.0)
+    } else if x.is_finite() {
+        json!(x)
+    } else {
+        Value::Null
+    }
+}
+
+/// Answer a compare request.
+///
+/// # Errors
+/// The request's case or problem is invalid (one line naming the field).
+pub fn compare(request: &Request) -> Result<Value, String> {
+    match request.case()? {
+        Case::Body(b) => body(&b, request.friction, request.restitution),
+        Case::Mechanism(m) => mechanism(&m, request.friction, request.restitution),
+    }
+}
+
+fn verdict_id(o: &Outcome) -> &'static str {
+    o.verdict.id()
+}
+
+fn common(o: &Outcome, problem: &ContactProblem) -> Map<String, Value> {
+    let mut m = Map::new();
+    m.insert("law".into(), json!(o.law.as_str()));
+    m.insert("verdict".into(), json!(verdict_id(o)));
+    m.insert(
+        "inconsistency".into(),
+        o.inconsistency.map_or(
+            Value::Null,
+            |i| json!({ "id": i.id(), "message": i.to_string() }),
+        ),
+    );
+    m.insert("breakdown".into(), Value::Null);
+    m.insert(
+        "impulse".into(),
+        json!({ "t": num(o.impulse.x), "n": num(o.impulse.y) }),
+    );
+    m.insert(
+        "contact_velocity_after".into(),
+        json!({ "t": num(o.velocity_after.x), "n": num(o.velocity_after.y) }),
+    );
+    m.insert("energy_change".into(), num(o.energy_change));
+    m.insert(
+        "phases".into(),
+        Value::Array(
+            o.phases
+                .as_slice()
+                .iter()
+                .map(|p| json!({ "kind": p.kind.label(), "ends_at": num(p.ends_at) }))
+                .collect(),
+        ),
+    );
+    m.insert(
+        "path".into(),
+        Value::Array(
+            o.impulse_path(problem)
+                .iter()
+                .map(|p| json!([num(p.x), num(p.y)]))
+                .collect(),
+        ),
+    );
+    m
+}
+
+fn broken(b: &Breakdown) -> Value {
+    json!({
+        "law": b.law.as_str(),
+        "verdict": "breakdown",
+        "inconsistency": null,
+        "breakdown": { "id": b.reason.id(), "message": b.reason.to_string() },
+        "values": null,
+        "energy_change": null,
+        "energy_change_ratio": null,
+        "energy": null,
+        "phases": [],
+        "path": [],
+    })
+}
+
+fn problem_json(p: &ContactProblem) -> Value {
+    json!({
+        "w": [[p.wtt(), p.wtn()], [p.wtn(), p.wnn()]],
+        "v": { "t": num(p.velocity().x), "n": num(p.velocity().y) },
+        "friction": p.friction(),
+        "restitution": p.restitution(),
+    })
+}
+
+/// The straight lines of Routh's diagram, `u p_t + v p_n = w`.
+fn routh(p: &ContactProblem) -> Value {
+    let (a, b, c) = (p.wtt(), p.wtn(), p.wnn());
+    let v = p.velocity();
+    let e = p.restitution();
+    json!({
+        "friction": p.friction(),
+        "restitution": e,
+        "lines": [
+            { "id": "stick", "label": "sticking: v_t = 0", "coef": [a, b, -v.x] },
+            { "id": "compression", "label": "maximum compression: v_n = 0", "coef": [b, c, -v.y] },
+            { "id": "newton", "label": format!("Newton restitution: v_n = −e v_n⁻ (e = {e})"),
+              "coef": [b, c, -(1.0 + e) * v.y] },
+        ],
+    })
+}
+
+fn body(case: &BodyCase, friction: f64, restitution: f64) -> Result<Value, String> {
+    let problem = case.problem(friction, restitution)?;
+    let t0 = case.t0();
+    let (v0, rho) = (case.spec.speed, case.length_scale);
+    let results: Vec<Value> = LawId::ALL
+        .iter()
+        .map(|&law| match case.impact.resolve(law, &problem) {
+            Ok(b) => {
+                let o = &b.outcome;
+                let mut m = common(o, &problem);
+                let s = b.body_after;
+                m.insert(
+                    "body_velocity_after".into(),
+                    json!({ "vx": num(s.velocity.x), "vy": num(s.velocity.y), "omega": num(s.omega) }),
+                );
+                m.insert(
+                    "values".into(),
+                    json!([
+                        num(s.velocity.x / v0),
+                        num(s.velocity.y / v0),
+                        num(s.omega * rho / v0),
+                        num(o.velocity_after.x / v0),
+                        num(o.energy_change / t0),
+                    ]),
+                );
+                m.insert("energy_change_ratio".into(), num(o.energy_change / t0));
+                m.insert(
+                    "energy".into(),
+                    json!({
+                        "normal": num(o.work.normal() / t0),
+                        "friction": num(o.work.friction / t0),
+                        "translational": num(b.energy_change.translational / t0),
+                        "rotational": num(b.energy_change.rotational / t0),
+                    }),
+                );
+                Value::Object(m)
+            }
+            Err(b) => broken(&b),
+        })
+        .collect();
+    let threshold = if case.spec.shape == "sphere" {
+        let t = impax::analysis::whittaker_sphere_thresholds(
+            case.spec.alpha_deg.to_radians(),
+            restitution,
+            friction,
+        );
+        json!({ "upper": t.upper.map(num), "lower": t.lower.map(num) })
+    } else {
+        Value::Null
+    };
+    Ok(json!({
+        "kind": "body",
+        "scenario": case.description,
+        "problem": problem_json(&problem),
+        "energy_before": case.impact.energy_before().total(),
+        "t0": t0,
+        "columns": [
+            { "key": "vx", "label": "vx⁺/v0" },
+            { "key": "vy", "label": "vy⁺/v0" },
+            { "key": "omega", "label": "ω⁺ρ/v0" },
+            { "key": "vt", "label": "vt⁺/v0" },
+            { "key": "dT", "label": "ΔT/T0" },
+        ],
+        "results": results,
+        "routh": routh(&problem),
+        "threshold": threshold,
+        "animation": body_animation(case, &problem),
+    }))
+}
+
+/// The body's outline in its own frame at the instant of impact.
+fn body_shape(case: &BodyCase) -> Value {
+    let spec = &case.spec;
+    let body = case.impact.body.0;
+    match spec.shape.as_str() {
+        "sphere" | "disc" => json!({ "kind": "circle", "radius": spec.radius }),
+        "rod" => json!({
+            "kind": "segment",
+            "half_length": 0.5 * spec.length.unwrap_or(0.0),
+            "direction": spec.angle_deg.unwrap_or(0.0).to_radians(),
+        }),
+        "ellipse" => {
+            let [a, b] = spec.semi_axes.unwrap_or([0.0, 0.0]);
+            json!({
+                "kind": "ellipse", "a": a, "b": b,
+                "direction": spec.angle_deg.unwrap_or(0.0).to_radians(),
+            })
+        }
+        _ => json!({
+            "kind": "rigid",
+            "contact": [body.contact().x, body.contact().y],
+            "gyration": (body.inertia() / body.mass()).sqrt(),
+        }),
+    }
+}
+
+fn body_animation(case: &BodyCase, problem: &ContactProblem) -> Value {
+    let rho = case.length_scale;
+    let before = case.state();
+    let speed = before.velocity.norm().max(1e-300);
+    // The centre travels 2.5 ρ before the impact.
+    let duration = 2.5 * rho / speed;
+    let c0 = -case.impact.body.0.contact();
+    let frames = |vx: f64, vy: f64, omega: f64, sign: f64| -> Value {
+        Value::Array(
+            (0..=FRAMES)
+                .map(|k| {
+                    // Approach: t from −τ to 0; rebound: 0 to τ.
+                    let f = k as f64 / FRAMES as f64;
+                    let t = if sign < 0.0 {
+                        -duration * (1.0 - f)
+                    } else {
+                        duration * f
+                    };
+                    json!([[num(c0.x + vx * t), num(c0.y + vy * t), num(omega * t)]])
+                })
+                .collect(),
+        )
+    };
+    let mut after = Map::new();
+    for &law in LawId::ALL.iter() {
+        if let Ok(b) = case.impact.resolve(law, problem) {
+            let s = b.body_after;
+            after.insert(
+                law.as_str().into(),
+                frames(s.velocity.x, s.velocity.y, s.omega, 1.0),
+            );
+        }
+    }
+    json!({
+        "duration": duration,
+        "shapes": [body_shape(case)],
+        "pins": [],
+        "before": frames(before.velocity.x, before.velocity.y, before.omega, -1.0),
+        "after": after,
+    })
+}
+
+fn mechanism(case: &MechanismCase, friction: f64, restitution: f64) -> Result<Value, String> {
+    let impact = case.impact()?;
+    let problem = impact
+        .problem(friction, restitution)
+        .map_err(|e| e.to_string())?;
+    let t0 = impact.energy_before();
+    let laws = LawId::CONTACT_SPACE;
+    let mut after = Map::new();
+    let mut results = Vec::new();
+    for &law in laws.iter() {
+        let r = impact
+            .resolve(law, friction, restitution)
+            .map_err(|e| e.to_string())?;
+        match (&r.resolution, &r.velocities_after) {
+            (Ok(o), Some(u)) => {
+                let mut m = common(o, &problem);
+                m.insert(
+                    "velocities_after".into(),
+                    Value::Array(u.iter().map(|&x| num(x)).collect()),
+                );
+                let ratio = (t0 + o.energy_change) / t0;
+                m.insert(
+                    "values".into(),
+                    json!([
+                        num(u[0]),
+                        num(u[1]),
+                        num(o.velocity_after.x),
+                        num(o.velocity_after.y),
+                        num(o.energy_change / t0),
+                        num(ratio),
+                    ]),
+                );
+                m.insert("energy_change_ratio".into(), num(o.energy_change / t0));
+                m.insert("energy_ratio".into(), num(ratio));
+                m.insert(
+                    "energy".into(),
+                    json!({
+                        "normal": num(o.work.normal() / t0),
+                        "friction": num(o.work.friction / t0),
+                        "translational": null,
+                        "rotational": null,
+                    }),
+                );
+                after.insert(law.as_str().into(), pendulum_frames(case, u, 1.0));
+                results.push(Value::Object(m));
+            }
+            (Err(b), _) => results.push(broken(b)),
+            (Ok(_), None) => return Err(format!("{law}: no velocities after the impact")),
+        }
+    }
+    let [l1, l2] = case.pendulum.lengths();
+    let down = -std::f64::consts::FRAC_PI_2;
+    Ok(json!({
+        "kind": "mechanism",
+        "scenario": case.description,
+        "problem": problem_json(&problem),
+        "energy_before": t0,
+        "t0": t0,
+        "columns": [
+            { "key": "u1", "label": "θ̇₁⁺ (rad/s)" },
+            { "key": "u2", "label": "θ̇₂⁺ (rad/s)" },
+            { "key": "vt", "label": "vt⁺" },
+            { "key": "vn", "label": "vn⁺" },
+            { "key": "dT", "label": "ΔT/T⁻" },
+            { "key": "ratio", "label": "T⁺/T⁻" },
+        ],
+        "results": results,
+        "routh": routh(&problem),
+        "threshold": null,
+        "animation": {
+            "duration": pendulum_duration(case),
+            "shapes": [
+                { "kind": "segment", "half_length": 0.5 * l1, "direction": down },
+                { "kind": "segment", "half_length": 0.5 * l2, "direction": down },
+            ],
+            "pins": [pin(case)],
+            "before": pendulum_frames(case, &case.u, -1.0),
+            "after": after,
+        },
+    }))
+}
+
+fn pendulum_duration(case: &MechanismCase) -> f64 {
+    let fastest = case.u[0].abs().max(case.u[1].abs()).max(1e-300);
+    0.35 / fastest
+}
+
+/// The pin, in the frame whose origin is the tip at the impact (the floor is `y = 0`).
+fn pin(case: &MechanismCase) -> Value {
+    let tip = case.pendulum.contact_point(0, &case.q);
+    json!([num(-tip[0]), num(-tip[1])])
+}
+
+/// Poses of both rods at `q + u t` (velocities held: the impact is instantaneous), over
+/// the approach (`sign < 0`, t from −τ to 0) or the rebound (t from 0 to τ).
+fn pendulum_frames(case: &MechanismCase, u: &[f64], sign: f64) -> Value {
+    let tau = pendulum_duration(case);
+    let tip = case.pendulum.contact_point(0, &case.q);
+    let mut poses = [Pose::new(0.0, 0.0, 0.0); 2];
+    Value::Array(
+        (0..=FRAMES)
+            .map(|k| {
+                let f = k as f64 / FRAMES as f64;
+                let t = if sign < 0.0 {
+                    -tau * (1.0 - f)
+                } else {
+                    tau * f
+                };
+                let q = [case.q[0] + u[0] * t, case.q[1] + u[1] * t];
+                case.pendulum.poses(&q, &mut poses);
+                Value::Array(
+                    poses
+                        .iter()
+                        .map(|p| json!([num(p.x - tip[0]), num(p.y - tip[1]), num(p.angle)]))
+                        .collect(),
+                )
+            })
+            .collect(),
+    )
+}

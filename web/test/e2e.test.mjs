@@ -1,0 +1,279 @@
+// End-to-end test of the explorer page in a real browser (Debian's chromium, headless),
+// against the numbers of the `impax` command line.
+//
+//   IMPAX_BIN=target/release/impax node --test web/test/e2e.test.mjs
+//
+// Environment: IMPAX_BIN (the binary, required), CHROMIUM (default /usr/bin/chromium),
+// SCREENSHOT (default docs/img/explorer.png beside the repository root).
+import { test, before, after } from "node:test";
+import assert from "node:assert/strict";
+import { spawn, execFileSync } from "node:child_process";
+import fs from "node:fs";
+import net from "node:net";
+import os from "node:os";
+import path from "node:path";
+import { fileURLToPath, pathToFileURL } from "node:url";
+import { chromium } from "playwright-core";
+
+const here = path.dirname(fileURLToPath(import.meta.url));
+const root = path.resolve(here, "../..");
+const IMPAX = process.env.IMPAX_BIN && path.resolve(process.env.IMPAX_BIN);
+const CHROMIUM = process.env.CHROMIUM || "/usr/bin/chromium";
+const SCREENSHOT = process.env.SCREENSHOT || path.join(root, "docs/img/explorer.png");
+const FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--no-first-run",
+  "--disable-background-networking", "--disable-component-update", "--disable-sync"];
+
+let server, url, browser, page;
+const errors = [];
+
+function impax(...args) {
+  return JSON.parse(execFileSync(IMPAX, args, { encoding: "utf8" }));
+}
+
+function freePort() {
+  return new Promise((resolve, reject) => {
+    const s = net.createServer();
+    s.once("error", reject);
+    s.listen(0, "127.0.0.1", () => { const { port } = s.address(); s.close(() => resolve(port)); });
+  });
+}
+
+before(async () => {
+  assert.ok(IMPAX, "set IMPAX_BIN to the impax binary");
+  const port = await freePort();
+  server = spawn(IMPAX, ["explore", "--port", String(port)], { stdio: ["ignore", "pipe", "pipe"] });
+  url = await new Promise((resolve, reject) => {
+    let text = "";
+    const timer = setTimeout(() => reject(new Error(`impax explore printed no URL: ${text}`)), 10000);
+    server.stdout.on("data", (d) => {
+      text += d;
+      const m = text.match(/http:\/\/127\.0\.0\.1:\d+\//);
+      if (m) { clearTimeout(timer); resolve(m[0]); }
+    });
+    server.on("exit", (code) => reject(new Error(`impax explore exited with ${code}`)));
+  });
+  browser = await chromium.launch({ executablePath: CHROMIUM, args: FLAGS });
+  page = await browser.newPage({ viewport: { width: 1366, height: 768 } });
+  page.on("pageerror", (e) => errors.push(e.message));
+  page.on("console", (m) => { if (m.type() === "error") errors.push(m.text()); });
+  await page.goto(url);
+  await page.waitForSelector('body[data-ready="1"]', { timeout: 20000 });
+  await page.waitForFunction(() => document.getElementById("map").dataset.ms, null, { timeout: 20000 });
+});
+
+after(async () => {
+  if (browser) await browser.close();
+  if (server) server.kill();
+});
+
+// The number a table cell shows (the page writes − for minus).
+const shown = (text) => Number(text.trim().replace("−", "-").replace("+", ""));
+
+async function cell(law, col) {
+  return page.$eval(`#laws tr[data-law="${law}"] td[data-col="${col}"]`, (td) => td.textContent);
+}
+async function verdict(law) {
+  return page.$eval(`#laws tr[data-law="${law}"] td.verdict`, (td) => td.dataset.verdict);
+}
+
+async function setSlider(id, value) {
+  await page.$eval(`#${id}`, (el, v) => {
+    el.value = v;
+    el.dispatchEvent(new Event("input", { bubbles: true }));
+  }, String(value));
+}
+
+// The table against `impax compare --json` to the digits shown (5 decimals).
+async function checkTable(json, columns) {
+  assert.ok(json.results.length >= 7);
+  for (const r of json.results) {
+    const row = await page.$(`#laws tr[data-law="${r.law}"]`);
+    assert.ok(row, `the page lists law ${r.law}`);
+    assert.equal(await verdict(r.law), r.verdict, `${r.law}: verdict`);
+    if (r.verdict === "breakdown") continue;
+    for (const [col, value] of Object.entries(columns(r))) {
+      const text = await cell(r.law, col);
+      assert.ok(Math.abs(shown(text) - value) <= 0.5e-5 + 1e-12,
+        `${r.law} ${col}: page shows ${text}, impax compare --json gives ${value}`);
+      assert.equal(shown(text).toFixed(5), (Math.abs(value) < 0.5e-5 ? 0 : value).toFixed(5).replace("-0.00000", "0.00000"));
+    }
+    const phases = await page.$eval(`#laws tr[data-law="${r.law}"] td.phases`, (td) => td.textContent);
+    assert.equal(phases, r.phases.map((p) => `${p.kind}@${p.ends_at.toFixed(4)}`).join(" → "), `${r.law}: phases`);
+  }
+}
+
+const bodyColumns = (r) => ({
+  vx: r.body_velocity_after.vx,
+  vy: r.body_velocity_after.vy,
+  omega: r.body_velocity_after.omega, // r = v0 = 1
+  vt: r.contact_velocity_after.t,
+  dT: r.energy_change_ratio,
+});
+
+// Paper A eq. 13 (Whittaker's ΔT/T0 for the sphere, positive slip branch), solved for γ:
+// ΔT/T0 = (sin α − k)² + (e² + 5/2 f² (1+e)²) cos² α − 1 − 2 f γ (1+e) cos α, k = f (1+e) cos α.
+function whittakerThreshold(alphaDeg, e, f) {
+  const a = (alphaDeg * Math.PI) / 180, s = Math.sin(a), c = Math.cos(a), k = f * (1 + e) * c;
+  const free = (s - k) ** 2 + (e * e + 2.5 * f * f * (1 + e) ** 2) * c * c - 1;
+  return free / (2 * f * (1 + e) * c);
+}
+
+test("impax explore serves the page and the module (application/wasm)", async () => {
+  const res = await fetch(url + "impax_wasm.wasm");
+  assert.equal(res.status, 200);
+  assert.equal(res.headers.get("content-type"), "application/wasm");
+  const bytes = Buffer.from(await res.arrayBuffer());
+  assert.ok(bytes.equals(fs.readFileSync(path.join(root, "web/impax_wasm.wasm"))), "the served module is web/impax_wasm.wasm");
+  assert.equal((await fetch(url + "nope")).status, 404);
+  assert.deepEqual(errors, []);
+});
+
+test("the table shows the seed's case with the numbers of impax compare --json", async () => {
+  const json = impax("compare", "--json");
+  await checkTable(json, bodyColumns);
+  assert.ok(shown(await cell("whittaker", "dT")) > 0, "Whittaker gains energy (Kane's paradox)");
+  assert.ok(shown(await cell("energetic", "dT")) < 0, "the energetic law loses energy");
+  assert.equal(await verdict("whittaker"), "energy-gained");
+});
+
+test("moving γ past Whittaker's threshold (paper A eq. 13) flips the verdict", async () => {
+  const g = whittakerThreshold(30, 0.7, 0.4);
+  assert.ok(Math.abs(g - 0.205811) < 1e-6, `γ* = ${g}`);
+  const below = Math.floor(g * 1000) / 1000, above = Math.ceil(g * 1000) / 1000; // 0.205, 0.206
+  await setSlider("gamma", below);
+  assert.equal(await verdict("whittaker"), "energy-gained");
+  assert.ok(shown(await cell("whittaker", "dT")) > 0);
+  await setSlider("gamma", above);
+  assert.notEqual(await verdict("whittaker"), "energy-gained");
+  assert.ok(shown(await cell("whittaker", "dT")) <= 0);
+  // The same numbers as the command line at that spin.
+  await checkTable(impax("compare", "--json", "--spin-ratio", String(above)), bodyColumns);
+  await setSlider("gamma", 0);
+});
+
+test("the table follows a slider while it is dragged", async () => {
+  const box = await page.$eval("#alpha", (el) => { const r = el.getBoundingClientRect(); return { x: r.x, y: r.y, w: r.width, h: r.height }; });
+  const seen = new Set();
+  await page.mouse.move(box.x + box.w * 0.6, box.y + box.h / 2);
+  await page.mouse.down();
+  for (let k = 0; k <= 8; k++) {
+    await page.mouse.move(box.x + box.w * (0.6 + 0.03 * k), box.y + box.h / 2);
+    seen.add(await cell("whittaker", "dT"));
+  }
+  await page.mouse.up();
+  assert.ok(seen.size >= 6, `the table changed while dragging (${seen.size} distinct values)`);
+  await setSlider("alpha", 30);
+  assert.equal(await cell("whittaker", "dT"), "+0.24240");
+});
+
+test("a value typed beside a slider is used exactly, and an impossible one is a clear error", async () => {
+  await page.fill("#gamma-value", "0.2058");
+  await page.press("#gamma-value", "Enter");
+  await page.waitForFunction(() => document.getElementById("gamma-value").value === "0.2058");
+  const json = impax("compare", "--json", "--spin-ratio", "0.2058");
+  await checkTable(json, bodyColumns);
+  await page.fill("#e-value", "1.5");
+  await page.press("#e-value", "Enter");
+  const message = await page.$eval("#error", (e) => (e.hidden ? "" : e.textContent));
+  assert.match(message, /^restitution: 1\.5 is out of range/);
+  assert.ok(!(await page.content()).includes("NaN"));
+  for (const [id, v] of [["e-value", "0.7"], ["gamma-value", "0"]]) {
+    await page.fill(`#${id}`, v);
+    await page.press(`#${id}`, "Enter");
+  }
+  assert.equal(await page.$eval("#error", (e) => e.hidden), true);
+  assert.equal(await cell("whittaker", "dT"), "+0.24240");
+});
+
+test("the energy-gain map is computed in the page and matches paper A eq. 13", async () => {
+  await page.selectOption("#law", "whittaker");
+  await page.waitForFunction(() => document.getElementById("map").dataset.cells === "40000");
+  // Each change of μ recomputes the 200 × 200 map in WebAssembly.
+  const times = [];
+  for (const mu of [0.41, 0.42, 0.43, 0.44, 0.45, 0.4]) {
+    const last = await page.$eval("#map", (c) => c.dataset.ms + c.dataset.gained);
+    await setSlider("mu", mu);
+    await page.waitForFunction((l) => { const c = document.getElementById("map"); return c.dataset.ms + c.dataset.gained !== l; }, last);
+    times.push(Number(await page.$eval("#map", (c) => c.dataset.ms)));
+  }
+  times.sort((a, b) => a - b);
+  const median = times[Math.floor(times.length / 2)];
+  console.log(`map 200 × 200 (40,000 impacts, whittaker) recomputed in ${times.map((t) => t.toFixed(1)).join(", ")} ms; median ${median.toFixed(1)} ms`);
+  assert.ok(median < 1000, `the map takes ${median} ms`);
+  // Energy gained in the cells eq. 13 says, up to cells on the boundary.
+  let expected = 0, boundary = 0;
+  for (let j = 0; j < 200; j++) {
+    const alpha = (89 * j) / 199, g = whittakerThreshold(alpha, 0.7, 0.4), edge = -Math.sin((alpha * Math.PI) / 180);
+    for (let i = 0; i < 200; i++) {
+      const gamma = -2 + (4 * i) / 199;
+      if (gamma > edge && gamma < g) expected++;
+      if (Math.abs(gamma - g) < 1e-9) boundary++;
+    }
+  }
+  // The lower branch (γ < −sin α) of eq. 13.
+  for (let j = 0; j < 200; j++) {
+    const alpha = (89 * j) / 199, a = (alpha * Math.PI) / 180, s = Math.sin(a), c = Math.cos(a);
+    const k = 0.4 * 1.7 * c, free = (s + k) ** 2 + (0.49 + 2.5 * 0.16 * 2.89) * c * c - 1;
+    const lower = -free / (2 * 0.4 * 1.7 * c);
+    for (let i = 0; i < 200; i++) {
+      const gamma = -2 + (4 * i) / 199;
+      if (gamma < -s && gamma > lower) expected++;
+    }
+  }
+  const gained = Number(await page.$eval("#map", (c) => c.dataset.gained));
+  assert.ok(Math.abs(gained - expected) <= Math.max(boundary, 2), `map: ${gained} cells gain energy, eq. 13: ${expected}`);
+  // Drawn: warm (gain) and blue (loss) pixels in the canvas.
+  const [warm, blue] = await page.$eval("#map", (c) => {
+    const d = c.getContext("2d").getImageData(0, 0, c.width, c.height).data;
+    let w = 0, b = 0;
+    for (let i = 0; i < d.length; i += 4) {
+      if (d[i] > 150 && d[i + 2] < 120 && d[i] - d[i + 2] > 60) w++;
+      if (d[i + 2] > 150 && d[i + 2] - d[i] > 60) b++;
+    }
+    return [w, b];
+  });
+  assert.ok(warm > 2000 && blue > 2000, `map pixels: ${warm} warm, ${blue} blue`);
+});
+
+test("Kane's double pendulum: the page agrees with impax compare double-pendulum --json", async () => {
+  await page.selectOption("#shape", "double-pendulum");
+  await page.waitForSelector('#laws tr[data-law="whittaker"]');
+  const json = impax("compare", "double-pendulum", "--json");
+  await checkTable(json, (r) => ({
+    u1: r.velocities_after[0],
+    u2: r.velocities_after[1],
+    vt: r.contact_velocity_after.t,
+    vn: r.contact_velocity_after.n,
+    ratio: r.energy_ratio,
+  }));
+  assert.equal(await cell("whittaker", "ratio"), "+1.26087");
+  // A configuration that cannot strike (both rods vertical: W is singular) is an error, not NaN.
+  await setSlider("p-angle1_deg", 0);
+  await setSlider("p-angle2_deg", 0);
+  const message = await page.$eval("#error", (e) => (e.hidden ? "" : e.textContent));
+  assert.match(message, /positive definite|approach/);
+  assert.ok(!(await page.content()).includes("NaN"));
+  await page.click("#reset");
+  await page.waitForFunction(() => document.querySelector('#laws tr[data-law="whittaker"] td[data-col="dT"]')?.textContent === "+0.24240");
+});
+
+test("the folder written by --out works offline (file://) and the page fits a laptop screen", async () => {
+  const dir = fs.mkdtempSync(path.join(os.tmpdir(), "impax-explorer-"));
+  execFileSync(IMPAX, ["explore", "--out", dir]);
+  const offline = await browser.newPage({ viewport: { width: 1920, height: 1080 } });
+  await offline.goto(pathToFileURL(path.join(dir, "index.html")).href);
+  await offline.waitForSelector('body[data-ready="1"]', { timeout: 20000 });
+  assert.equal(await offline.$eval('#laws tr[data-law="whittaker"] td[data-col="dT"]', (td) => td.textContent), "+0.24240");
+  for (const p of [offline, page]) {
+    const [sw, iw] = await p.evaluate(() => [document.documentElement.scrollWidth, window.innerWidth]);
+    assert.ok(sw <= iw, `no horizontal scrolling (${sw} > ${iw})`);
+  }
+  await offline.close();
+  fs.rmSync(dir, { recursive: true });
+  // The screenshot of the seed's case, the rebound of Whittaker's rule.
+  await page.$eval("#play", (b) => b.click());
+  await page.waitForTimeout(200);
+  fs.mkdirSync(path.dirname(SCREENSHOT), { recursive: true });
+  await page.screenshot({ path: SCREENSHOT, fullPage: true });
+  assert.deepEqual(errors, []);
+});
