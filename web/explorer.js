@@ -88,7 +88,7 @@ const state = {
   compare: null,
   map: null,
   mapKey: "",
-  mapPending: false,
+  mapTimer: 0,
   timings: [],
 };
 window.explorer = state;
@@ -340,6 +340,8 @@ function drawBars() {
   const { ctx, w } = context(canvas, (rows.length * rowH + 84) / width);
   const values = rows.filter((x) => x.energy).map((x) => x.energy_change_ratio);
   let lo = Math.min(0, ...values), hi = Math.max(0, ...values);
+  // Room on both sides of the zero line, for the labels and for the eye.
+  lo = Math.min(lo, -0.45 * hi); hi = Math.max(hi, -0.45 * lo);
   const span = Math.max(hi - lo, 1e-9);
   lo -= 0.04 * span; hi += 0.04 * span;
   const box = { x0: 112, y0: 10, w: w - 112 - 110, h: rows.length * rowH };
@@ -534,11 +536,13 @@ function mapKey(req) {
   return JSON.stringify(copy);
 }
 
+// Recompute the map after the current event; a slow map (the double pendulum's) waits until
+// the slider rests for 150 ms, so that the table keeps following the drag.
 function scheduleMap(force) {
   if (force) state.mapKey = "";
-  if (state.mapPending) return;
-  state.mapPending = true;
-  setTimeout(() => { state.mapPending = false; computeMap(); }, 0);
+  clearTimeout(state.mapTimer);
+  const slow = state.map && state.map.ms > 40;
+  state.mapTimer = setTimeout(computeMap, slow ? 150 : 0);
 }
 
 function computeMap() {

@@ -12,7 +12,7 @@ worker (the tasks call :func:`impax.study.run_chunk` by reference). The same cal
         r = impax.dask.sweep(space, "whittaker", client=cluster.scheduler_address, threads=1)
     print(r.summary.energy_gain_fraction)
 
-On several machines: start ``dask-scheduler`` on one, ``dask-worker tcp://SCHEDULER:8786`` on
+On several machines: start ``dask scheduler`` on one, ``dask worker tcp://SCHEDULER:8786`` on
 each (every machine with the same impax wheel installed), and pass
 ``client="tcp://SCHEDULER:8786"``. Parquet output (``parquet=DIR``) is written by the workers:
 ``DIR`` must be a path every worker can write to (a shared file system).
