@@ -839,13 +839,24 @@ function update() {
   $("scenario").textContent = r.scenario;
   const p = r.problem, f = (x) => Number(x.toPrecision(6));
   $("problem").textContent = `W = [[${f(p.w[0][0])}, ${f(p.w[0][1])}], [${f(p.w[1][0])}, ${f(p.w[1][1])}]], v⁻ = (${f(p.v.t)}, ${f(p.v.n)})` +
-    (r.threshold && r.threshold.upper !== null ? `; Whittaker gains energy for γ < γ* = ${r.threshold.upper.toFixed(6)} (paper A eq. 13)` : "");
+    thresholdText(r.threshold);
   renderTable(r);
   drawBars();
   drawRouth();
   scheduleMap(false);
   startAnimation();
   document.body.dataset.ready = "1";
+}
+
+// Paper A eq. 13 for the sphere: where Whittaker's rule gains energy along γ.
+function thresholdText(t) {
+  if (!t) return "";
+  const g = (x) => x.toFixed(6).replace("-", "−");
+  if (t.upper === null && t.lower === null) return "; Whittaker's rule gains energy at no γ here (paper A eq. 13)";
+  const edge = `−sin α = ${g(t.edge)}`;
+  const range = t.upper !== null && t.lower !== null ? `γ*₋ = ${g(t.lower)} < γ < γ*₊ = ${g(t.upper)} (not at γ = ${edge}: no slip)`
+    : t.upper !== null ? `${edge} < γ < γ*₊ = ${g(t.upper)}` : `γ*₋ = ${g(t.lower)} < γ < ${edge}`;
+  return `; Whittaker's rule gains energy for ${range} (paper A eq. 13)`;
 }
 
 function setKind(kind) {

@@ -20,7 +20,8 @@
 //!     "phases": [{"kind", "ends_at"}], "path": [[p_t, p_n], …]
 //!   }],
 //!   "routh": {"friction", "restitution", "lines": [{"id", "label", "coef": [u, v, w]}]},
-//!   "threshold": null | {"upper", "lower"},   // Whittaker's γ* for a sphere (paper A eq. 13)
+//!   "threshold": null | {"upper", "lower", "edge"},  // Whittaker's γ*₊, γ*₋ and −sin α for a
+//!                                                     // sphere (paper A eq. 13)
 //!   "animation": {"duration", "shapes", "pins", "before", "after": {law: frames}}
 //! }
 //! ```
@@ -192,7 +193,8 @@ fn body(case: &BodyCase, friction: f64, restitution: f64) -> Result<Value, Strin
             restitution,
             friction,
         );
-        json!({ "upper": t.upper.map(num), "lower": t.lower.map(num) })
+        let edge = -case.spec.alpha_deg.to_radians().sin();
+        json!({ "upper": t.upper.map(num), "lower": t.lower.map(num), "edge": num(edge) })
     } else {
         Value::Null
     };

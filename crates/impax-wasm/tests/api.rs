@@ -71,6 +71,8 @@ fn seed_matches_the_library_for_every_law() {
     assert!((energetic["energy_change_ratio"].as_f64().unwrap() + 0.45393).abs() < 1e-5);
     // Paper A eq. 13's threshold of the seed: γ*₊ = 0.205811.
     assert!((v["threshold"]["upper"].as_f64().unwrap() - 0.205811).abs() < 1e-6);
+    assert!((v["threshold"]["lower"].as_f64().unwrap() + 1.205811).abs() < 1e-6);
+    assert!((v["threshold"]["edge"].as_f64().unwrap() + 0.5).abs() < 1e-15);
 }
 
 #[test]
