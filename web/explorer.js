@@ -340,6 +340,8 @@ function drawBars() {
   const { ctx, w } = context(canvas, (rows.length * rowH + 84) / width);
   const values = rows.filter((x) => x.energy).map((x) => x.energy_change_ratio);
   let lo = Math.min(0, ...values), hi = Math.max(0, ...values);
+  // Room on both sides of the zero line, for the labels and for the eye.
+  lo = Math.min(lo, -0.45 * hi); hi = Math.max(hi, -0.45 * lo);
   const span = Math.max(hi - lo, 1e-9);
   lo -= 0.04 * span; hi += 0.04 * span;
   const box = { x0: 112, y0: 10, w: w - 112 - 110, h: rows.length * rowH };
@@ -837,13 +839,24 @@ function update() {
   $("scenario").textContent = r.scenario;
   const p = r.problem, f = (x) => Number(x.toPrecision(6));
   $("problem").textContent = `W = [[${f(p.w[0][0])}, ${f(p.w[0][1])}], [${f(p.w[1][0])}, ${f(p.w[1][1])}]], v⁻ = (${f(p.v.t)}, ${f(p.v.n)})` +
-    (r.threshold && r.threshold.upper !== null ? `; Whittaker gains energy for γ < γ* = ${r.threshold.upper.toFixed(6)} (paper A eq. 13)` : "");
+    thresholdText(r.threshold);
   renderTable(r);
   drawBars();
   drawRouth();
   scheduleMap(false);
   startAnimation();
   document.body.dataset.ready = "1";
+}
+
+// Paper A eq. 13 for the sphere: where Whittaker's rule gains energy along γ.
+function thresholdText(t) {
+  if (!t) return "";
+  const g = (x) => x.toFixed(6).replace("-", "−");
+  if (t.upper === null && t.lower === null) return "; Whittaker's rule gains energy at no γ here (paper A eq. 13)";
+  const edge = `−sin α = ${g(t.edge)}`;
+  const range = t.upper !== null && t.lower !== null ? `γ*₋ = ${g(t.lower)} < γ < γ*₊ = ${g(t.upper)} (not at γ = ${edge}: no slip)`
+    : t.upper !== null ? `${edge} < γ < γ*₊ = ${g(t.upper)}` : `γ*₋ = ${g(t.lower)} < γ < ${edge}`;
+  return `; Whittaker's rule gains energy for ${range} (paper A eq. 13)`;
 }
 
 function setKind(kind) {

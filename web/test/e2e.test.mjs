@@ -134,6 +134,8 @@ test("the table shows the seed's case with the numbers of impax compare --json",
   assert.ok(shown(await cell("whittaker", "dT")) > 0, "Whittaker gains energy (Kane's paradox)");
   assert.ok(shown(await cell("energetic", "dT")) < 0, "the energetic law loses energy");
   assert.equal(await verdict("whittaker"), "energy-gained");
+  const problem = await page.$eval("#problem", (p) => p.textContent);
+  assert.match(problem, /γ\*₋ = −1\.205811 < γ < γ\*₊ = 0\.205811/);
 });
 
 test("moving γ past Whittaker's threshold (paper A eq. 13) flips the verdict", async () => {

@@ -35,6 +35,7 @@
 
 #![warn(missing_docs)]
 
+pub mod animation;
 pub mod case;
 pub mod map;
 pub mod report;

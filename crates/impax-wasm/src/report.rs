@@ -20,7 +20,8 @@
 //!     "phases": [{"kind", "ends_at"}], "path": [[p_t, p_n], …]
 //!   }],
 //!   "routh": {"friction", "restitution", "lines": [{"id", "label", "coef": [u, v, w]}]},
-//!   "threshold": null | {"upper", "lower"},   // Whittaker's γ* for a sphere (paper A eq. 13)
+//!   "threshold": null | {"upper", "lower", "edge"},  // Whittaker's γ*₊, γ*₋ and −sin α for a
+//!                                                     // sphere (paper A eq. 13)
 //!   "animation": {"duration", "shapes", "pins", "before", "after": {law: frames}}
 //! }
 //! ```
@@ -29,14 +30,12 @@
 //! `values = null` and no path. The body's velocities are normalised by `v0` and `ω` by
 //! `v0/ρ` in `values`, as in `impax compare`'s table for round bodies.
 
+use crate::animation::{self, Outline};
 use crate::case::{BodyCase, Case, MechanismCase, Request};
 use impax::mechanism::{Mechanism, Pose};
 use impax::planar::{Breakdown, ContactProblem, Outcome};
 use impax::LawId;
 use serde_json::{json, Map, Value};
-
-/// Frames in each half of the animation (approach, rebound).
-pub const FRAMES: usize = 48;
 
 /// JSON number, `-0` as `0`, non-finite as `null`.
 pub fn num(x: f64) -> Value {
@@ -194,7 +193,8 @@ fn body(case: &BodyCase, friction: f64, restitution: f64) -> Result<Value, Strin
             restitution,
             friction,
         );
-        json!({ "upper": t.upper.map(num), "lower": t.lower.map(num) })
+        let edge = -case.spec.alpha_deg.to_radians().sin();
+        json!({ "upper": t.upper.map(num), "lower": t.lower.map(num), "edge": num(edge) })
     } else {
         Value::Null
     };
@@ -219,69 +219,74 @@ fn body(case: &BodyCase, friction: f64, restitution: f64) -> Result<Value, Strin
 }
 
 /// The body's outline in its own frame at the instant of impact.
-fn body_shape(case: &BodyCase) -> Value {
+fn body_outline(case: &BodyCase) -> Outline {
     let spec = &case.spec;
     let body = case.impact.body.0;
     match spec.shape.as_str() {
-        "sphere" | "disc" => json!({ "kind": "circle", "radius": spec.radius }),
-        "rod" => json!({
-            "kind": "segment",
-            "half_length": 0.5 * spec.length.unwrap_or(0.0),
-            "direction": spec.angle_deg.unwrap_or(0.0).to_radians(),
-        }),
+        "sphere" | "disc" => Outline::Circle {
+            radius: spec.radius.unwrap_or(0.0),
+        },
+        "rod" => Outline::Segment {
+            half_length: 0.5 * spec.length.unwrap_or(0.0),
+            direction: spec.angle_deg.unwrap_or(0.0).to_radians(),
+        },
         "ellipse" => {
             let [a, b] = spec.semi_axes.unwrap_or([0.0, 0.0]);
-            json!({
-                "kind": "ellipse", "a": a, "b": b,
-                "direction": spec.angle_deg.unwrap_or(0.0).to_radians(),
-            })
+            Outline::Ellipse {
+                a,
+                b,
+                direction: spec.angle_deg.unwrap_or(0.0).to_radians(),
+            }
         }
-        _ => json!({
-            "kind": "rigid",
-            "contact": [body.contact().x, body.contact().y],
-            "gyration": (body.inertia() / body.mass()).sqrt(),
-        }),
+        _ => Outline::Rigid {
+            contact: [body.contact().x, body.contact().y],
+            gyration: (body.inertia() / body.mass()).sqrt(),
+        },
     }
 }
 
 fn body_animation(case: &BodyCase, problem: &ContactProblem) -> Value {
     let rho = case.length_scale;
     let before = case.state();
-    let speed = before.velocity.norm().max(1e-300);
-    // The centre travels 2.5 ρ before the impact.
-    let duration = 2.5 * rho / speed;
+    let outline = [body_outline(case)];
     let c0 = -case.impact.body.0.contact();
-    let frames = |vx: f64, vy: f64, omega: f64, sign: f64| -> Value {
-        Value::Array(
-            (0..=FRAMES)
-                .map(|k| {
-                    // Approach: t from −τ to 0; rebound: 0 to τ.
-                    let f = k as f64 / FRAMES as f64;
-                    let t = if sign < 0.0 {
-                        -duration * (1.0 - f)
-                    } else {
-                        duration * f
-                    };
-                    json!([[num(c0.x + vx * t), num(c0.y + vy * t), num(omega * t)]])
-                })
-                .collect(),
-        )
-    };
-    let mut after = Map::new();
+    let mut states = vec![(None, before)];
     for &law in LawId::ALL.iter() {
         if let Ok(b) = case.impact.resolve(law, problem) {
-            let s = b.body_after;
-            after.insert(
-                law.as_str().into(),
-                frames(s.velocity.x, s.velocity.y, s.omega, 1.0),
-            );
+            states.push((Some(law), b.body_after));
+        }
+    }
+    // The centre travels 2.5 ρ before the impact, and a body that is not round turns by at
+    // most about half a radian in either half (the spin of a round one shows on its radius).
+    let speed = before.velocity.norm().max(1e-300);
+    let fastest = states
+        .iter()
+        .map(|(_, s)| s.omega.abs())
+        .fold(0.0, f64::max);
+    let mut duration = 2.5 * rho / speed;
+    if !matches!(outline[0], Outline::Circle { .. }) {
+        duration = duration.min(0.5 / fastest.max(1e-300));
+    }
+    let frames = |s: &impax::bodies::BodyState2, approach: bool| {
+        animation::to_json(&animation::half(&outline, duration, approach, |t| {
+            vec![[
+                c0.x + s.velocity.x * t,
+                c0.y + s.velocity.y * t,
+                s.omega * t,
+            ]]
+        }))
+    };
+    let mut after = Map::new();
+    for (law, s) in &states {
+        if let Some(law) = law {
+            after.insert(law.as_str().into(), frames(s, false));
         }
     }
     json!({
         "duration": duration,
-        "shapes": [body_shape(case)],
+        "shapes": [outline[0].to_json()],
         "pins": [],
-        "before": frames(before.velocity.x, before.velocity.y, before.omega, -1.0),
+        "before": frames(&before, true),
         "after": after,
     })
 }
@@ -329,15 +334,13 @@ fn mechanism(case: &MechanismCase, friction: f64, restitution: f64) -> Result<Va
                         "rotational": null,
                     }),
                 );
-                after.insert(law.as_str().into(), pendulum_frames(case, u, 1.0));
+                after.insert(law.as_str().into(), pendulum_frames(case, u, false));
                 results.push(Value::Object(m));
             }
             (Err(b), _) => results.push(broken(b)),
             (Ok(_), None) => return Err(format!("{law}: no velocities after the impact")),
         }
     }
-    let [l1, l2] = case.pendulum.lengths();
-    let down = -std::f64::consts::FRAC_PI_2;
     Ok(json!({
         "kind": "mechanism",
         "scenario": case.description,
@@ -357,12 +360,9 @@ fn mechanism(case: &MechanismCase, friction: f64, restitution: f64) -> Result<Va
         "threshold": null,
         "animation": {
             "duration": pendulum_duration(case),
-            "shapes": [
-                { "kind": "segment", "half_length": 0.5 * l1, "direction": down },
-                { "kind": "segment", "half_length": 0.5 * l2, "direction": down },
-            ],
+            "shapes": pendulum_outlines(case).map(Outline::to_json),
             "pins": [pin(case)],
-            "before": pendulum_frames(case, &case.u, -1.0),
+            "before": pendulum_frames(case, &case.u, true),
             "after": after,
         },
     }))
@@ -379,30 +379,28 @@ fn pin(case: &MechanismCase) -> Value {
     json!([num(-tip[0]), num(-tip[1])])
 }
 
+fn pendulum_outlines(case: &MechanismCase) -> [Outline; 2] {
+    // A rod's pose angle is θ from the downward vertical: its direction is θ − π/2.
+    let down = -std::f64::consts::FRAC_PI_2;
+    case.pendulum.lengths().map(|l| Outline::Segment {
+        half_length: 0.5 * l,
+        direction: down,
+    })
+}
+
 /// Poses of both rods at `q + u t` (velocities held: the impact is instantaneous), over
-/// the approach (`sign < 0`, t from −τ to 0) or the rebound (t from 0 to τ).
-fn pendulum_frames(case: &MechanismCase, u: &[f64], sign: f64) -> Value {
+/// the approach (t from −τ to 0) or the rebound (t from 0 to τ).
+fn pendulum_frames(case: &MechanismCase, u: &[f64], approach: bool) -> Value {
     let tau = pendulum_duration(case);
     let tip = case.pendulum.contact_point(0, &case.q);
-    let mut poses = [Pose::new(0.0, 0.0, 0.0); 2];
-    Value::Array(
-        (0..=FRAMES)
-            .map(|k| {
-                let f = k as f64 / FRAMES as f64;
-                let t = if sign < 0.0 {
-                    -tau * (1.0 - f)
-                } else {
-                    tau * f
-                };
-                let q = [case.q[0] + u[0] * t, case.q[1] + u[1] * t];
-                case.pendulum.poses(&q, &mut poses);
-                Value::Array(
-                    poses
-                        .iter()
-                        .map(|p| json!([num(p.x - tip[0]), num(p.y - tip[1]), num(p.angle)]))
-                        .collect(),
-                )
-            })
-            .collect(),
-    )
+    let outlines = pendulum_outlines(case);
+    animation::to_json(&animation::half(&outlines, tau, approach, |t| {
+        let mut poses = [Pose::new(0.0, 0.0, 0.0); 2];
+        let q = [case.q[0] + u[0] * t, case.q[1] + u[1] * t];
+        case.pendulum.poses(&q, &mut poses);
+        poses
+            .iter()
+            .map(|p| [p.x - tip[0], p.y - tip[1], p.angle])
+            .collect()
+    }))
 }

@@ -71,6 +71,8 @@ fn seed_matches_the_library_for_every_law() {
     assert!((energetic["energy_change_ratio"].as_f64().unwrap() + 0.45393).abs() < 1e-5);
     // Paper A eq. 13's threshold of the seed: γ*₊ = 0.205811.
     assert!((v["threshold"]["upper"].as_f64().unwrap() - 0.205811).abs() < 1e-6);
+    assert!((v["threshold"]["lower"].as_f64().unwrap() + 1.205811).abs() < 1e-6);
+    assert!((v["threshold"]["edge"].as_f64().unwrap() + 0.5).abs() < 1e-15);
 }
 
 #[test]
@@ -98,6 +100,7 @@ fn double_pendulum_is_kanes_paradox() {
     assert_eq!(w["verdict"], "energy-gained");
     // T⁺/T⁻ = 1.26087 (README, Kane & Levinson's pendulum).
     assert!((w["energy_ratio"].as_f64().unwrap() - 1.26087).abs() < 5e-6);
+    above_the_floor(&v["animation"]);
     let frames = v["animation"]["before"].as_array().unwrap();
     // At the impact the tip is at the origin: the end of rod 2 from its centre.
     let last = &frames.last().unwrap()[1];
@@ -125,6 +128,49 @@ fn every_shape_resolves() {
         assert!(v["error"].is_null(), "{body}: {v}");
         assert_eq!(v["results"].as_array().unwrap().len(), LawId::ALL.len());
         assert_eq!(v["animation"]["before"].as_array().unwrap().len(), 49);
+        above_the_floor(&v["animation"]);
+    }
+}
+
+/// No frame of the animation takes a body through the floor `y = 0`.
+fn above_the_floor(animation: &Value) {
+    use impax_wasm::animation::Outline;
+    let f = |x: &Value| x.as_f64().unwrap();
+    let outlines: Vec<Outline> = animation["shapes"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|s| match s["kind"].as_str().unwrap() {
+            "circle" => Outline::Circle {
+                radius: f(&s["radius"]),
+            },
+            "segment" => Outline::Segment {
+                half_length: f(&s["half_length"]),
+                direction: f(&s["direction"]),
+            },
+            "ellipse" => Outline::Ellipse {
+                a: f(&s["a"]),
+                b: f(&s["b"]),
+                direction: f(&s["direction"]),
+            },
+            _ => Outline::Rigid {
+                contact: [f(&s["contact"][0]), f(&s["contact"][1])],
+                gyration: f(&s["gyration"]),
+            },
+        })
+        .collect();
+    let mut halves = vec![&animation["before"]];
+    halves.extend(animation["after"].as_object().unwrap().values());
+    for frames in halves {
+        for frame in frames.as_array().unwrap() {
+            for (o, p) in outlines.iter().zip(frame.as_array().unwrap()) {
+                let pose = [f(&p[0]), f(&p[1]), f(&p[2])];
+                assert!(
+                    o.lowest(pose) > -1e-9,
+                    "{o:?} at {pose:?} is below the floor"
+                );
+            }
+        }
     }
 }
 
