@@ -34,7 +34,7 @@ pub const ENGINE_RULES: [LawId; 2] = [LawId::Lcp, LawId::Whittaker];
 pub const REFERENCE: LawId = LawId::Energetic;
 
 /// The built-in scenarios and their default coefficients `(μ, e)`: the seed's sphere
-/// (30° from the normal, no spin), the rod (50° to the floor, translating at
+/// (30° from the normal, no spin), the rod of docs/engine-audit.md (50° to the floor, translating at
 /// (0.5, −1)) and Kane & Levinson's double pendulum.
 const BUILT_INS: [(&str, f64, f64); 3] = [
     ("sphere", 0.4, 0.7),

@@ -1,7 +1,7 @@
 //! `impax audit`: the built-in sphere, rod and double pendulum, TOML scenarios (a body and a
 //! mechanism), the JSON contract, and bad input (one line on stderr, exit code 2).
 //!
-//! The rod is the case (uniform rod at 50° to the floor, μ = 0.8, e = 1, translating
+//! The rod is the built-in `rod` (uniform rod at 50° to the floor, μ = 0.8, e = 1, translating
 //! at (0.5, −1)): `lcp` gains 18.3 % (T⁺/T⁻ = 1.1835, the figure pymunk gives too), equal to
 //! `newton` because both stick; `energetic` dissipates 4.3 %.
 
