@@ -329,13 +329,10 @@ fn spatial_scenarios() {
         doc["velocity_names"],
         serde_json::json!(["vx", "vy", "vz", "omega_x", "omega_y", "omega_z"])
     );
-    assert!(
-        result(&doc, "lcp")["all_solutions"]
-            .as_array()
-            .unwrap()
-            .len()
-            >= 1
-    );
+    assert!(!result(&doc, "lcp")["all_solutions"]
+        .as_array()
+        .unwrap()
+        .is_empty());
     assert_eq!(doc["problem"]["w"].as_array().unwrap().len(), 3);
     let text = run_ok(&["audit", boxed.path(), "--friction", "0.3"]);
     assert!(text.contains("contact space (3D)") && text.contains("μ = 0.3"));
