@@ -308,3 +308,15 @@ def double_pendulum(
 def compare(impact: BodyImpact | MechanismImpact | None = None, laws: Sequence[str] | None = None) -> list[dict[str, Any]]:
     """Every law side by side on one impact (default: the seed's sphere), as the ``results``
     of ``impax compare --json``."""
+
+def rod_rows(
+    angle: ArrayLike, speed: ArrayLike, direction: ArrayLike, omega: ArrayLike, mass: ArrayLike, length: ArrayLike
+) -> tuple[np.ndarray, np.ndarray]:
+    """``(W, v)`` of many uniform rods (the library's ``bodies::rod``), in parallel; used by
+    :func:`impax.study.rod_problems`. A bad value raises ``ValueError("row I: ...")``."""
+
+def sphere_rows(
+    alpha: ArrayLike, spin_ratio: ArrayLike, speed: ArrayLike, mass: ArrayLike, radius: ArrayLike
+) -> tuple[np.ndarray, np.ndarray]:
+    """``(W, v)`` of paper A's sphere at many states (``bodies::sphere``, ``spin_state``), in
+    parallel; used by :func:`impax.study.sphere_problems`."""
