@@ -92,6 +92,7 @@ impl BodyImpact {
                 two_bodies: false,
                 split,
                 t0: self.t0,
+                energy_before: self.impact.energy_before().total(),
             },
         }
     }

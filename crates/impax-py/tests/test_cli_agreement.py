@@ -34,6 +34,8 @@ def test_seed_compare_equals_cli(cli):
         assert_close(py, r, r["law"])
     seed = impax.sphere()
     assert_close(seed.energy_before, ref["energy_before"])
+    assert_close(seed.resolve("newton").energy_before, ref["energy_before"])
+    assert impax.resolve(SEED_W, SEED_V, 0.4, 0.7).energy_before is None
     assert_close(seed.t0, ref["t0"])
     assert_close(seed.w.tolist(), ref["problem"]["w"])
     # The paradox itself: Whittaker gains ΔT/T0 = +0.2424, the exact laws lose 0.4539.
@@ -111,6 +113,7 @@ def test_double_pendulum_equals_cli(cli, tmp_path):
     for py, r in zip(rows, ref["results"]):
         assert_close(py, r, r["law"])
     assert_close(m.energy_before, ref["energy_before"])
+    assert_close(m.resolve("poisson").energy_before, ref["energy_before"])
     assert_close(m.w.tolist(), ref["problem"]["w"])
     # Kane & Levinson: Whittaker's T⁺/T⁻ = 1.26087.
     assert abs(rows[0]["energy_ratio"] - 1.26087) < 5e-6

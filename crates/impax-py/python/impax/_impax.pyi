@@ -56,6 +56,10 @@ class Outcome:
     def energy_change(self) -> float | None:
         """``ΔT = v⁻·p + ½ pᵀ W p`` (exact for any impulse; theory §1)."""
     @property
+    def energy_before(self) -> float | None:
+        """Kinetic energy before: of the bodies, or ``½ u⁻ᵀ M u⁻`` of a mechanism (``None`` in
+        contact space)."""
+    @property
     def approach_energy(self) -> float:
         """``½ v⁻ᵀ W⁻¹ v⁻``: the most energy any impulse can remove."""
     @property
