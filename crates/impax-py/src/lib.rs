@@ -55,6 +55,7 @@ fn _impax(m: &Bound<'_, PyModule>) -> PyResult<()> {
         impax::mechanism::builtin::BuiltIn::NAMES.to_vec(),
     )?;
     m.add_class::<outcome::Outcome>()?;
+    m.add_class::<bodies::Body>()?;
     m.add_class::<bodies::BodyImpact>()?;
     m.add_class::<bodies::MechanismImpact>()?;
     m.add_function(wrap_pyfunction!(single::resolve, m)?)?;
@@ -64,6 +65,7 @@ fn _impax(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(bodies::rod, m)?)?;
     m.add_function(wrap_pyfunction!(bodies::ellipse, m)?)?;
     m.add_function(wrap_pyfunction!(bodies::rigid_body, m)?)?;
+    m.add_function(wrap_pyfunction!(bodies::body, m)?)?;
     m.add_function(wrap_pyfunction!(bodies::double_pendulum, m)?)?;
     m.add_function(wrap_pyfunction!(bodies::mechanism, m)?)?;
     m.add_function(wrap_pyfunction!(bodies::compare, m)?)?;
