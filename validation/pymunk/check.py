@@ -218,7 +218,7 @@ def double_pendulum(t1_deg, t2_deg, u1, u2, mu, e, m=(1.0, 1.0), l=(1.0, 1.0)):
 
 def rod_cases():
     """Deterministic rod drops: (angle°, vx, vy, ω, μ, e)."""
-    cases = [(50.0, 0.5, -1.0, 0.0, 0.8, 1.0)]  # the issue's rod: T⁺/T⁻ ≈ 1.18
+    cases = [(50.0, 0.5, -1.0, 0.0, 0.8, 1.0)]  # the audit's rod (impax audit rod): T⁺/T⁻ ≈ 1.18
     angles = [10.0, 25.0, 40.0, 50.0, 65.0, 80.0]
     motions = [(0.5, -1.0, 0.0), (-0.7, -1.0, 0.0), (1.5, -0.5, 0.0), (0.2, -2.0, 3.0),
                (0.0, -1.0, -2.0)]
@@ -279,7 +279,7 @@ def main():
                 d = max(abs(x - y) for x, y in zip(after, apply(o["impulse"])))
                 control[law] = min(control[law], d)
         if case == rods[0]:
-            print(f"the issue's rod (50°, μ = 0.8, e = 1, v = (0.5, −1)): pymunk T⁺/T⁻ = {gain:.6f}, "
+            print(f"the audit's rod (50°, μ = 0.8, e = 1, v = (0.5, −1)): pymunk T⁺/T⁻ = {gain:.6f}, "
                   f"impax lcp {energy(want) / energy(before):.6f}")
     print(f"rod drops: {len(rods)} cases — {kinds['stick']} stick, {kinds['slip']} slip "
           f"({kinds['reversing']} reversing), {kinds['energy-gaining']} energy-gaining")

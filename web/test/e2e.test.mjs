@@ -4,7 +4,8 @@
 //   IMPAX_BIN=target/release/impax node --test web/test/e2e.test.mjs
 //
 // Environment: IMPAX_BIN (the binary, required), CHROMIUM (default /usr/bin/chromium),
-// SCREENSHOT (default docs/img/explorer.png beside the repository root).
+// SCREENSHOT (default target/explorer.png beside the repository root; the README's picture
+// docs/img/explorer.png is refreshed with SCREENSHOT=docs/img/explorer.png).
 import { test, before, after } from "node:test";
 import assert from "node:assert/strict";
 import { spawn, execFileSync } from "node:child_process";
@@ -19,7 +20,7 @@ const here = path.dirname(fileURLToPath(import.meta.url));
 const root = path.resolve(here, "../..");
 const IMPAX = process.env.IMPAX_BIN && path.resolve(process.env.IMPAX_BIN);
 const CHROMIUM = process.env.CHROMIUM || "/usr/bin/chromium";
-const SCREENSHOT = process.env.SCREENSHOT || path.join(root, "docs/img/explorer.png");
+const SCREENSHOT = process.env.SCREENSHOT || path.join(root, "target/explorer.png");
 const FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--no-first-run",
   "--disable-background-networking", "--disable-component-update", "--disable-sync"];
 

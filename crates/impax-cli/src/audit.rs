@@ -7,7 +7,9 @@
 //! (Newton's restitution with Coulomb friction on the total impulse, the closed-form rule of
 //! simple engines). Each engine-style rule is compared with `energetic` (Stronge's energetic
 //! restitution, which never creates energy): the differences of the velocities after, of `ΔT`
-//! and of `T⁺/T⁻`, and a verdict in words.
+//! and of `T⁺/T⁻`, and a verdict in words. Scenarios: the built-in `sphere`, `rod` and
+//! `double-pendulum` (through the mechanism code), mechanism files, and planar or 3D body
+//! files as `impax compare` reads them.
 
 use crate::cli::{AuditArgs, CompareArgs};
 use crate::fmt::{signed, Table};
@@ -16,7 +18,7 @@ use crate::json::{self, num};
 use crate::mechanism::{self, MechanismSpec};
 use impax::mechanism::impact::MechanismImpact;
 use impax::mechanism::Mechanism;
-use impax::planar::{Breakdown, ContactProblem, Outcome, Verdict};
+use impax::planar::{Breakdown, Verdict};
 use impax::LawId;
 use serde_json::{json, Value};
 
@@ -34,7 +36,7 @@ pub const ENGINE_RULES: [LawId; 2] = [LawId::Lcp, LawId::Whittaker];
 pub const REFERENCE: LawId = LawId::Energetic;
 
 /// The built-in scenarios and their default coefficients `(μ, e)`: the seed's sphere
-/// (30° from the normal, no spin), the rod (50° to the floor, translating at
+/// (30° from the normal, no spin), the rod of docs/engine-audit.md (50° to the floor, translating at
 /// (0.5, −1)) and Kane & Levinson's double pendulum.
 const BUILT_INS: [(&str, f64, f64); 3] = [
     ("sphere", 0.4, 0.7),
@@ -45,7 +47,30 @@ const BUILT_INS: [(&str, f64, f64); 3] = [
 /// One law's result at the level of the bodies.
 struct Row {
     law: LawId,
-    result: Result<(Outcome, Vec<f64>), Breakdown>,
+    result: Result<RowData, Breakdown>,
+}
+
+/// What the audit needs of an outcome, planar or spatial.
+struct RowData {
+    verdict: Verdict,
+    energy_change: f64,
+    phases: String,
+    /// The velocities after, in the order of [`Audit::names`].
+    velocities: Vec<f64>,
+    /// The outcome's JSON entry (the keys of `impax compare --json`).
+    entry: serde_json::Map<String, Value>,
+}
+
+impl RowData {
+    fn planar(o: &impax::planar::Outcome, velocities: Vec<f64>) -> Self {
+        Self {
+            verdict: o.verdict,
+            energy_change: o.energy_change,
+            phases: o.phases.summary(),
+            velocities,
+            entry: json::outcome_fields(o, "contact_velocity_after"),
+        }
+    }
 }
 
 /// Everything an audit reports, whatever the scenario's kind.
@@ -55,8 +80,25 @@ struct Audit {
     names: Vec<String>,
     before: Vec<f64>,
     energy_before: f64,
-    problem: ContactProblem,
+    /// The contact-space problem as JSON and as a line of text.
+    problem: Value,
+    problem_line: String,
     rows: Vec<Row>,
+}
+
+/// The header line of a planar contact-space problem.
+fn planar_line(p: &impax::planar::ContactProblem, t0: f64) -> String {
+    let v = p.velocity();
+    format!(
+        "contact space: W = [[{:.6}, {:.6}], [{:.6}, {:.6}]], v⁻ = ({:.6}, {:.6}); T⁻ = {:.6}",
+        p.wtt(),
+        p.wtn(),
+        p.wtn(),
+        p.wnn(),
+        v.x,
+        v.y,
+        t0
+    )
 }
 
 pub fn run(args: &AuditArgs, out: &mut Vec<u8>) -> CliResult<()> {
@@ -99,11 +141,6 @@ fn build(args: &AuditArgs) -> CliResult<Audit> {
     if mechanism::is_mechanism_toml(&text) {
         return mechanism_audit(source, &mechanism_flags(args));
     }
-    if crate::compare3::is_spatial(&text) {
-        return Err(CliError::input(format!(
-            "{source}: 3D scenarios are not audited yet (use `impax compare {source} --law lcp,energetic`)"
-        )));
-    }
     let m = &args.mechanism;
     for (flag, given) in [
         ("angles-deg", m.angles_deg.is_some()),
@@ -119,6 +156,9 @@ fn build(args: &AuditArgs) -> CliResult<Audit> {
                 "--{flag}: only for a built-in scenario or a mechanism file; edit the body scenario file instead"
             )));
         }
+    }
+    if crate::compare3::is_spatial(&text) {
+        return spatial_audit(source, &text, args);
     }
     body_audit(source, args)
 }
@@ -163,11 +203,12 @@ fn mechanism_audit(source: &str, flags: &MechanismSpec) -> CliResult<Audit> {
         let r = impact.resolve(law, friction, restitution)?;
         rows.push(Row {
             law,
-            result: r
-                .resolution
-                .map(|o| (o, r.velocities_after.expect("applied to the mechanism"))),
+            result: r.resolution.map(|o| {
+                RowData::planar(&o, r.velocities_after.expect("applied to the mechanism"))
+            }),
         });
     }
+    let t0 = impact.energy_before();
     Ok(Audit {
         description: format!("{}; μ = {friction}, e = {restitution}", case.description),
         names: case
@@ -177,8 +218,9 @@ fn mechanism_audit(source: &str, flags: &MechanismSpec) -> CliResult<Audit> {
             .map(|c| format!("{c}'"))
             .collect(),
         before: case.u.clone(),
-        energy_before: impact.energy_before(),
-        problem,
+        energy_before: t0,
+        problem: json::problem(&problem),
+        problem_line: planar_line(&problem, t0),
         rows,
     })
 }
@@ -217,10 +259,11 @@ fn body_audit(source: &str, args: &AuditArgs) -> CliResult<Audit> {
                 if let Some(o) = &b.other_after {
                     v.extend(state(o));
                 }
-                (b.outcome, v)
+                RowData::planar(&b.outcome, v)
             }),
         })
         .collect();
+    let t0 = sc.impact.energy_before().total();
     Ok(Audit {
         description: format!(
             "{}; μ = {}, e = {}",
@@ -228,8 +271,89 @@ fn body_audit(source: &str, args: &AuditArgs) -> CliResult<Audit> {
         ),
         names,
         before,
-        energy_before: sc.impact.energy_before().total(),
-        problem,
+        energy_before: t0,
+        problem: json::problem(&problem),
+        problem_line: planar_line(&problem, t0),
+        rows,
+    })
+}
+
+/// A `space = "3d"` scenario file (`impax compare`'s format): the spatial laws.
+fn spatial_audit(source: &str, text: &str, args: &AuditArgs) -> CliResult<Audit> {
+    let (impact, desc, spec) = crate::compare3::load(source, text)?;
+    let friction = args.friction.unwrap_or(spec.friction);
+    let restitution = args.restitution.unwrap_or(spec.restitution);
+    let problem = impact.problem(friction, restitution)?;
+    let (ea, eb) = impact.energy_before();
+    let t0 = ea.total() + eb.total();
+    let two = impact.other.is_some();
+    let state = |s: &impax::bodies3::BodyState3| {
+        vec![
+            s.velocity.x,
+            s.velocity.y,
+            s.velocity.z,
+            s.omega.x,
+            s.omega.y,
+            s.omega.z,
+        ]
+    };
+    let mut names: Vec<String> = ["vx", "vy", "vz", "omega_x", "omega_y", "omega_z"]
+        .map(String::from)
+        .to_vec();
+    let mut before = state(&impact.body.1);
+    if let Some(o) = &impact.other {
+        names.extend(
+            names
+                .clone()
+                .iter()
+                .map(|n| format!("other.{n}"))
+                .collect::<Vec<_>>(),
+        );
+        before.extend(state(&o.1));
+    }
+    let rows = LAWS
+        .iter()
+        .map(|&law| {
+            let r = impact.resolve(law, &problem);
+            let entry = crate::compare3::entry(&problem, law, &r, t0, two);
+            Row {
+                law,
+                result: r.map(|b| {
+                    let mut v = state(&b.body_after);
+                    if let Some(o) = &b.other_after {
+                        v.extend(state(o));
+                    }
+                    RowData {
+                        verdict: b.outcome.verdict,
+                        energy_change: b.outcome.energy_change,
+                        phases: b.outcome.phases.summary(),
+                        velocities: v,
+                        entry: match entry {
+                            Value::Object(m) => m,
+                            _ => serde_json::Map::new(),
+                        },
+                    }
+                }),
+            }
+        })
+        .collect();
+    let w = problem.w();
+    let v = problem.velocity();
+    Ok(Audit {
+        description: format!("{desc}; μ = {friction}, e = {restitution}"),
+        names,
+        before,
+        energy_before: t0,
+        problem: json!({
+            "w": [[w[(0, 0)], w[(0, 1)], w[(0, 2)]], [w[(1, 0)], w[(1, 1)], w[(1, 2)]], [w[(2, 0)], w[(2, 1)], w[(2, 2)]]],
+            "v": { "t1": num(v.x), "t2": num(v.y), "n": num(v.z) },
+            "friction": friction,
+            "restitution": restitution,
+        }),
+        problem_line: format!(
+            "contact space (3D): W = [[{:.6}, {:.6}, {:.6}], [{:.6}, {:.6}, {:.6}], [{:.6}, {:.6}, {:.6}]], v⁻ = ({:.6}, {:.6}, {:.6}); T⁻ = {:.6}",
+            w[(0, 0)], w[(0, 1)], w[(0, 2)], w[(1, 0)], w[(1, 1)], w[(1, 2)], w[(2, 0)], w[(2, 1)], w[(2, 2)], v.x, v.y, v.z, t0
+        ),
         rows,
     })
 }
@@ -270,7 +394,7 @@ fn judge(audit: &Audit, law: LawId) -> Judgement {
         _ => "an engine of this kind (restitution and Coulomb friction on the total impulse)",
     };
     let (o, u) = match &rule.result {
-        Ok(x) => x,
+        Ok(d) => (d, &d.velocities),
         Err(b) => {
             return Judgement {
                 law,
@@ -284,7 +408,7 @@ fn judge(audit: &Audit, law: LawId) -> Judgement {
         }
     };
     let ratio = (t0 + o.energy_change) / t0;
-    let Ok((r, ur)) = &reference.result else {
+    let Ok(r) = &reference.result else {
         return Judgement {
             law,
             velocity_differences: None,
@@ -296,6 +420,7 @@ fn judge(audit: &Audit, law: LawId) -> Judgement {
         };
     };
     let ref_ratio = (t0 + r.energy_change) / t0;
+    let ur = &r.velocities;
     let diffs: Vec<f64> = u.iter().zip(ur).map(|(a, b)| a - b).collect();
     let scale = audit
         .before
@@ -376,14 +501,14 @@ fn document(audit: &Audit) -> Value {
         .iter()
         .map(|row| {
             let mut m = match &row.result {
-                Ok((o, u)) => {
-                    let mut m = json::outcome_fields(o, "contact_velocity_after");
+                Ok(d) => {
+                    let mut m = d.entry.clone();
                     m.insert(
                         "velocities_after".into(),
-                        json!(u.iter().map(|&x| num(x)).collect::<Vec<_>>()),
+                        json!(d.velocities.iter().map(|&x| num(x)).collect::<Vec<_>>()),
                     );
-                    m.insert("energy_after".into(), num(t0 + o.energy_change));
-                    m.insert("energy_ratio".into(), num((t0 + o.energy_change) / t0));
+                    m.insert("energy_after".into(), num(t0 + d.energy_change));
+                    m.insert("energy_ratio".into(), num((t0 + d.energy_change) / t0));
                     m
                 }
                 Err(b) => {
@@ -418,7 +543,7 @@ fn document(audit: &Audit) -> Value {
         "scenario": audit.description,
         "velocity_names": audit.names,
         "velocities_before": audit.before,
-        "problem": json::problem(&audit.problem),
+        "problem": audit.problem,
         "energy_before": num(t0),
         "reference": REFERENCE.as_str(),
         "results": results,
@@ -443,12 +568,12 @@ fn table(audit: &Audit) -> String {
     for row in &audit.rows {
         let mut cells = vec![row.law.to_string(), role(row.law).to_string()];
         match &row.result {
-            Ok((o, u)) => {
-                cells.extend(u.iter().map(|&x| signed(x, 5)));
-                cells.push(signed(o.energy_change, 5));
-                cells.push(format!("{:.4}", (t0 + o.energy_change) / t0));
-                cells.push(o.phases.summary());
-                cells.push(o.verdict.id().to_string());
+            Ok(d) => {
+                cells.extend(d.velocities.iter().map(|&x| signed(x, 5)));
+                cells.push(signed(d.energy_change, 5));
+                cells.push(format!("{:.4}", (t0 + d.energy_change) / t0));
+                cells.push(d.phases.clone());
+                cells.push(d.verdict.id().to_string());
             }
             Err(_) => {
                 cells.extend(std::iter::repeat_n("—".to_string(), audit.names.len() + 3));
@@ -457,18 +582,9 @@ fn table(audit: &Audit) -> String {
         }
         t.row(cells);
     }
-    let p = &audit.problem;
-    let v = p.velocity();
     let mut s = format!(
-        "impax audit — {}\ncontact space: W = [[{:.6}, {:.6}], [{:.6}, {:.6}]], v⁻ = ({:.6}, {:.6}); T⁻ = {:.6}\n\n",
-        audit.description,
-        p.wtt(),
-        p.wtn(),
-        p.wtn(),
-        p.wnn(),
-        v.x,
-        v.y,
-        t0
+        "impax audit — {}\n{}\n\n",
+        audit.description, audit.problem_line
     );
     s.push_str(&t.render());
     s.push_str("\nexact: the Darboux–Keller integration (energetic: the rigid-body answer); engine: lcp = what sequential-impulse / PGS engines converge to (checked against pymunk), whittaker = restitution + Coulomb on the total impulse\n\n");

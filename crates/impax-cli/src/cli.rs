@@ -38,7 +38,7 @@ pub enum Command {
     /// sequential-impulse engines converge to) and `whittaker`, each engine-style rule's
     /// deviation from `energetic`, and a verdict in words. Built-in scenarios: `sphere`
     /// (μ = 0.4, e = 0.7), `rod` (50°, v = (0.5, −1), μ = 0.8, e = 1), `double-pendulum`
-    /// (μ = e = 0.5); or a TOML scenario (a body or a mechanism).
+    /// (μ = e = 0.5); or a TOML scenario (a body, a mechanism, or a `space = "3d"` body).
     Audit(AuditArgs),
     /// The interactive explorer in the browser: serve the page (the impax core compiled to
     /// WebAssembly) on 127.0.0.1 and print its URL, or write its static files with --out.
@@ -329,7 +329,7 @@ pub struct SimulateArgs {
 #[derive(Debug, Args)]
 pub struct AuditArgs {
     /// `sphere`, `rod`, `double-pendulum`, or a TOML scenario file (a body, as `impax compare`
-    /// reads it, or a mechanism with a `mechanism` key).
+    /// reads it, planar or with `space = "3d"`, or a mechanism with a `mechanism` key).
     pub scenario: String,
     /// Coulomb friction coefficient μ ≥ 0 (overrides the scenario's).
     #[arg(long, allow_hyphen_values = true)]

@@ -193,7 +193,7 @@ fn state(s: &BodyState3) -> Value {
     })
 }
 
-fn entry(
+pub(crate) fn entry(
     problem: &impax::spatial::ContactProblem3,
     law: LawId,
     r: &Result<BodyOutcome3, Breakdown>,
@@ -243,14 +243,8 @@ fn entry(
     }
 }
 
-/// Run `impax compare` on a 3D scenario text; `law_flags` override the file's `laws`.
-pub fn run(
-    source: &str,
-    text: &str,
-    law_flags: &[String],
-    as_json: bool,
-    out: &mut Vec<u8>,
-) -> CliResult<()> {
+/// A 3D scenario text: the impact, its description and the file's coefficients and laws.
+pub(crate) fn load(source: &str, text: &str) -> CliResult<(SpatialImpact, String, Spec3)> {
     let spec: FileSpec = toml::from_str(text)
         .map_err(|e| CliError::input(format!("{source}: {}", e.message().replace('\n', " "))))?;
     if spec.space != "3d" {
@@ -259,6 +253,42 @@ pub fn run(
             spec.space
         )));
     }
+    let (a, sa, mut desc) = build(&spec.body, "body", Side::Below)?;
+    let impact = match &spec.other {
+        None => SpatialImpact::on_fixed_surface(a, sa),
+        Some(o) => {
+            let (b, sb, d) = build(o, "other", Side::Above)?;
+            desc = format!("{desc} striking {d}");
+            SpatialImpact::between(a, sa, b, sb)
+        }
+    };
+    Ok((
+        impact,
+        desc,
+        Spec3 {
+            friction: spec.friction,
+            restitution: spec.restitution,
+            laws: spec.laws,
+        },
+    ))
+}
+
+/// The coefficients and laws of a 3D scenario file.
+pub(crate) struct Spec3 {
+    pub(crate) friction: f64,
+    pub(crate) restitution: f64,
+    pub(crate) laws: Option<Vec<String>>,
+}
+
+/// Run `impax compare` on a 3D scenario text; `law_flags` override the file's `laws`.
+pub fn run(
+    source: &str,
+    text: &str,
+    law_flags: &[String],
+    as_json: bool,
+    out: &mut Vec<u8>,
+) -> CliResult<()> {
+    let (impact, desc, spec) = load(source, text)?;
     let laws = if !law_flags.is_empty() {
         parse_laws(law_flags)?
     } else if let Some(ids) = &spec.laws {
@@ -272,15 +302,6 @@ pub fn run(
             LawId::SPATIAL.map(|l| l.as_str()).join(", ")
         )));
     }
-    let (a, sa, mut desc) = build(&spec.body, "body", Side::Below)?;
-    let impact = match &spec.other {
-        None => SpatialImpact::on_fixed_surface(a, sa),
-        Some(o) => {
-            let (b, sb, d) = build(o, "other", Side::Above)?;
-            desc = format!("{desc} striking {d}");
-            SpatialImpact::between(a, sa, b, sb)
-        }
-    };
     let problem = impact.problem(spec.friction, spec.restitution)?;
     let (ea, eb) = impact.energy_before();
     let t0 = if ea.translational + eb.translational > 0.0 {

@@ -1,7 +1,8 @@
-//! `impax audit`: the built-in sphere, rod and double pendulum, TOML scenarios (a body and a
-//! mechanism), the JSON contract, and bad input (one line on stderr, exit code 2).
+//! `impax audit`: the built-in sphere, rod and double pendulum, TOML scenarios (a body, a
+//! mechanism and a 3D body), the JSON contract, and bad input (one line on stderr, exit
+//! code 2).
 //!
-//! The rod is the case (uniform rod at 50° to the floor, μ = 0.8, e = 1, translating
+//! The rod is the built-in `rod` (uniform rod at 50° to the floor, μ = 0.8, e = 1, translating
 //! at (0.5, −1)): `lcp` gains 18.3 % (T⁺/T⁻ = 1.1835, the figure pymunk gives too), equal to
 //! `newton` because both stick; `energetic` dissipates 4.3 %.
 
@@ -227,7 +228,14 @@ fn bad_input_one_line_exit_2() {
         "s3.toml",
         "space = \"3d\"\nfriction = 0.5\nrestitution = 0.5\n[body]\nshape = \"sphere\"\nmass = 1.0\nradius = 1.0\nvelocity = [0.5, 0.0, -1.0]\nomega = [0.0, 0.0, 0.0]\n",
     );
-    bad(&["audit", space.path()], "3D");
+    bad(
+        &["audit", space.path(), "--angles-deg", "30,0"],
+        "--angles-deg",
+    );
+    bad(
+        &["audit", space.path(), "--restitution", "2"],
+        "restitution",
+    );
     let broken = Temp::new("broken.toml", "friction = \n");
     bad(&["audit", broken.path()], "broken.toml");
     bad(&["audit"], "SCENARIO");
@@ -291,4 +299,41 @@ fn sweep_and_map_show_the_lcp_gain_region() {
     let png = std::fs::read(&out).unwrap();
     let _ = std::fs::remove_file(&out);
     assert_eq!(&png[..8], b"\x89PNG\r\n\x1a\n");
+}
+
+/// A 3D scenario: the seed's sphere in 3D gives the planar audit's energy ratios (the
+/// sphere's W = diag(7/2, 7/2, 1) decouples the second tangent); a tilted box is audited
+/// with the spatial laws, its `lcp` entry listing every solution.
+#[test]
+fn spatial_scenarios() {
+    let (s, c) = 30f64.to_radians().sin_cos();
+    let sphere = Temp::new(
+        "sphere3.toml",
+        &format!("space = \"3d\"\nfriction = 0.4\nrestitution = 0.7\n[body]\nshape = \"sphere\"\nmass = 1.0\nradius = 1.0\nvelocity = [{s:?}, 0.0, {:?}]\nomega = [0.0, 0.0, 0.0]\n", -c),
+    );
+    let doc = json_ok(&["audit", sphere.path(), "--json"]);
+    let planar = json_ok(&["audit", "sphere", "--json"]);
+    for law in ["newton", "poisson", "energetic", "lcp", "whittaker"] {
+        assert!(
+            (ratio(&doc, law) - ratio(&planar, law)).abs() < 1e-9,
+            "{law}"
+        );
+    }
+    assert_eq!(engine(&doc, "lcp")["verdict"]["id"], "matches");
+    let boxed = Temp::new(
+        "box3.toml",
+        "space = \"3d\"\nfriction = 0.8\nrestitution = 1.0\n[body]\nshape = \"box\"\nmass = 1.0\nhalf_extents = [1.0, 0.2, 0.1]\norientation_deg = [10.0, 40.0, 25.0]\nvelocity = [0.5, 0.3, -1.0]\nomega = [0.0, 0.0, 0.0]\n",
+    );
+    let doc = json_ok(&["audit", boxed.path(), "--json"]);
+    assert_eq!(
+        doc["velocity_names"],
+        serde_json::json!(["vx", "vy", "vz", "omega_x", "omega_y", "omega_z"])
+    );
+    assert!(!result(&doc, "lcp")["all_solutions"]
+        .as_array()
+        .unwrap()
+        .is_empty());
+    assert_eq!(doc["problem"]["w"].as_array().unwrap().len(), 3);
+    let text = run_ok(&["audit", boxed.path(), "--friction", "0.3"]);
+    assert!(text.contains("contact space (3D)") && text.contains("μ = 0.3"));
 }

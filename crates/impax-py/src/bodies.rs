@@ -56,11 +56,18 @@ impl BodyImpact {
     fn new(
         body: RigidBody2,
         state: BodyState2,
+        other: Option<&Body>,
         friction: f64,
         restitution: f64,
         description: String,
     ) -> PyResult<Self> {
-        let impact = PlanarImpact::on_fixed_surface(body, state);
+        let (impact, description) = match other {
+            None => (PlanarImpact::on_fixed_surface(body, state), description),
+            Some(o) => (
+                PlanarImpact::between(body, state, o.body, o.state),
+                format!("{description} striking {}", o.description),
+            ),
+        };
         let problem = lib(impact.problem(friction, restitution))?;
         let before = impact.energy_before();
         let t0 = if before.translational > 0.0 {
@@ -78,9 +85,14 @@ impl BodyImpact {
 
     fn outcome(&self, law: LawId) -> Outcome {
         let r = self.impact.resolve(law, &self.problem);
-        let (raw, body_after, split) = match r {
-            Ok(b) => (Ok(b.outcome), Some(b.body_after), Some(b.energy_change)),
-            Err(e) => (Err(e), None, None),
+        let (raw, body_after, other_after, split) = match r {
+            Ok(b) => (
+                Ok(b.outcome),
+                Some(b.body_after),
+                b.other_after,
+                Some(b.energy_change),
+            ),
+            Err(e) => (Err(e), None, None, None),
         };
         Outcome {
             law,
@@ -88,10 +100,11 @@ impl BodyImpact {
             approach_energy: self.problem.approach_energy(),
             context: Context::Body {
                 body_after,
-                other_after: None,
-                two_bodies: false,
+                other_after,
+                two_bodies: self.impact.other.is_some(),
                 split,
                 t0: self.t0,
+                energy_before: self.impact.energy_before().total(),
             },
         }
     }
@@ -347,7 +360,7 @@ fn direct_state(
 /// or `velocity=(vx, vy)` and `omega` directly. `W = (1/m) diag(7/2, 1)`. With no arguments:
 /// the seed's case (m = r = v0 = 1, α = 30°, γ = 0, μ = 0.4, e = 0.7).
 #[pyfunction]
-#[pyo3(signature = (mass = 1.0, radius = 1.0, *, speed = None, alpha = None, spin_ratio = None, velocity = None, omega = None, friction = SEED_FRICTION, restitution = SEED_RESTITUTION))]
+#[pyo3(signature = (mass = 1.0, radius = 1.0, *, speed = None, alpha = None, spin_ratio = None, velocity = None, omega = None, friction = SEED_FRICTION, restitution = SEED_RESTITUTION, other = None))]
 #[allow(clippy::too_many_arguments)]
 pub fn sphere(
     mass: f64,
@@ -359,12 +372,14 @@ pub fn sphere(
     omega: Option<f64>,
     friction: f64,
     restitution: f64,
+    other: Option<PyRef<'_, Body>>,
 ) -> PyResult<BodyImpact> {
     let body = lib(bodies::sphere(mass, radius, Side::Below))?;
     let (state, d) = round_state(radius, speed, alpha, spin_ratio, velocity, omega)?;
     BodyImpact::new(
         body,
         state,
+        other.as_deref(),
         friction,
         restitution,
         format!("sphere m = {mass}, r = {radius}, {d}"),
@@ -373,7 +388,7 @@ pub fn sphere(
 
 /// A uniform disc (`I = ½ m r²`) striking a fixed line; the state as for `sphere`.
 #[pyfunction]
-#[pyo3(signature = (mass = 1.0, radius = 1.0, *, speed = None, alpha = None, spin_ratio = None, velocity = None, omega = None, friction = SEED_FRICTION, restitution = SEED_RESTITUTION))]
+#[pyo3(signature = (mass = 1.0, radius = 1.0, *, speed = None, alpha = None, spin_ratio = None, velocity = None, omega = None, friction = SEED_FRICTION, restitution = SEED_RESTITUTION, other = None))]
 #[allow(clippy::too_many_arguments)]
 pub fn disc(
     mass: f64,
@@ -385,12 +400,14 @@ pub fn disc(
     omega: Option<f64>,
     friction: f64,
     restitution: f64,
+    other: Option<PyRef<'_, Body>>,
 ) -> PyResult<BodyImpact> {
     let body = lib(bodies::disc(mass, radius, Side::Below))?;
     let (state, d) = round_state(radius, speed, alpha, spin_ratio, velocity, omega)?;
     BodyImpact::new(
         body,
         state,
+        other.as_deref(),
         friction,
         restitution,
         format!("disc m = {mass}, r = {radius}, {d}"),
@@ -400,7 +417,8 @@ pub fn disc(
 /// A uniform thin rod of length `L` at `angle` (radians, 0 < angle < π) from the surface,
 /// striking with its lower end: `I = m L²/12`, contact at `r = −(L/2)(cos θ, sin θ)`.
 #[pyfunction]
-#[pyo3(signature = (mass = 1.0, length = 1.0, angle = 50f64.to_radians(), *, velocity = (0.5, -1.0), omega = 0.0, friction = SEED_FRICTION, restitution = SEED_RESTITUTION))]
+#[pyo3(signature = (mass = 1.0, length = 1.0, angle = 50f64.to_radians(), *, velocity = (0.5, -1.0), omega = 0.0, friction = SEED_FRICTION, restitution = SEED_RESTITUTION, other = None))]
+#[allow(clippy::too_many_arguments)]
 pub fn rod(
     mass: f64,
     length: f64,
@@ -409,12 +427,14 @@ pub fn rod(
     omega: f64,
     friction: f64,
     restitution: f64,
+    other: Option<PyRef<'_, Body>>,
 ) -> PyResult<BodyImpact> {
     let body = lib(bodies::rod(mass, length, angle, Side::Below))?;
     let (state, d) = direct_state(Some(velocity), Some(omega))?;
     BodyImpact::new(
         body,
         state,
+        other.as_deref(),
         friction,
         restitution,
         format!("rod m = {mass}, L = {length}, at {angle} rad to the surface, {d}"),
@@ -424,7 +444,7 @@ pub fn rod(
 /// A uniform elliptical disc with semi-axes `a`, `b`, its `a` axis at `angle` (radians) from
 /// the surface, striking with its support point: `I = m (a² + b²)/4`.
 #[pyfunction]
-#[pyo3(signature = (mass = 1.0, a = 2.0, b = 1.0, angle = 0.0, *, velocity = (0.5, -1.0), omega = 0.0, friction = SEED_FRICTION, restitution = SEED_RESTITUTION))]
+#[pyo3(signature = (mass = 1.0, a = 2.0, b = 1.0, angle = 0.0, *, velocity = (0.5, -1.0), omega = 0.0, friction = SEED_FRICTION, restitution = SEED_RESTITUTION, other = None))]
 #[allow(clippy::too_many_arguments)]
 pub fn ellipse(
     mass: f64,
@@ -435,12 +455,14 @@ pub fn ellipse(
     omega: f64,
     friction: f64,
     restitution: f64,
+    other: Option<PyRef<'_, Body>>,
 ) -> PyResult<BodyImpact> {
     let body = lib(bodies::ellipse(mass, a, b, angle, Side::Below))?;
     let (state, d) = direct_state(Some(velocity), Some(omega))?;
     BodyImpact::new(
         body,
         state,
+        other.as_deref(),
         friction,
         restitution,
         format!("ellipse m = {mass}, a = {a}, b = {b}, at {angle} rad, {d}"),
@@ -450,7 +472,8 @@ pub fn ellipse(
 /// Any planar rigid body: mass, central moment of inertia and the contact point
 /// `contact = (r_t, r_n)` relative to the centre of mass, in the contact frame.
 #[pyfunction]
-#[pyo3(signature = (mass, inertia, contact, *, velocity = (0.5, -1.0), omega = 0.0, friction = SEED_FRICTION, restitution = SEED_RESTITUTION))]
+#[pyo3(signature = (mass, inertia, contact, *, velocity = (0.5, -1.0), omega = 0.0, friction = SEED_FRICTION, restitution = SEED_RESTITUTION, other = None))]
+#[allow(clippy::too_many_arguments)]
 pub fn rigid_body(
     mass: f64,
     inertia: f64,
@@ -459,6 +482,7 @@ pub fn rigid_body(
     omega: f64,
     friction: f64,
     restitution: f64,
+    other: Option<PyRef<'_, Body>>,
 ) -> PyResult<BodyImpact> {
     let body = lib(RigidBody2::new(
         mass,
@@ -469,6 +493,7 @@ pub fn rigid_body(
     BodyImpact::new(
         body,
         state,
+        other.as_deref(),
         friction,
         restitution,
         format!(
@@ -476,6 +501,134 @@ pub fn rigid_body(
             contact.0, contact.1
         ),
     )
+}
+
+/// A struck body B: a free planar body met at its highest point (`Side::Above`), with its
+/// state; the `other=` of a body constructor (two free bodies: `W = W_A + W_B`, the relative
+/// contact velocity `v_A − v_B`, impulse `p` on A and `−p` on B).
+#[pyclass(frozen, module = "impax._impax")]
+pub struct Body {
+    body: RigidBody2,
+    state: BodyState2,
+    description: String,
+}
+
+#[pymethods]
+impl Body {
+    /// One line describing the body and its state.
+    #[getter]
+    fn description(&self) -> &str {
+        &self.description
+    }
+
+    /// The body's contact-space inverse inertia `W_B` at its contact point.
+    #[getter]
+    fn w<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        matrix(py, self.body.inverse_inertia())
+    }
+
+    fn __repr__(&self) -> String {
+        format!("Body({})", self.description)
+    }
+}
+
+/// A struck body B for `other=` (the `[other]` table of a scenario file): `shape` is
+/// `sphere`, `disc` (`radius`), `rod` (`length`, `angle` from the surface), `ellipse`
+/// (`semi_axes`, `angle`) or `rigid` (`inertia`, `contact` from the centre), met at its highest
+/// point; `velocity` and `omega` its state (default: at rest). Angles in radians.
+#[pyfunction]
+#[pyo3(signature = (shape, mass = 1.0, *, radius = None, length = None, angle = None, semi_axes = None, inertia = None, contact = None, velocity = (0.0, 0.0), omega = 0.0))]
+#[allow(clippy::too_many_arguments)]
+pub fn body(
+    shape: &str,
+    mass: f64,
+    radius: Option<f64>,
+    length: Option<f64>,
+    angle: Option<f64>,
+    semi_axes: Option<(f64, f64)>,
+    inertia: Option<f64>,
+    contact: Option<(f64, f64)>,
+    velocity: (f64, f64),
+    omega: f64,
+) -> PyResult<Body> {
+    let need = |field: &str, x: Option<f64>| {
+        x.ok_or_else(|| value_error(format!("{field}: required for shape `{shape}`")))
+    };
+    let reject = |field: &str, present: bool| {
+        if present {
+            Err(value_error(format!(
+                "{field}: not a parameter of shape `{shape}`"
+            )))
+        } else {
+            Ok(())
+        }
+    };
+    let side = Side::Above;
+    let (b, what) = match shape {
+        "sphere" | "disc" => {
+            let r = need("radius", radius)?;
+            reject("length", length.is_some())?;
+            reject("angle", angle.is_some())?;
+            reject("semi_axes", semi_axes.is_some())?;
+            reject("inertia", inertia.is_some())?;
+            reject("contact", contact.is_some())?;
+            let b = if shape == "sphere" {
+                bodies::sphere(mass, r, side)
+            } else {
+                bodies::disc(mass, r, side)
+            };
+            (lib(b)?, format!("{shape} m = {mass}, r = {r}"))
+        }
+        "rod" => {
+            let l = need("length", length)?;
+            let a = need("angle", angle)?;
+            reject("radius", radius.is_some())?;
+            reject("semi_axes", semi_axes.is_some())?;
+            reject("inertia", inertia.is_some())?;
+            reject("contact", contact.is_some())?;
+            (
+                lib(bodies::rod(mass, l, a, side))?,
+                format!("rod m = {mass}, L = {l}, at {a} rad"),
+            )
+        }
+        "ellipse" => {
+            let (sa, sb) =
+                semi_axes.ok_or_else(|| value_error("semi_axes: required for shape `ellipse`"))?;
+            let a = angle.unwrap_or(0.0);
+            reject("radius", radius.is_some())?;
+            reject("length", length.is_some())?;
+            reject("inertia", inertia.is_some())?;
+            reject("contact", contact.is_some())?;
+            (
+                lib(bodies::ellipse(mass, sa, sb, a, side))?,
+                format!("ellipse m = {mass}, a = {sa}, b = {sb}, at {a} rad"),
+            )
+        }
+        "rigid" => {
+            let i = need("inertia", inertia)?;
+            let (rt, rn) =
+                contact.ok_or_else(|| value_error("contact: required for shape `rigid`"))?;
+            reject("radius", radius.is_some())?;
+            reject("length", length.is_some())?;
+            reject("semi_axes", semi_axes.is_some())?;
+            reject("angle", angle.is_some())?;
+            (
+                lib(RigidBody2::new(mass, i, Vec2::new(rt, rn)))?,
+                format!("rigid body m = {mass}, I = {i}, contact at ({rt}, {rn})"),
+            )
+        }
+        other => {
+            return Err(value_error(format!(
+                "shape: unknown shape `{other}` (known: sphere, disc, rod, ellipse, rigid)"
+            )))
+        }
+    };
+    let (state, d) = direct_state(Some(velocity), Some(omega))?;
+    Ok(Body {
+        body: b,
+        state,
+        description: format!("{what}, {d}"),
+    })
 }
 
 fn values(field: &str, v: Option<Vec<f64>>, default: &[f64]) -> PyResult<Vec<f64>> {
@@ -666,6 +819,7 @@ pub fn compare<'py>(
                     None,
                     SEED_FRICTION,
                     SEED_RESTITUTION,
+                    None,
                 )?,
             )?;
             seed.into_any()

@@ -9,7 +9,9 @@
 //! * [`batch`]: `resolve_batch` — many problems on numpy arrays, the GIL released, rayon
 //!   inside, no allocation per row;
 //! * [`bodies`]: `sphere`, `disc`, `rod`, `ellipse`, `rigid_body`, `double_pendulum`,
-//!   `mechanism`, and `compare` — every law side by side, as `impax compare --json`.
+//!   `mechanism`, and `compare` — every law side by side, as `impax compare --json`;
+//! * [`scenarios`]: `rod_rows`, `sphere_rows` — the rows of many bodies at once, for
+//!   `impax.study`.
 
 use pyo3::prelude::*;
 
@@ -17,6 +19,7 @@ mod batch;
 mod bodies;
 mod convert;
 mod outcome;
+mod scenarios;
 mod single;
 
 /// The `impax._impax` extension module.
@@ -52,6 +55,7 @@ fn _impax(m: &Bound<'_, PyModule>) -> PyResult<()> {
         impax::mechanism::builtin::BuiltIn::NAMES.to_vec(),
     )?;
     m.add_class::<outcome::Outcome>()?;
+    m.add_class::<bodies::Body>()?;
     m.add_class::<bodies::BodyImpact>()?;
     m.add_class::<bodies::MechanismImpact>()?;
     m.add_function(wrap_pyfunction!(single::resolve, m)?)?;
@@ -61,8 +65,11 @@ fn _impax(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(bodies::rod, m)?)?;
     m.add_function(wrap_pyfunction!(bodies::ellipse, m)?)?;
     m.add_function(wrap_pyfunction!(bodies::rigid_body, m)?)?;
+    m.add_function(wrap_pyfunction!(bodies::body, m)?)?;
     m.add_function(wrap_pyfunction!(bodies::double_pendulum, m)?)?;
     m.add_function(wrap_pyfunction!(bodies::mechanism, m)?)?;
     m.add_function(wrap_pyfunction!(bodies::compare, m)?)?;
+    m.add_function(wrap_pyfunction!(scenarios::rod_rows, m)?)?;
+    m.add_function(wrap_pyfunction!(scenarios::sphere_rows, m)?)?;
     Ok(())
 }

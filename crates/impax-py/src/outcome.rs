@@ -36,6 +36,8 @@ pub enum Context {
         split: Option<EnergyParts>,
         /// The normalisation `T0`.
         t0: f64,
+        /// Kinetic energy of the bodies before, `Σ ½ m |v|² + ½ I ω²`.
+        energy_before: f64,
     },
     /// A mechanism — `impax compare MECHANISM --json`.
     Mechanism {
@@ -416,6 +418,19 @@ impl Outcome {
                 Ok(Some(d))
             }
             _ => Ok(None),
+        }
+    }
+
+    /// Kinetic energy before the impact: of the bodies (`½ m |v|² + ½ I ω²`) or of the
+    /// mechanism (`½ u⁻ᵀ M u⁻`); `None` in contact space, where only `approach_energy` is
+    /// defined.
+    #[getter]
+    fn energy_before(&self) -> Option<f64> {
+        match &self.context {
+            Context::Contact => None,
+            Context::Body { energy_before, .. } | Context::Mechanism { energy_before, .. } => {
+                Some(*energy_before)
+            }
         }
     }
 

@@ -34,6 +34,8 @@ def test_seed_compare_equals_cli(cli):
         assert_close(py, r, r["law"])
     seed = impax.sphere()
     assert_close(seed.energy_before, ref["energy_before"])
+    assert_close(seed.resolve("newton").energy_before, ref["energy_before"])
+    assert impax.resolve(SEED_W, SEED_V, 0.4, 0.7).energy_before is None
     assert_close(seed.t0, ref["t0"])
     assert_close(seed.w.tolist(), ref["problem"]["w"])
     # The paradox itself: Whittaker gains ΔT/T0 = +0.2424, the exact laws lose 0.4539.
@@ -111,6 +113,7 @@ def test_double_pendulum_equals_cli(cli, tmp_path):
     for py, r in zip(rows, ref["results"]):
         assert_close(py, r, r["law"])
     assert_close(m.energy_before, ref["energy_before"])
+    assert_close(m.resolve("poisson").energy_before, ref["energy_before"])
     assert_close(m.w.tolist(), ref["problem"]["w"])
     # Kane & Levinson: Whittaker's T⁺/T⁻ = 1.26087.
     assert abs(rows[0]["energy_ratio"] - 1.26087) < 5e-6
@@ -151,3 +154,41 @@ def test_sphere_flags_equal_cli(cli, gamma):
     body = impax.sphere(alpha=math.radians(45), spin_ratio=gamma, friction=0.3)
     for py, r in zip(impax.compare(body), ref["results"]):
         assert_close(py, r, r["law"])
+
+
+def test_two_free_bodies_equal_cli(cli, tmp_path):
+    """Body against body (`[other]` in a scenario, `other=impax.body(...)` here):
+    W = W_A + W_B, v = v_A − v_B, impulse p on A and −p on B."""
+    toml = tmp_path / "pair.toml"
+    toml.write_text(
+        "friction = 0.4\nrestitution = 0.7\n[body]\nshape = \"sphere\"\nmass = 1.0\nradius = 1.0\n"
+        "speed = 1.0\nalpha_deg = 30.0\nspin_ratio = 0.0\n"
+        "[other]\nshape = \"disc\"\nmass = 2.0\nradius = 1.0\nvelocity = [0.0, 0.0]\nomega = 0.0\n"
+    )
+    ref = cli.json("compare", str(toml))
+    pair = impax.sphere(alpha=math.radians(30), other=impax.body("disc", 2.0, radius=1.0))
+    assert_close(pair.w.tolist(), ref["problem"]["w"])
+    assert_close(pair.energy_before, ref["energy_before"])
+    rows = impax.compare(pair)
+    for py, r in zip(rows, ref["results"]):
+        assert_close(py, r, r["law"])
+    toml.write_text(
+        "friction = 0.8\nrestitution = 0.3\n[body]\nshape = \"rod\"\nmass = 1.5\nlength = 2.0\n"
+        "angle_deg = 60.0\nvelocity = [0.3, -1.0]\nomega = 0.5\n"
+        "[other]\nshape = \"rigid\"\nmass = 3.0\ninertia = 0.8\ncontact = [0.2, 0.5]\n"
+        "velocity = [0.1, 0.2]\nomega = -0.3\n"
+    )
+    ref = cli.json("compare", str(toml))
+    other = impax.body("rigid", 3.0, inertia=0.8, contact=(0.2, 0.5), velocity=(0.1, 0.2), omega=-0.3)
+    pair = impax.rod(1.5, 2.0, math.radians(60), velocity=(0.3, -1.0), omega=0.5, friction=0.8, restitution=0.3, other=other)
+    rows = impax.compare(pair)
+    for py, r in zip(rows, ref["results"]):
+        assert_close(py, r, r["law"])
+    # Momentum: m_A Δv_A = p = −m_B Δv_B.
+    for r in rows:
+        if r["verdict"] == "breakdown":
+            continue
+        p = (r["impulse"]["t"], r["impulse"]["n"])
+        a, b = r["body_velocity_after"], r["other_body_velocity_after"]
+        assert abs(1.5 * (a["vx"] - 0.3) - p[0]) < 1e-12 and abs(1.5 * (a["vy"] + 1.0) - p[1]) < 1e-12
+        assert abs(3.0 * (b["vx"] - 0.1) + p[0]) < 1e-12 and abs(3.0 * (b["vy"] - 0.2) + p[1]) < 1e-12

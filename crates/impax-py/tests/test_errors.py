@@ -172,3 +172,17 @@ def test_edge_arrays_do_not_panic():
     c = impax.resolve_batch(np.asfortranarray(w), v, f, r, "poisson")
     d = impax.resolve_batch(w, v, f, r, "poisson")
     assert np.array_equal(c["energy_change"], d["energy_change"], equal_nan=True)
+
+
+def test_struck_body_errors():
+    with pytest.raises(ValueError, match=r"^length: required for shape `rod`$"):
+        impax.body("rod", 1.0, angle=1.0)
+    with pytest.raises(ValueError, match=r"^radius: not a parameter of shape `rod`$"):
+        impax.body("rod", 1.0, length=1.0, angle=1.0, radius=1.0)
+    with pytest.raises(ValueError, match=r"^shape: unknown shape `cube` \(known: sphere, disc, rod, ellipse, rigid\)$"):
+        impax.body("cube")
+    with pytest.raises(ValueError, match=r"^mass: -1(\.0)? is out of range: must be > 0$"):
+        impax.body("disc", -1.0, radius=1.0)
+    # B moving down faster than A: the contact separates, no impact.
+    with pytest.raises(ValueError, match=r"^v: the normal contact velocity must be negative"):
+        impax.sphere(other=impax.body("disc", radius=1.0, velocity=(0.0, -5.0)))

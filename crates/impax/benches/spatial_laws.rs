@@ -1,6 +1,7 @@
 //! Spatial Darboux–Keller impacts (energetic): one with swirl then stick, one with slip
 //! resumed along the centrifugal ray, one slipping throughout with swirl, and the sphere
-//! (no swirl; straight run in closed form). Run: `cargo bench -p impax --bench spatial_laws`.
+//! (no swirl; straight run in closed form); and the engine rule `lcp` on the same problems.
+//! Run: `cargo bench -p impax --bench spatial_laws`.
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use impax::spatial::{ContactProblem3, Detail3};
@@ -52,6 +53,14 @@ fn bench(c: &mut Criterion) {
         eprintln!("{name}: {} ({steps} steps)", o.phases.summary());
         g.bench_function(name, |b| {
             b.iter(|| black_box(LawId::Energetic.resolve3(black_box(&p))))
+        });
+    }
+    g.finish();
+    // The engine rule on the same problems: the slip-angle roots (256 samples, bisection).
+    let mut g = c.benchmark_group("spatial-lcp");
+    for (name, p) in cases() {
+        g.bench_function(name, |b| {
+            b.iter(|| black_box(LawId::Lcp.resolve3(black_box(&p))))
         });
     }
     g.finish();

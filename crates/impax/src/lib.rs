@@ -1,8 +1,9 @@
 //! # impax — rigid-body impact with friction
 //!
 //! Every classical frictional impact law side by side, the energy-consistent ones exact:
-//! `whittaker`, `two-phase`, `smith`, `brach` and the Darboux–Keller integration in normal
-//! impulse terminated by `newton`, `poisson` or `energetic` restitution.
+//! `whittaker`, `two-phase`, `smith`, `brach`, the Darboux–Keller integration in normal
+//! impulse terminated by `newton`, `poisson` or `energetic` restitution, and `lcp`, the
+//! velocity-level complementarity impact that physics engines converge to.
 //!
 //! ## Conventions
 //! Contact frame: tangent first, normal last; the normal points out of the struck surface;

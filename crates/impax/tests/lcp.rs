@@ -13,7 +13,7 @@
 //!   impulse (uniqueness);
 //! * it equals Darboux–Keller `newton` whenever `newton`'s slip does not reverse (slip
 //!   throughout, or slip then stick), and differs when it reverses;
-//! * mirror symmetry, frictionless `p_n = −(1+e) v_n⁻/W_nn`, and the rod case of the issue
+//! * mirror symmetry, frictionless `p_n = −(1+e) v_n⁻/W_nn`, and the audit's rod (`impax audit rod`)
 //!   (`T⁺/T⁻ = 1.183466`, from the hand-derived sticking impulse).
 
 use impax::planar::laws::{ImpactLaw, Lcp};
@@ -236,12 +236,12 @@ fn mirror_symmetry_and_frictionless() {
     }
 }
 
-/// The issue's rod: uniform rod (m = 1, l = 1, I = 1/12) at 50° to the floor, lower end on
+/// The audit's rod (`impax audit rod`): uniform rod (m = 1, l = 1, I = 1/12) at 50° to the floor, lower end on
 /// the floor, translating at (0.5, −1), μ = 0.8, e = 1. By hand: the sticking impulse is
 /// `W⁻¹ (−0.5, 2)`; its ratio is inside the cone, so the engine rule sticks and
 /// `T⁺ = T⁻ + ½ (v⁻ + v⁺)·p` with `v⁺ = (0, 1)`.
 #[test]
-fn the_issue_rod_gains_energy() {
+fn the_audit_rod_gains_energy() {
     let th = 50f64.to_radians();
     let (rt, rn) = (-0.5 * th.cos(), -0.5 * th.sin());
     let i = 1.0 / 12.0;

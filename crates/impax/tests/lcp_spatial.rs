@@ -336,3 +336,42 @@ fn three_solution_problem() -> ContactProblem3 {
     )
     .unwrap()
 }
+
+/// Badly scaled problems: W entries over four decades (a long thin body struck near its
+/// end), tiny and large velocities, μ up to 5. A solution always exists and satisfies the
+/// conditions to 1e-10 relative (the conditioning of W enters the residual).
+#[test]
+fn badly_scaled_problems_still_solve() {
+    let mut rng = SplitMix64(4242);
+    let mut worst = 0.0f64;
+    for _ in 0..5_000 {
+        let mut l = Mat3::zeros();
+        for i in 0..3 {
+            for j in 0..=i {
+                l[(i, j)] = if i == j {
+                    10f64.powf(rng.range(-2.0, 2.0))
+                } else {
+                    rng.range(-1.0, 1.0) * 10f64.powf(rng.range(-2.0, 2.0))
+                };
+            }
+        }
+        let w = l * l.transpose();
+        let s = 10f64.powf(rng.range(-3.0, 3.0));
+        let v = Vec3::new(
+            s * rng.range(-2.0, 2.0),
+            s * rng.range(-2.0, 2.0),
+            -s * rng.range(0.01, 2.0),
+        );
+        let Ok(p) = ContactProblem3::new(w, v, rng.range(0.0, 5.0), rng.unit()) else {
+            continue;
+        };
+        let sols = solutions(&p);
+        assert!(!sols.is_empty(), "no solution for {p:?}");
+        for x in &sols {
+            let r = residual(&p, x);
+            worst = worst.max(r);
+            assert!(r < 1e-10, "residual {r:e} for {p:?}");
+        }
+    }
+    println!("badly scaled: worst residual {worst:.2e}");
+}

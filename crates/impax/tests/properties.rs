@@ -613,6 +613,18 @@ fn check_balance(
 }
 
 /// Check every law on one impact.
+/// The 2-norm condition number `λ_max / λ_min` of the problem's `W` (symmetric positive
+/// definite: its eigenvalues are `tr/2 ± √((tr/2)² − det)`).
+fn condition_number(p: &ContactProblem) -> f64 {
+    let (a, b, c) = (p.wtt(), p.wtn(), p.wnn());
+    let half = 0.5 * (a + c);
+    let det = a * c - b * b;
+    let root = (0.25 * (a - c) * (a - c) + b * b).sqrt();
+    let max = half + root;
+    // λ_min = det / λ_max, free of the cancellation of half − root.
+    max / (det / max)
+}
+
 fn check_impact(impact: &PlanarImpact, mu: f64, e: f64) -> Result<usize, TestCaseError> {
     let problem = impact.problem(mu, e).unwrap();
     // The problem is built from the bodies as theory §1 says.
@@ -624,6 +636,7 @@ fn check_impact(impact: &PlanarImpact, mu: f64, e: f64) -> Result<usize, TestCas
     prop_assert!(
         rel(problem.velocity().x, v.x) <= 1e-14 && rel(problem.velocity().y, v.y) <= 1e-14
     );
+    let kappa = condition_number(&problem);
     let mut resolved = 0;
     for law in LawId::ALL {
         let res: Result<BodyOutcome, _> = impact.resolve(law, &problem);
@@ -650,7 +663,11 @@ fn check_impact(impact: &PlanarImpact, mu: f64, e: f64) -> Result<usize, TestCas
             (None, None) => {}
             _ => return Err(TestCaseError::fail(format!("{law}: body B mismatch"))),
         }
-        let tol = 1e-12 * t_scale.max(1.0);
+        // The impulse of a law is found in contact space, the energies from the body states:
+        // they agree to round-off amplified by the conditioning of W (a light body with a
+        // small inertia struck far from its centre has κ(W) in the thousands).
+        let rel_tol = 1e-12f64.max(16.0 * f64::EPSILON * kappa);
+        let tol = rel_tol * t_scale.max(1.0);
         prop_assert!(
             (bo.energy_change.translational - dt).abs() <= tol,
             "{law}: ΔT₁ {} vs {dt}",
@@ -669,7 +686,7 @@ fn check_impact(impact: &PlanarImpact, mu: f64, e: f64) -> Result<usize, TestCas
         );
         let vscale = velocity_scale(&problem, p);
         prop_assert!(
-            (v_after - o.velocity_after).abs().max() <= 1e-12 * vscale,
+            (v_after - o.velocity_after).abs().max() <= rel_tol * vscale,
             "{law}: contact velocity from the states {v_after:?} vs velocity_after {:?}",
             o.velocity_after
         );

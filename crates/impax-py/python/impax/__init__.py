@@ -13,7 +13,8 @@ normal last; approach means ``v_n < 0``; the impulse ``p`` acts on the moving bo
 * :func:`resolve` — one problem, an :class:`Outcome`;
 * :func:`resolve_batch` — many problems on numpy arrays, in parallel with the GIL released;
 * :func:`sphere`, :func:`disc`, :func:`rod`, :func:`ellipse`, :func:`rigid_body`,
-  :func:`double_pendulum`, :func:`mechanism` — bodies and mechanisms producing problems;
+  :func:`double_pendulum`, :func:`mechanism` — bodies and mechanisms producing problems
+  (:func:`body` — a struck free body, the ``other=`` of a body: body against body);
 * :func:`compare` — every law side by side, as ``impax compare --json``;
 * :mod:`impax.study` — parameter spaces (grids, random samples) of built-in scenarios, run
   in chunks, reduced;
@@ -30,10 +31,12 @@ from ._impax import (
     SEQUENCES_3D,
     SPATIAL_LAWS,
     STATUSES,
+    Body,
     BodyImpact,
     MechanismImpact,
     Outcome,
     __version__,
+    body,
     compare,
     disc,
     double_pendulum,
@@ -55,10 +58,12 @@ __all__ = [
     "SEQUENCES_3D",
     "SPATIAL_LAWS",
     "STATUSES",
+    "Body",
     "BodyImpact",
     "MechanismImpact",
     "Outcome",
     "__version__",
+    "body",
     "compare",
     "disc",
     "double_pendulum",

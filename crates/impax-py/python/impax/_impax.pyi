@@ -56,6 +56,10 @@ class Outcome:
     def energy_change(self) -> float | None:
         """``ΔT = v⁻·p + ½ pᵀ W p`` (exact for any impulse; theory §1)."""
     @property
+    def energy_before(self) -> float | None:
+        """Kinetic energy before: of the bodies, or ``½ u⁻ᵀ M u⁻`` of a mechanism (``None`` in
+        contact space)."""
+    @property
     def approach_energy(self) -> float:
         """``½ v⁻ᵀ W⁻¹ v⁻``: the most energy any impulse can remove."""
     @property
@@ -104,6 +108,31 @@ class Outcome:
     def to_dict(self) -> dict[str, Any]:
         """The record as the CLI's JSON entry (``impax resolve --json``; an entry of
         ``results`` of ``impax compare --json`` for a body or a mechanism)."""
+
+class Body:
+    """A struck free body B (met at its highest point) with its state: the ``other=`` of a
+    body constructor (``W = W_A + W_B``, ``v = v_A − v_B``, impulse ``p`` on A, ``−p`` on B)."""
+
+    @property
+    def w(self) -> np.ndarray:
+        """``W_B`` at its contact point."""
+    @property
+    def description(self) -> str: ...
+
+def body(
+    shape: Literal["sphere", "disc", "rod", "ellipse", "rigid"],
+    mass: float = 1.0,
+    *,
+    radius: float | None = None,
+    length: float | None = None,
+    angle: float | None = None,
+    semi_axes: tuple[float, float] | None = None,
+    inertia: float | None = None,
+    contact: tuple[float, float] | None = None,
+    velocity: tuple[float, float] = (0.0, 0.0),
+    omega: float = 0.0,
+) -> Body:
+    """A struck body B for ``other=`` (the ``[other]`` table of a scenario file); angles in radians."""
 
 class BodyImpact:
     """A planar body with its state striking a fixed surface, with μ and e."""
@@ -220,6 +249,7 @@ def sphere(
     omega: float | None = None,
     friction: float = 0.4,
     restitution: float = 0.7,
+    other: Body | None = None,
 ) -> BodyImpact:
     """A solid sphere (``I = 2/5 m r²``) striking a plane: paper A's state (speed ``v0``,
     ``alpha`` in radians from the normal, ``spin_ratio`` γ = ω0 r / v0; slip ``v0 (sin α + γ)``,
@@ -236,6 +266,7 @@ def disc(
     omega: float | None = None,
     friction: float = 0.4,
     restitution: float = 0.7,
+    other: Body | None = None,
 ) -> BodyImpact:
     """A uniform disc (``I = ½ m r²``); the state as for :func:`sphere`."""
 
@@ -248,6 +279,7 @@ def rod(
     omega: float = 0.0,
     friction: float = 0.4,
     restitution: float = 0.7,
+    other: Body | None = None,
 ) -> BodyImpact:
     """A uniform rod at ``angle`` (radians, 0 < θ < π; default 50°) from the surface, striking
     with its lower end: ``I = m L²/12``, contact at ``r = −(L/2)(cos θ, sin θ)``."""
@@ -262,6 +294,7 @@ def ellipse(
     omega: float = 0.0,
     friction: float = 0.4,
     restitution: float = 0.7,
+    other: Body | None = None,
 ) -> BodyImpact:
     """A uniform elliptical disc (``I = m (a² + b²)/4``), its ``a`` axis at ``angle`` from the surface."""
 
@@ -274,6 +307,7 @@ def rigid_body(
     omega: float = 0.0,
     friction: float = 0.4,
     restitution: float = 0.7,
+    other: Body | None = None,
 ) -> BodyImpact:
     """Any planar rigid body: mass, central inertia, contact point ``(r_t, r_n)`` from the centre."""
 
@@ -308,3 +342,15 @@ def double_pendulum(
 def compare(impact: BodyImpact | MechanismImpact | None = None, laws: Sequence[str] | None = None) -> list[dict[str, Any]]:
     """Every law side by side on one impact (default: the seed's sphere), as the ``results``
     of ``impax compare --json``."""
+
+def rod_rows(
+    angle: ArrayLike, speed: ArrayLike, direction: ArrayLike, omega: ArrayLike, mass: ArrayLike, length: ArrayLike
+) -> tuple[np.ndarray, np.ndarray]:
+    """``(W, v)`` of many uniform rods (the library's ``bodies::rod``), in parallel; used by
+    :func:`impax.study.rod_problems`. A bad value raises ``ValueError("row I: ...")``."""
+
+def sphere_rows(
+    alpha: ArrayLike, spin_ratio: ArrayLike, speed: ArrayLike, mass: ArrayLike, radius: ArrayLike
+) -> tuple[np.ndarray, np.ndarray]:
+    """``(W, v)`` of paper A's sphere at many states (``bodies::sphere``, ``spin_state``), in
+    parallel; used by :func:`impax.study.sphere_problems`."""

@@ -29,19 +29,6 @@ import numpy as np
 
 from . import _impax
 
-_EPS = np.finfo(np.float64).eps
-
-
-def _sum_or_zero(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    """``a + b``, or exactly 0 where the sum is below its rounding error ``4 ε (|a| + |b|)``.
-
-    The library does the same for contact velocities (a state meant to have no slip, such as
-    γ = −sin α, is not given a slip direction by round-off).
-    """
-    s = a + b
-    return np.where(np.abs(s) <= 4.0 * _EPS * (np.abs(a) + np.abs(b)), 0.0, s)
-
-
 def _arrays(*xs):
     return np.broadcast_arrays(*(np.asarray(x, dtype=np.float64) for x in xs))
 
@@ -55,62 +42,38 @@ def _pack(wtt, wtn, wnn, vt, vn, friction, restitution):
     return w, v, friction.ravel(), restitution.ravel()
 
 
-def _body_problems(mass, inertia, rt, rn, vx, vy, omega, friction, restitution):
-    """A rigid body on a fixed surface (theory §1): with ``r = (r_t, r_n)`` from the centre
-    of mass to the contact and ``I`` the central inertia,
-    ``W = [[1/m + r_n²/I, −r_t r_n/I], [−r_t r_n/I, 1/m + r_t²/I]]`` and
-    ``v⁻ = (v_x − ω r_n, v_y + ω r_t)`` — the library's ``RigidBody2``, row by row."""
-    im, ii = 1.0 / mass, 1.0 / inertia
-    wtt = im + rn * rn * ii
-    wtn = -rt * rn * ii
-    wnn = im + rt * rt * ii
-    vt = _sum_or_zero(vx, -omega * rn)
-    vn = _sum_or_zero(vy, omega * rt)
-    return _pack(wtt, wtn, wnn, vt, vn, friction, restitution)
+def _coefficients(n: int, friction, restitution):
+    return (
+        np.broadcast_to(np.asarray(friction, dtype=np.float64), (n,)),
+        np.broadcast_to(np.asarray(restitution, dtype=np.float64), (n,)),
+    )
 
 
 def sphere_problems(alpha, spin_ratio=0.0, speed=1.0, mass=1.0, radius=1.0, friction=0.4, restitution=0.7):
-    """Paper A's sphere on a plane, vectorised: ``W = (1/m) diag(7/2, 1)``,
+    """Paper A's sphere on a plane, for many parameter values: ``W = (1/m) diag(7/2, 1)``,
     ``v⁻ = (v0 (sin α + γ), −v0 cos α)`` (eqs. 1 and 6; ``I = 2/5 m r²``, ``ω0 = γ v0 / r``).
 
-    ``alpha`` in radians. Every argument is a number or an array; they broadcast. Returns
-    ``(W, v, friction, restitution)`` with ``W`` of shape (N, 3) and ``v`` (N, 2), row ``i``
-    equal to ``impax.sphere(...)`` at the same values.
+    ``alpha`` in radians. Every argument is a number or a 1-D array of one common length.
+    Returns ``(W, v, friction, restitution)`` with ``W`` of shape (N, 3) and ``v`` (N, 2),
+    computed by the library's sphere in parallel: row ``i`` equals ``impax.sphere(...)`` at
+    the same values bit for bit. A bad value raises ``ValueError("row I: ...")``.
     """
-    alpha, spin_ratio, speed, mass, radius, friction, restitution = _arrays(
-        alpha, spin_ratio, speed, mass, radius, friction, restitution
-    )
-    inertia = 0.4 * mass * radius * radius
-    omega = spin_ratio * speed / radius
-    zero = np.zeros_like(radius)
-    return _body_problems(
-        mass, inertia, zero, -radius, speed * np.sin(alpha), -speed * np.cos(alpha), omega, friction, restitution
-    )
+    w, v = _impax.sphere_rows(alpha, spin_ratio, speed, mass, radius)
+    return (w, v, *_coefficients(len(w), friction, restitution))
 
 
 def rod_problems(angle, speed=1.0, direction=0.0, omega=0.0, mass=1.0, length=1.0, friction=0.4, restitution=0.7):
-    """A uniform rod at ``angle`` (radians, 0 < θ < π) from the surface striking with its lower
-    end, vectorised: ``I = m L²/12``, contact at ``r = −(L/2)(cos θ, sin θ)``; the centre moves
-    at ``speed`` along ``direction`` (radians from the downward normal:
-    ``v = speed (sin d, −cos d)``) and spins at ``omega``.
+    """Uniform rods at ``angle`` (radians, 0 < θ < π) from the surface striking with their
+    lower end, for many parameter values: ``I = m L²/12``, contact at
+    ``r = −(L/2)(cos θ, sin θ)``; the centre moves at ``speed`` along ``direction`` (radians
+    from the downward normal: ``v = speed (sin d, −cos d)``) and spins at ``omega``, so
+    ``W = [[1/m + r_n²/I, −r_t r_n/I], [·, 1/m + r_t²/I]]`` and ``v⁻ = (v_x − ω r_n, v_y + ω r_t)``.
 
     Returns ``(W, v, friction, restitution)`` as :func:`sphere_problems`; row ``i`` equals
-    ``impax.rod(mass, length, angle, velocity=(vx, vy), omega=omega)``.
+    ``impax.rod(mass, length, angle, velocity=(vx, vy), omega=omega)`` bit for bit.
     """
-    angle, speed, direction, omega, mass, length, friction, restitution = _arrays(
-        angle, speed, direction, omega, mass, length, friction, restitution
-    )
-    bad = ~((angle > 0.0) & (angle < math.pi))
-    if np.any(bad):
-        i = int(np.argmax(bad))
-        raise ValueError(
-            f"row {i}: angle: {angle.ravel()[i]} is out of range: a rod touches with one end only for 0 < angle < 180°"
-        )
-    half = 0.5 * length
-    rt, rn = -half * np.cos(angle), -half * np.sin(angle)
-    inertia = mass * length * length / 12.0
-    vx, vy = speed * np.sin(direction), -speed * np.cos(direction)
-    return _body_problems(mass, inertia, rt, rn, vx, vy, omega, friction, restitution)
+    w, v = _impax.rod_rows(angle, speed, direction, omega, mass, length)
+    return (w, v, *_coefficients(len(w), friction, restitution))
 
 
 def contact_problems(wtt, wtn, wnn, vt, vn, friction=0.4, restitution=0.7):

@@ -23,10 +23,10 @@
 //!
 //! with `D(θ) > 0` and `σ = ŝ·v_t⁺ > 0`. `F` is a trigonometric polynomial of degree 2
 //! (`ŝ × Aŝ = A_12 cos 2θ + ½ (A_22 − A_11) sin 2θ`), so it has at most four roots on the
-//! circle. They are found exactly: `F` is sampled at 256 angles, each sign change is bisected
-//! to the last bit, and each interval without a sign change in which `F'` changes sign is
-//! searched for a pair of close roots (bisection on `F'` to the extremum, then on `F` on
-//! each side).
+//! circle. They are found to the last bit: `F` (in the coefficient form below) is sampled at
+//! 256 angles, each sign change is refined by safeguarded Newton steps inside the bracket,
+//! and each interval without a sign change in which `F'` changes sign is searched for a pair
+//! of close roots (the extremum of `F` first, then each side).
 //!
 //! Unlike the plane, where the conditions are the optimality conditions of a strictly convex
 //! problem and have exactly one solution, the spatial conditions are not (eliminating `p_n`
@@ -61,110 +61,135 @@ pub struct LcpSolution3 {
 /// Number of sample angles of the root search.
 const SAMPLES: usize = 256;
 
-/// The pieces of `F(θ)` and of the slip candidate at `θ`.
-struct Slip<'a> {
-    problem: &'a ContactProblem3,
-    n: f64,
+/// `F(θ) = a0 + a1 cos θ + b1 sin θ + a2 cos 2θ + b2 sin 2θ`, its coefficients from the
+/// problem (module docs): with `C = w_nn`, `u = v_t⁻`, `w = w_tn`,
+///
+/// ```text
+/// a0 = −½ μ (w × u)              a1 = C u_2 + N w_2            b1 = −(C u_1 + N w_1)
+/// a2 = −½ μ (w_1 u_2 + w_2 u_1) − μ N A_12
+/// b2 = −½ μ (w_2 u_2 − w_1 u_1) − ½ μ N (A_22 − A_11)
+/// ```
+#[derive(Debug, Clone, Copy)]
+struct Trig2 {
+    a0: f64,
+    a1: f64,
+    b1: f64,
+    a2: f64,
+    b2: f64,
 }
 
-impl Slip<'_> {
-    fn dir(theta: f64) -> Vec2 {
+impl Trig2 {
+    fn of(problem: &ContactProblem3, n: f64) -> Self {
+        let mu = problem.friction();
+        let c = problem.wnn();
+        let u = problem.velocity().xy();
+        let w = problem.wtn();
+        let a = problem.wtt();
+        Self {
+            a0: -0.5 * mu * cross2(w, u),
+            a1: c * u.y + n * w.y,
+            b1: -(c * u.x + n * w.x),
+            a2: -0.5 * mu * (w.x * u.y + w.y * u.x) - mu * n * a[(0, 1)],
+            b2: -0.5 * mu * (w.y * u.y - w.x * u.x) - 0.5 * mu * n * (a[(1, 1)] - a[(0, 0)]),
+        }
+    }
+    /// `(F, F')` at an angle given by its cosine and sine.
+    #[inline]
+    fn at(&self, c: f64, s: f64) -> (f64, f64) {
+        let (c2, s2) = (c * c - s * s, 2.0 * s * c);
+        (
+            self.a0 + self.a1 * c + self.b1 * s + self.a2 * c2 + self.b2 * s2,
+            -self.a1 * s + self.b1 * c - 2.0 * self.a2 * s2 + 2.0 * self.b2 * c2,
+        )
+    }
+    #[inline]
+    fn eval(&self, theta: f64) -> (f64, f64) {
         let (s, c) = theta.sin_cos();
-        Vec2::new(c, s)
+        self.at(c, s)
     }
-    /// `D(θ) = c − μ w·ŝ`.
-    fn denominator(&self, s: Vec2) -> f64 {
-        self.problem.wnn() - self.problem.friction() * self.problem.wtn().dot(&s)
-    }
-    /// `F(θ) = D ŝ × u + N ŝ × (w − μ A ŝ)`.
-    fn f(&self, theta: f64) -> f64 {
-        let p = self.problem;
-        let s = Self::dir(theta);
-        let g = p.wtn() - p.friction() * (p.wtt() * s);
-        self.denominator(s) * cross2(s, p.velocity().xy()) + self.n * cross2(s, g)
-    }
-    /// `F'(θ)`, by differentiating each factor (`dŝ/dθ = ŝ⊥ = (−sin θ, cos θ)`).
-    fn df(&self, theta: f64) -> f64 {
-        let p = self.problem;
-        let s = Self::dir(theta);
-        let sp = Vec2::new(-s.y, s.x);
-        let mu = p.friction();
-        let u = p.velocity().xy();
-        let g = p.wtn() - mu * (p.wtt() * s);
-        let dg = -mu * (p.wtt() * sp);
-        let dd = -mu * p.wtn().dot(&sp);
-        dd * cross2(s, u)
-            + self.denominator(s) * cross2(sp, u)
-            + self.n * (cross2(sp, g) + cross2(s, dg))
-    }
-    /// The slip candidate at `θ`, if `D > 0` and `σ > 0`.
-    fn candidate(&self, theta: f64) -> Option<LcpSolution3> {
-        let p = self.problem;
-        let s = Self::dir(theta);
-        let d = self.denominator(s);
-        if d <= 0.0 {
-            return None;
-        }
-        let pn = self.n / d;
-        let impulse = Vec3::new(-p.friction() * pn * s.x, -p.friction() * pn * s.y, pn);
-        let velocity_after = p.velocity_after(impulse);
-        if velocity_after.xy().dot(&s) <= 0.0 || !pn.is_finite() {
-            return None;
-        }
-        Some(LcpSolution3 {
-            kind: Phase3Kind::Slip {
-                from: theta,
-                to: theta,
-            },
-            impulse,
-            velocity_after,
-            energy_change: 0.5 * (p.velocity() + velocity_after).dot(&impulse),
-        })
+    fn scale(&self) -> f64 {
+        self.a0.abs() + self.a1.abs() + self.b1.abs() + self.a2.abs() + self.b2.abs()
     }
 }
 
-/// Bisect `f` on `[a, b]` (opposite signs at the ends, or a zero at one) to the last bit.
-fn bisect(f: impl Fn(f64) -> f64, mut a: f64, mut b: f64) -> f64 {
-    let mut fa = f(a);
-    if fa == 0.0 {
+/// `(cos, sin)` of the sample angles `2π k / SAMPLES`, `k = 0..=SAMPLES`.
+fn sample_table() -> &'static [(f64, f64)] {
+    static TABLE: std::sync::OnceLock<Vec<(f64, f64)>> = std::sync::OnceLock::new();
+    TABLE.get_or_init(|| {
+        (0..=SAMPLES)
+            .map(|k| {
+                let (s, c) = (TAU * k as f64 / SAMPLES as f64).sin_cos();
+                (c, s)
+            })
+            .collect()
+    })
+}
+
+/// A root of `g` (value and derivative) in `[a, b]`, where `g(a)` and `g(b)` have opposite
+/// signs (or one is zero): from the secant point, Newton's steps while they stay inside the
+/// shrinking bracket, bisection otherwise (and only bisection after 30 steps); to the last
+/// bit.
+fn bracketed_root(g: impl Fn(f64) -> (f64, f64), mut a: f64, mut b: f64) -> f64 {
+    let (ga, gb) = (g(a).0, g(b).0);
+    if ga == 0.0 {
         return a;
     }
-    if f(b) == 0.0 {
+    if gb == 0.0 {
         return b;
     }
-    loop {
-        let m = 0.5 * (a + b);
-        if m <= a || m >= b {
-            return m;
+    let neg_at_a = ga < 0.0;
+    let secant = a - ga * (b - a) / (gb - ga);
+    let mut x = if secant > a && secant < b {
+        secant
+    } else {
+        0.5 * (a + b)
+    };
+    for iteration in 0..300 {
+        let (gx, dx) = g(x);
+        if gx == 0.0 {
+            return x;
         }
-        let fm = f(m);
-        if fm == 0.0 {
-            return m;
-        }
-        if (fm < 0.0) == (fa < 0.0) {
-            a = m;
-            fa = fm;
+        if (gx < 0.0) == neg_at_a {
+            a = x;
         } else {
-            b = m;
+            b = x;
         }
+        let mid = 0.5 * (a + b);
+        if mid <= a || mid >= b {
+            return x; // the bracket is two adjacent numbers
+        }
+        let newton = x - gx / dx;
+        let next = if iteration < 30 && newton > a && newton < b {
+            newton
+        } else {
+            mid
+        };
+        if next == x {
+            return x;
+        }
+        x = next;
     }
+    x
 }
 
 /// Every root of `F` on `[0, 2π)` (at most four), ascending.
-fn slip_angles(slip: &Slip<'_>) -> Vec<f64> {
+fn slip_angles(trig: &Trig2) -> Vec<f64> {
     let h = TAU / SAMPLES as f64;
     let theta = |k: usize| if k == SAMPLES { TAU } else { k as f64 * h };
-    let f: Vec<f64> = (0..=SAMPLES).map(|k| slip.f(theta(k))).collect();
-    let scale = f.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    let table = sample_table();
     let mut roots = Vec::new();
-    if scale == 0.0 {
+    if trig.scale() == 0.0 {
         // F ≡ 0: every direction is parallel to its slip velocity (no coupling, isotropic
         // A, no initial slip); then v_t⁺ = −μ p_n A ŝ opposes ŝ and no slip is consistent.
         return roots;
     }
+    let g = |t: f64| trig.eval(t);
+    let mut prev = trig.at(table[0].0, table[0].1);
     for k in 0..SAMPLES {
+        let next = trig.at(table[k + 1].0, table[k + 1].1);
         let (a, b) = (theta(k), theta(k + 1));
-        let (fa, fb) = (f[k], f[k + 1]);
+        let ((fa, da), (fb, db)) = (prev, next);
+        prev = next;
         if fa == 0.0 {
             roots.push(a);
             continue;
@@ -173,24 +198,61 @@ fn slip_angles(slip: &Slip<'_>) -> Vec<f64> {
             continue; // counted at the next interval's start (or at θ = 0)
         }
         if (fa < 0.0) != (fb < 0.0) {
-            roots.push(bisect(|t| slip.f(t), a, b));
+            roots.push(bracketed_root(g, a, b));
             continue;
         }
         // No sign change: a pair of close roots needs an extremum of F inside whose value
         // has the other sign.
-        let (da, db) = (slip.df(a), slip.df(b));
         if (da < 0.0) != (db < 0.0) && da != 0.0 && db != 0.0 {
-            let m = bisect(|t| slip.df(t), a, b);
-            let fm = slip.f(m);
+            let m = bracketed_root(
+                |t| {
+                    let (s, c) = t.sin_cos();
+                    let (c2, s2) = (c * c - s * s, 2.0 * s * c);
+                    (
+                        trig.at(c, s).1,
+                        -trig.a1 * c - trig.b1 * s - 4.0 * trig.a2 * c2 - 4.0 * trig.b2 * s2,
+                    )
+                },
+                a,
+                b,
+            );
+            let fm = g(m).0;
             if fm == 0.0 {
                 roots.push(m);
             } else if (fm < 0.0) != (fa < 0.0) {
-                roots.push(bisect(|t| slip.f(t), a, m));
-                roots.push(bisect(|t| slip.f(t), m, b));
+                roots.push(bracketed_root(g, a, m));
+                roots.push(bracketed_root(g, m, b));
             }
         }
     }
     roots
+}
+
+/// The slip candidate at `θ` (direction `ŝ = (cos θ, sin θ)`), if `D(θ) = w_nn − μ w_tn·ŝ > 0`
+/// and `σ = ŝ·v_t⁺ > 0`: `p = p_n (−μ ŝ, 1)`, `p_n = N / D`.
+fn slip_candidate(problem: &ContactProblem3, n: f64, theta: f64) -> Option<LcpSolution3> {
+    let (sn, cs) = theta.sin_cos();
+    let s = Vec2::new(cs, sn);
+    let mu = problem.friction();
+    let d = problem.wnn() - mu * problem.wtn().dot(&s);
+    if d <= 0.0 {
+        return None;
+    }
+    let pn = n / d;
+    let impulse = Vec3::new(-mu * pn * s.x, -mu * pn * s.y, pn);
+    let velocity_after = problem.velocity_after(impulse);
+    if velocity_after.xy().dot(&s) <= 0.0 || !pn.is_finite() {
+        return None;
+    }
+    Some(LcpSolution3 {
+        kind: Phase3Kind::Slip {
+            from: theta,
+            to: theta,
+        },
+        impulse,
+        velocity_after,
+        energy_change: 0.5 * (problem.velocity() + velocity_after).dot(&impulse),
+    })
 }
 
 /// The sticking candidate: `W p = (−u, N)`, if `p_n ≥ 0` and `|p_t| ≤ μ p_n`.
@@ -238,9 +300,8 @@ pub fn solutions(problem: &ContactProblem3) -> Vec<LcpSolution3> {
             energy_change: 0.5 * (problem.velocity() + velocity_after).dot(&impulse),
         }];
     }
-    let slip = Slip { problem, n };
-    for theta in slip_angles(&slip) {
-        if let Some(c) = slip.candidate(theta) {
+    for theta in slip_angles(&Trig2::of(problem, n)) {
+        if let Some(c) = slip_candidate(problem, n, theta) {
             let scale = c.impulse.norm();
             if all
                 .iter()
@@ -293,4 +354,36 @@ pub fn resolve(problem: &ContactProblem3) -> Resolution3 {
         },
         inconsistency,
     ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The coefficient form equals `F(θ) = D ŝ × u + N ŝ × (w − μ A ŝ)` written directly,
+    /// and its derivative a central difference.
+    #[test]
+    fn coefficient_form_matches_the_definition() {
+        let p = ContactProblem3::from_upper(
+            [2.0, 0.6, 0.3, 1.0, -0.2, 1.5],
+            [0.3, 0.8, -1.0],
+            0.8,
+            0.7,
+        )
+        .unwrap();
+        let n = -(1.0 + p.restitution()) * p.velocity().z;
+        let trig = Trig2::of(&p, n);
+        for k in 0..97 {
+            let theta = 0.3 + TAU * k as f64 / 97.0;
+            let s = Vec2::new(theta.cos(), theta.sin());
+            let d = p.wnn() - p.friction() * p.wtn().dot(&s);
+            let g = p.wtn() - p.friction() * (p.wtt() * s);
+            let direct = d * cross2(s, p.velocity().xy()) + n * cross2(s, g);
+            let (f, df) = trig.eval(theta);
+            assert!((f - direct).abs() < 1e-14 * trig.scale(), "{f} vs {direct}");
+            let h = 1e-6;
+            let fd = (trig.eval(theta + h).0 - trig.eval(theta - h).0) / (2.0 * h);
+            assert!((df - fd).abs() < 1e-8 * trig.scale(), "{df} vs {fd}");
+        }
+    }
 }
