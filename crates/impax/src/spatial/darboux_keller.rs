@@ -7,14 +7,29 @@
 //!    dv_t/dp_n = g,  dv_n/dp_n = w_nn − μ w_tn·ŝ,  dp_t/dp_n = −μ ŝ,
 //!    dW_n/dp_n = v_n,  dW_t/dp_n = −μ |v_t|,
 //!    ```
-//!    integrated by an adaptive Dormand–Prince 8(5,3) method (DOP853) in `p_n`. The direction field is
-//!    singular at `σ = |v_t| → 0`, so near a halt the independent variable becomes
-//!    `u = ln σ` (decreasing), in which the system is smooth all the way:
-//!    ```text
-//!    dφ/du = (ŝ × g)/(ŝ·g),  dp_n/du = σ/(ŝ·g),  d(·)/du = d(·)/dp_n · dp_n/du,
-//!    ```
-//!    integrated until `σ` has shrunk by `e⁻⁴⁰`; the remaining impulse `σ/|ŝ·g|` is added in
-//!    closed form. No small epsilon decides the halt.
+//!    integrated by an adaptive explicit Runge–Kutta pair of order 8 with error estimators
+//!    of orders 5 and 3 (DOP853, Hairer, Nørsett & Wanner, *Solving ODEs I*, §II.5) in
+//!    `p_n`. The direction field is singular at `σ = |v_t| → 0`, so once the slip is small
+//!    the independent variable changes:
+//!    * on a steady approach to a halt (`ŝ·g < −0.9 |g|`, i.e. near a centripetal invariant
+//!      ray or on an inward spiral) it becomes `u = ln σ` (decreasing), in which the system
+//!      is smooth all the way:
+//!      ```text
+//!      dφ/du = (ŝ × g)/(ŝ·g),  dp_n/du = σ/(ŝ·g),  d(·)/du = d(·)/dp_n · dp_n/du,
+//!      ```
+//!      integrated until `σ` has shrunk by `e⁻⁴⁰`; the remaining impulse `σ/|ŝ·g|` is added
+//!      in closed form;
+//!    * otherwise (the direction swings while the slip passes near zero, `ŝ·g ≥ −0.7 |g|`
+//!      on leaving `u`) it becomes the pseudo-time `τ` with `dp_n = σ dτ`, in which the
+//!      system has no division and is smooth away from `v_t = 0` itself:
+//!      ```text
+//!      dv_t/dτ = σ w_tn − μ W_tt v_t,  dv_n/dτ = σ w_nn − μ w_tn·v_t,  dp_n/dτ = σ,
+//!      dp_t/dτ = −μ v_t,  dW_n/dτ = σ v_n,  dW_t/dτ = −μ σ²,
+//!      ```
+//!      with the step bounded by the stability limit `3/(|w_tn| + μ|W_tt|)`; back to `p_n`
+//!      once the slip has grown past a tenth of `σ⁻`.
+//!
+//!    No small epsilon decides the halt.
 //! 2. **Stick** if `|W_tt⁻¹ w_tn| ≤ μ`: `dv_n/dp_n = w_nn − w_tnᵀ W_tt⁻¹ w_tn`, linear;
 //! 3. otherwise **resumed slip** at once along the unique centrifugal invariant ray
 //!    `(λ' I + μ W_tt) ŝ = w_tn`, `λ' > 0` ([`resumption_direction`]): straight, linear.
@@ -23,11 +38,13 @@
 //! `v_n = −e v_n⁻`; `poisson` `p_n = (1+e) p_c`; `energetic` `W_n = (1 − e²) W_c`), and a
 //! second compression (jamb: `v_n` falls back to zero after compression ended; reported).
 //! Each is located on the discrete solution by re-stepping from the step's start
-//! (Illinois iteration), to near machine precision; in the linear stages they are exact.
+//! (Illinois iteration, seeded by the seventh-order dense output of the step and started
+//! on a bracket of ±1e-9 of the step around the seed), to near machine precision; in the
+//! linear stages they are exact.
 
 use super::invariant::{resumption_direction, sticking_ratio};
 use super::outcome::{Phase3Kind, Phases3};
-use super::rk::{dop853_step, error_measure, Dense};
+use super::rk::{dop853_step, error_measure, Dense, Step};
 use super::ContactProblem3;
 use crate::math::{Mat2, Vec2, Vec3};
 use crate::planar::BreakdownReason;
@@ -462,6 +479,105 @@ fn finish(pt: &Point, ev: &Events, phases: Phases3, slip_halt: Option<f64>, step
     }
 }
 
+/// The integration variable of the slip stage.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Mode {
+    /// The normal impulse `p_n`.
+    P,
+    /// `u = ln σ`, decreasing (a steady approach to a halt).
+    U,
+    /// The pseudo-time `τ`, `dp_n = σ dτ` (small slip that need not shrink steadily).
+    T,
+}
+
+/// Step-size factor after a rejected step (`en > 1` or NaN): `0.9 en^(-1/8)`, at least 0.2.
+#[inline]
+fn shrink(en: f64) -> f64 {
+    if en.is_finite() {
+        (0.9 / en.sqrt().sqrt().sqrt()).max(0.2)
+    } else {
+        0.2
+    }
+}
+
+/// Step-size factor after an accepted step: `0.9 en^(-1/8)`, at most 6.
+#[inline]
+fn grow(en: f64) -> f64 {
+    (0.9 / en.max(1e-10).sqrt().sqrt().sqrt()).min(6.0)
+}
+
+/// The value of event `kind` (0 = compression end, 1 = termination, 2 = second
+/// compression) at `c`, increasing through zero at the event.
+#[inline]
+fn event_value(ev: &Events, kind: u8, c: &Point) -> f64 {
+    match kind {
+        0 => c.vn,
+        1 => ev.terminal(c),
+        _ => -c.vn,
+    }
+}
+
+/// Locate event `kind` inside the accepted step `st` of size `h` from `(x0, y0)`: seeded by
+/// the dense output, then found on the discrete solution by re-stepping from `x0`.
+/// Returns the independent variable and the state there.
+#[allow(clippy::too_many_arguments)]
+fn locate_in_step<const N: usize>(
+    f: &impl Fn(f64, &[f64; N]) -> [f64; N],
+    point: &impl Fn(f64, &[f64; N]) -> Point,
+    ev: &Events,
+    kind: u8,
+    x0: f64,
+    y0: &[f64; N],
+    k0: &[f64; N],
+    h: f64,
+    st: &Step<N>,
+    k1: &[f64; N],
+    ga: f64,
+    gb: f64,
+) -> (f64, [f64; N]) {
+    let dense = Dense::new(f, x0, y0, st, k1, h);
+    let seed = dense_root(
+        |th| event_value(ev, kind, &point(x0 + th * h, &dense.at(th))),
+        ga,
+        gb,
+    );
+    let mut last = (f64::NAN, *y0);
+    let theta = locate(
+        |th| {
+            let yt = dop853_step(f, x0, y0, k0, th * h).y;
+            last = (th, yt);
+            event_value(ev, kind, &point(x0 + th * h, &yt))
+        },
+        ga,
+        gb,
+        seed,
+    );
+    let yt = if last.0 == theta {
+        last.1
+    } else {
+        dop853_step(f, x0, y0, k0, theta * h).y
+    };
+    (x0 + theta * h, yt)
+}
+
+/// Record event `kind` at `pt` (the slip direction there is `phi`); returns the end of the
+/// slip stage if the law terminated.
+fn after_event(kind: u8, pt: &mut Point, ev: &mut Events, phi: f64) -> Option<SlipEnd> {
+    match kind {
+        0 => {
+            pt.vn = 0.0;
+            ev.pc = Some(pt.p);
+            ev.wc = pt.wn;
+            (ev.terminal(pt) >= 0.0).then_some(SlipEnd::Terminated { phi })
+        }
+        1 => Some(SlipEnd::Terminated { phi }),
+        _ => {
+            ev.second = Some(pt.p);
+            None
+        }
+    }
+}
+
 enum SlipEnd {
     Terminated { phi: f64 },
     Halted { phi: f64 },
@@ -516,6 +632,24 @@ fn slip_stage(
             -mu * sigma,
         ]
     };
+    // State in τ-mode (dp_n = σ dτ): [vt1, vt2, vn, pt1, pt2, wn, wt, p]; no division, and
+    // smooth everywhere but at v_t = 0 itself (σ = |v_t|), which is reached only as τ → ∞.
+    let ft = |_t: f64, z: &[f64; 8]| -> [f64; 8] {
+        let (v1, v2) = (z[0], z[1]);
+        let sigma = (v1 * v1 + v2 * v2).sqrt();
+        let wv1 = wtt[(0, 0)] * v1 + wtt[(0, 1)] * v2;
+        let wv2 = wtt[(1, 0)] * v1 + wtt[(1, 1)] * v2;
+        [
+            sigma * wtn.x - mu * wv1,
+            sigma * wtn.y - mu * wv2,
+            sigma * wnn - mu * (wtn.x * v1 + wtn.y * v2),
+            -mu * v1,
+            -mu * v2,
+            sigma * z[2],
+            -mu * sigma * sigma,
+            sigma,
+        ]
+    };
     // State in u-mode (u = ln σ): [φ, p, vn, pt1, pt2, wn, wt].
     let fu = |u: f64, z: &[f64; 7]| -> [f64; 7] {
         let sigma = u.exp();
@@ -543,6 +677,14 @@ fn slip_stage(
         wn: y[5],
         wt: y[6],
     };
+    let from_t = |_t: f64, z: &[f64; 8]| Point {
+        p: z[7],
+        vt: Vec2::new(z[0], z[1]),
+        vn: z[2],
+        pt: Vec2::new(z[3], z[4]),
+        wn: z[5],
+        wt: z[6],
+    };
     let from_z = |u: f64, z: &[f64; 7]| Point {
         p: z[1],
         vt: u.exp() * Vec2::new(z[0].cos(), z[0].sin()),
@@ -551,6 +693,25 @@ fn slip_stage(
         wn: z[5],
         wt: z[6],
     };
+    let atol_u = [
+        RTOL,
+        RTOL * sc.p,
+        RTOL * sc.v,
+        RTOL * sc.p,
+        RTOL * sc.p,
+        RTOL * sc.w,
+        RTOL * sc.w,
+    ];
+    let atol_t = [
+        RTOL * sc.v,
+        RTOL * sc.v,
+        RTOL * sc.v,
+        RTOL * sc.p,
+        RTOL * sc.p,
+        RTOL * sc.w,
+        RTOL * sc.w,
+        RTOL * sc.p,
+    ];
     let atol_p = [
         RTOL * sc.v,
         RTOL * sc.v,
@@ -602,222 +763,243 @@ fn slip_stage(
                 Ok(SlipEnd::Halted { phi })
             }
         };
-    let mut h = 0.05 * sc.p;
     let max_steps = 200_000u32;
-    loop {
-        // ---------------- p-mode ----------------
-        let mut y = to_y(pt);
-        let mut k = fp(pt.p, &y);
-        let mut switch_to_log = false;
-        while *steps < max_steps {
-            if let Some((s, q)) = straight_tail(pt.vt) {
-                let end = run_tail(pt, ev, s, q)?;
-                observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
-                return Ok(end);
+    let mut mode = Mode::P;
+    let mut h = 0.05 * sc.p;
+    let mut hu = -0.25f64;
+    let mut ht = 0.0f64;
+    // The rate of change of the slip, `ŝ·g` and `|g|`, for the switches between modes.
+    let rates = |vt: Vec2| -> (f64, f64) {
+        let s = vt / vt.norm();
+        let g = wtn - mu * (wtt * s);
+        (s.dot(&g), g.norm())
+    };
+    while *steps < max_steps {
+        match mode {
+            // ---------------- p-mode ----------------
+            Mode::P => {
+                let mut y = to_y(pt);
+                let mut k = fp(pt.p, &y);
+                while *steps < max_steps {
+                    if let Some((s, q)) = straight_tail(pt.vt) {
+                        let end = run_tail(pt, ev, s, q)?;
+                        observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
+                        return Ok(end);
+                    }
+                    let sigma = pt.vt.norm();
+                    let (q, gn) = rates(pt.vt);
+                    // Once the slip is small, go logarithmic if it shrinks steadily
+                    // (hysteresis: enter only where the shrink rate is a good part of |g|),
+                    // otherwise to the pseudo-time τ, in which a swing of the direction
+                    // near the origin takes steps independent of σ.
+                    if sigma < 0.05 * sigma0 {
+                        if q < -0.9 * gn {
+                            mode = Mode::U;
+                            hu = -0.25;
+                        } else {
+                            mode = Mode::T;
+                            ht = (h / sigma).min(0.5 / gn.max(f64::MIN_POSITIVE));
+                        }
+                        break;
+                    }
+                    // Never step past the predicted halt.
+                    if q < 0.0 {
+                        h = h.min(0.5 * sigma / -q);
+                    }
+                    let st = dop853_step(&fp, pt.p, &y, &k, h);
+                    let y1 = st.y;
+                    let en = error_measure(&st, |i| atol_p[i] + RTOL * y[i].abs().max(y1[i].abs()));
+                    if en.is_nan() || en > 1.0 {
+                        h *= shrink(en);
+                        if h <= 1e-300 {
+                            return Err(BreakdownReason::NoSeparation);
+                        }
+                        continue;
+                    }
+                    let b = from_y(pt.p + h, &y1);
+                    let k1 = fp(pt.p + h, &y1);
+                    if let Some((kind, ga, gb)) = first_event(ev, pt, &b) {
+                        let (x, yt) = locate_in_step(
+                            &fp, &from_y, ev, kind, pt.p, &y, &k, h, &st, &k1, ga, gb,
+                        );
+                        *pt = from_y(x, &yt);
+                        *steps += 1;
+                        observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
+                        if let Some(end) = after_event(kind, pt, ev, pt.vt.y.atan2(pt.vt.x)) {
+                            return Ok(end);
+                        }
+                        y = yt;
+                        y[2] = pt.vn;
+                        k = fp(pt.p, &y);
+                        continue;
+                    }
+                    *pt = b;
+                    y = y1;
+                    k = k1;
+                    *steps += 1;
+                    observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
+                    h *= grow(en);
+                }
             }
-            let sigma = pt.vt.norm();
-            let s = pt.vt / sigma;
-            let q = s.dot(&(wtn - mu * (wtt * s)));
-            // Go logarithmic once the slip is small and shrinking.
-            // (Hysteresis: enter only where the shrink rate is a good part of |g|.)
-            let gnorm = (wtn - mu * (wtt * s)).norm();
-            if sigma < 0.05 * sigma0 && q < -0.25 * gnorm {
-                switch_to_log = true;
-                break;
-            }
-            // Never step past the predicted halt.
-            if q < 0.0 {
-                h = h.min(0.5 * sigma / -q);
-            }
-            let st = dop853_step(&fp, pt.p, &y, &k, h);
-            let y1 = st.y;
-            let en = error_measure(&st, |i| atol_p[i] + RTOL * y[i].abs().max(y1[i].abs()));
-            if en.is_nan() || en > 1.0 {
-                h *= if en.is_finite() {
-                    (0.9 * en.powf(-0.125)).max(0.2)
-                } else {
-                    0.2
-                };
-                if h <= 1e-300 {
+            // ---------------- u-mode (u = ln σ, decreasing) ----------------
+            Mode::U => {
+                let u_start = pt.vt.norm().ln();
+                let u_end = u_start - LOG_SPAN;
+                let mut u = u_start;
+                let mut z = [
+                    pt.vt.y.atan2(pt.vt.x),
+                    pt.p,
+                    pt.vn,
+                    pt.pt.x,
+                    pt.pt.y,
+                    pt.wn,
+                    pt.wt,
+                ];
+                let mut kz = fu(u, &z);
+                let mut leave = false;
+                while u > u_end && *steps < max_steps {
+                    let hstep = hu.max(u_end - u);
+                    let st = dop853_step(&fu, u, &z, &kz, hstep);
+                    let z1 = st.y;
+                    let en = error_measure(&st, |i| atol_u[i] + RTOL * z[i].abs().max(z1[i].abs()));
+                    if en.is_nan() || en > 1.0 {
+                        hu *= shrink(en);
+                        continue;
+                    }
+                    let b = from_z(u + hstep, &z1);
+                    let k1 = fu(u + hstep, &z1);
+                    if let Some((kind, ga, gb)) = first_event(ev, pt, &b) {
+                        let (x, zt) = locate_in_step(
+                            &fu, &from_z, ev, kind, u, &z, &kz, hstep, &st, &k1, ga, gb,
+                        );
+                        u = x;
+                        z = zt;
+                        *pt = from_z(u, &z);
+                        *steps += 1;
+                        observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
+                        if let Some(end) = after_event(kind, pt, ev, z[0]) {
+                            return Ok(end);
+                        }
+                        z[2] = pt.vn;
+                        kz = fu(u, &z);
+                        continue;
+                    }
+                    u += hstep;
+                    z = z1;
+                    kz = k1;
+                    *pt = b;
+                    *steps += 1;
+                    observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
+                    if let Some((s, q)) = straight_tail(pt.vt) {
+                        let end = run_tail(pt, ev, s, q)?;
+                        observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
+                        return Ok(end);
+                    }
+                    // The slip must keep shrinking; otherwise go on in τ.
+                    let s = Vec2::new(z[0].cos(), z[0].sin());
+                    let g = wtn - mu * (wtt * s);
+                    let q = s.dot(&g);
+                    if q >= -0.7 * g.norm() {
+                        mode = Mode::T;
+                        let gn = g.norm().max(f64::MIN_POSITIVE);
+                        ht = (hu.abs() / q.abs().max(f64::MIN_POSITIVE)).min(0.5 / gn);
+                        leave = true;
+                        break;
+                    }
+                    hu *= grow(en);
+                }
+                if leave {
+                    continue;
+                }
+                if *steps >= max_steps {
+                    break;
+                }
+                // σ has shrunk by e^-40: the rest is a straight run at the last bit of the
+                // result.
+                let s = Vec2::new(z[0].cos(), z[0].sin());
+                let q = s.dot(&(wtn - mu * (wtt * s)));
+                if q.is_nan() || q >= 0.0 {
                     return Err(BreakdownReason::NoSeparation);
                 }
-                continue;
-            }
-            let b = from_y(pt.p + h, &y1);
-            let k1 = fp(pt.p + h, &y1);
-            if let Some((kind, ga, gb)) = first_event(ev, pt, &b) {
-                let (p0, y0, k0, h0) = (pt.p, y, k, h);
-                let event = |c: &Point| -> f64 {
-                    match kind {
-                        0 => c.vn,
-                        1 => ev.terminal(c),
-                        _ => -c.vn,
-                    }
-                };
-                let dense = Dense::new(&fp, p0, &y0, &st, &k1, h0);
-                let seed = dense_root(
-                    |theta| event(&from_y(p0 + theta * h0, &dense.at(theta))),
-                    ga,
-                    gb,
-                );
-                let g = |theta: f64| -> f64 {
-                    let yt = dop853_step(&fp, p0, &y0, &k0, theta * h0).y;
-                    event(&from_y(p0 + theta * h0, &yt))
-                };
-                let theta = locate(g, ga, gb, seed);
-                let yt = dop853_step(&fp, p0, &y0, &k0, theta * h0).y;
-                *pt = from_y(p0 + theta * h0, &yt);
-                *steps += 1;
-                observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
-                y = yt;
-                match kind {
-                    0 => {
-                        pt.vn = 0.0;
-                        y[2] = 0.0;
-                        ev.pc = Some(pt.p);
-                        ev.wc = pt.wn;
-                        if ev.terminal(pt) >= 0.0 {
-                            return Ok(SlipEnd::Terminated {
-                                phi: pt.vt.y.atan2(pt.vt.x),
-                            });
-                        }
-                    }
-                    1 => {
-                        return Ok(SlipEnd::Terminated {
-                            phi: pt.vt.y.atan2(pt.vt.x),
-                        })
-                    }
-                    _ => {
-                        ev.second = Some(pt.p);
-                    }
-                }
-                k = fp(pt.p, &y);
-                continue;
-            }
-            *pt = b;
-            y = y1;
-            k = k1;
-            *steps += 1;
-            observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
-            h *= (0.9 * en.max(1e-10).powf(-0.125)).min(6.0);
-        }
-        if !switch_to_log {
-            return Err(BreakdownReason::NoSeparation);
-        }
-        // ---------------- u-mode (u = ln σ, decreasing) ----------------
-        let u_start = pt.vt.norm().ln();
-        let u_end = u_start - LOG_SPAN;
-        let mut u = u_start;
-        let mut z = [
-            pt.vt.y.atan2(pt.vt.x),
-            pt.p,
-            pt.vn,
-            pt.pt.x,
-            pt.pt.y,
-            pt.wn,
-            pt.wt,
-        ];
-        let atol_u = [
-            RTOL,
-            RTOL * sc.p,
-            RTOL * sc.v,
-            RTOL * sc.p,
-            RTOL * sc.p,
-            RTOL * sc.w,
-            RTOL * sc.w,
-        ];
-        let mut kz = fu(u, &z);
-        let mut hu = -0.25f64;
-        let mut back_to_p = false;
-        while u > u_end && *steps < max_steps {
-            let hstep = hu.max(u_end - u);
-            let st = dop853_step(&fu, u, &z, &kz, hstep);
-            let z1 = st.y;
-            let en = error_measure(&st, |i| atol_u[i] + RTOL * z[i].abs().max(z1[i].abs()));
-            if en.is_nan() || en > 1.0 {
-                hu *= if en.is_finite() {
-                    (0.9 * en.powf(-0.125)).max(0.2)
-                } else {
-                    0.2
-                };
-                continue;
-            }
-            let b = from_z(u + hstep, &z1);
-            let k1 = fu(u + hstep, &z1);
-            if let Some((kind, ga, gb)) = first_event(ev, pt, &b) {
-                let (u0, z0, k0) = (u, z, kz);
-                let event = |c: &Point| -> f64 {
-                    match kind {
-                        0 => c.vn,
-                        1 => ev.terminal(c),
-                        _ => -c.vn,
-                    }
-                };
-                let dense = Dense::new(&fu, u0, &z0, &st, &k1, hstep);
-                let seed = dense_root(
-                    |theta| event(&from_z(u0 + theta * hstep, &dense.at(theta))),
-                    ga,
-                    gb,
-                );
-                let g = |theta: f64| -> f64 {
-                    let zt = dop853_step(&fu, u0, &z0, &k0, theta * hstep).y;
-                    event(&from_z(u0 + theta * hstep, &zt))
-                };
-                let theta = locate(g, ga, gb, seed);
-                let zt = dop853_step(&fu, u0, &z0, &k0, theta * hstep).y;
-                u = u0 + theta * hstep;
-                z = zt;
-                *pt = from_z(u, &z);
-                *steps += 1;
-                observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
-                match kind {
-                    0 => {
-                        pt.vn = 0.0;
-                        z[2] = 0.0;
-                        ev.pc = Some(pt.p);
-                        ev.wc = pt.wn;
-                        if ev.terminal(pt) >= 0.0 {
-                            return Ok(SlipEnd::Terminated { phi: z[0] });
-                        }
-                    }
-                    1 => return Ok(SlipEnd::Terminated { phi: z[0] }),
-                    _ => ev.second = Some(pt.p),
-                }
-                kz = fu(u, &z);
-                continue;
-            }
-            u += hstep;
-            z = z1;
-            kz = k1;
-            *pt = b;
-            *steps += 1;
-            observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
-            if let Some((s, q)) = straight_tail(pt.vt) {
                 let end = run_tail(pt, ev, s, q)?;
                 observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
                 return Ok(end);
             }
-            // The slip must keep shrinking; otherwise return to p-mode.
-            let s = Vec2::new(z[0].cos(), z[0].sin());
-            let q = s.dot(&(wtn - mu * (wtt * s)));
-            if q >= -0.05 * (wtn - mu * (wtt * s)).norm() {
-                back_to_p = true;
-                break;
+            // ---------------- τ-mode (dp_n = σ dτ) ----------------
+            Mode::T => {
+                let mut t = 0.0f64;
+                let mut z = [
+                    pt.vt.x, pt.vt.y, pt.vn, pt.pt.x, pt.pt.y, pt.wn, pt.wt, pt.p,
+                ];
+                let mut kz = ft(t, &z);
+                // Stability: the Lipschitz constant of the τ system in v_t is at most
+                // |w_tn| + μ |W_tt|, and DOP853 is stable on the real axis to about −6.
+                let h_stable = 3.0 / (wtn.norm() + mu * wtt.norm()).max(f64::MIN_POSITIVE);
+                let sigma_end = pt.vt.norm() * (-LOG_SPAN).exp();
+                while *steps < max_steps {
+                    ht = ht.min(h_stable);
+                    let st = dop853_step(&ft, t, &z, &kz, ht);
+                    let z1 = st.y;
+                    let en = error_measure(&st, |i| atol_t[i] + RTOL * z[i].abs().max(z1[i].abs()));
+                    if en.is_nan() || en > 1.0 {
+                        ht *= shrink(en);
+                        if ht <= 1e-300 {
+                            return Err(BreakdownReason::NoSeparation);
+                        }
+                        continue;
+                    }
+                    let b = from_t(t + ht, &z1);
+                    let k1 = ft(t + ht, &z1);
+                    if let Some((kind, ga, gb)) = first_event(ev, pt, &b) {
+                        let (x, zt) = locate_in_step(
+                            &ft, &from_t, ev, kind, t, &z, &kz, ht, &st, &k1, ga, gb,
+                        );
+                        t = x;
+                        z = zt;
+                        *pt = from_t(t, &z);
+                        *steps += 1;
+                        observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
+                        if let Some(end) = after_event(kind, pt, ev, pt.vt.y.atan2(pt.vt.x)) {
+                            return Ok(end);
+                        }
+                        z[2] = pt.vn;
+                        kz = ft(t, &z);
+                        continue;
+                    }
+                    t += ht;
+                    z = z1;
+                    kz = k1;
+                    *pt = b;
+                    *steps += 1;
+                    observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
+                    if let Some((s, q)) = straight_tail(pt.vt) {
+                        let end = run_tail(pt, ev, s, q)?;
+                        observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
+                        return Ok(end);
+                    }
+                    ht *= grow(en);
+                    let sigma = pt.vt.norm();
+                    let (q, gn) = rates(pt.vt);
+                    if sigma <= sigma_end && q < 0.0 {
+                        // σ has shrunk by e^-40: the rest is a straight run at the last bit
+                        // of the result.
+                        let end = run_tail(pt, ev, pt.vt / sigma, q)?;
+                        observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
+                        return Ok(end);
+                    }
+                    if q < -0.9 * gn {
+                        mode = Mode::U;
+                        hu = -(q.abs() * ht).min(0.25);
+                        break;
+                    }
+                    if sigma > 0.1 * sigma0 {
+                        mode = Mode::P;
+                        h = sigma * ht;
+                        break;
+                    }
+                }
             }
-            hu *= (0.9 * en.max(1e-10).powf(-0.125)).min(6.0);
         }
-        if back_to_p {
-            h = 0.05 * pt.vt.norm().max(f64::MIN_POSITIVE);
-            continue;
-        }
-        // σ has shrunk by e^-40: the rest is a straight run at the last bit of the result.
-        let s = Vec2::new(z[0].cos(), z[0].sin());
-        let q = s.dot(&(wtn - mu * (wtt * s)));
-        if q >= 0.0 {
-            return Err(BreakdownReason::NoSeparation);
-        }
-        let end = run_tail(pt, ev, s, q)?;
-        observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
-        return Ok(end);
     }
+    Err(BreakdownReason::NoSeparation)
 }
