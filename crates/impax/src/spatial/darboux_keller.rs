@@ -7,7 +7,7 @@
 //!    dv_t/dp_n = g,  dv_n/dp_n = w_nn − μ w_tn·ŝ,  dp_t/dp_n = −μ ŝ,
 //!    dW_n/dp_n = v_n,  dW_t/dp_n = −μ |v_t|,
 //!    ```
-//!    integrated by an adaptive Dormand–Prince 5(4) method in `p_n`. The direction field is
+//!    integrated by an adaptive Dormand–Prince 8(5,3) method (DOP853) in `p_n`. The direction field is
 //!    singular at `σ = |v_t| → 0`, so near a halt the independent variable becomes
 //!    `u = ln σ` (decreasing), in which the system is smooth all the way:
 //!    ```text
@@ -27,7 +27,7 @@
 
 use super::invariant::{resumption_direction, sticking_ratio};
 use super::outcome::{Phase3Kind, Phases3};
-use super::rk::dopri_step;
+use super::rk::{dop853_step, error_measure, Dense};
 use super::ContactProblem3;
 use crate::math::{Mat2, Vec2, Vec3};
 use crate::planar::BreakdownReason;
@@ -43,8 +43,9 @@ pub enum Termination {
     Energetic,
 }
 
-/// Relative tolerance of the adaptive integration.
-pub const RTOL: f64 = 1e-13;
+/// Relative tolerance of the adaptive integration (per step, on the velocity, impulse and
+/// work scales of the problem).
+pub const RTOL: f64 = 1e-12;
 
 /// How far below the switch the logarithmic stage integrates (`σ` shrinks by `e^-40`).
 const LOG_SPAN: f64 = 40.0;
@@ -107,9 +108,10 @@ impl Events {
     }
 }
 
-/// Find `θ ∈ (0, 1]` with `g(θ) = 0` given `g(0) < 0 ≤ g(1)` (Illinois false position).
-fn locate(mut g: impl FnMut(f64) -> f64, g0: f64, g1: f64) -> f64 {
-    let (mut a, mut fa, mut b, mut fb) = (0.0f64, g0, 1.0f64, g1);
+/// Find `θ ∈ (a, b]` with `g(θ) = 0` given `g(a) < 0 ≤ g(b)` (Illinois false position);
+/// returns the end of the final bracket where `g ≥ 0`.
+fn illinois(mut g: impl FnMut(f64) -> f64, a: f64, fa: f64, b: f64, fb: f64) -> f64 {
+    let (mut a, mut fa, mut b, mut fb) = (a, fa, b, fb);
     let mut side = 0;
     for _ in 0..100 {
         if fb == 0.0 || (b - a).abs() <= 4.0 * f64::EPSILON * b.abs().max(a.abs()) {
@@ -142,27 +144,41 @@ fn locate(mut g: impl FnMut(f64) -> f64, g0: f64, g1: f64) -> f64 {
     b
 }
 
+/// Find `θ ∈ (0, 1]` with `g(θ) = 0` given `g(0) < 0 ≤ g(1)`, starting from an estimate
+/// `seed` of the root (from the dense output): the root is first bracketed within `±1e-9`
+/// of the seed (two evaluations of `g`), where the Illinois iteration converges in a few
+/// steps; if the seed is off, the search falls back to the remaining part of `[0, 1]`.
+fn locate(mut g: impl FnMut(f64) -> f64, g0: f64, g1: f64, seed: f64) -> f64 {
+    const DELTA: f64 = 1e-9;
+    if !(seed > 0.0 && seed < 1.0) {
+        return illinois(g, 0.0, g0, 1.0, g1);
+    }
+    let lo = (seed - DELTA).max(0.0);
+    let hi = (seed + DELTA).min(1.0);
+    let f_lo = if lo > 0.0 { g(lo) } else { g0 };
+    if f_lo >= 0.0 {
+        return illinois(g, 0.0, g0, lo, f_lo);
+    }
+    let f_hi = if hi < 1.0 { g(hi) } else { g1 };
+    if f_hi < 0.0 {
+        return illinois(g, hi, f_hi, 1.0, g1);
+    }
+    illinois(g, lo, f_lo, hi, f_hi)
+}
+
+/// The root of `g` on `[0, 1]` (with `g(0) = g0 < 0 ≤ g(1) = g1`) by the Illinois
+/// iteration on a cheap approximation of `g` (the dense output); no evaluation of the
+/// stepper.
+fn dense_root(g: impl FnMut(f64) -> f64, g0: f64, g1: f64) -> f64 {
+    illinois(g, 0.0, g0, 1.0, g1)
+}
+
 /// Scales for the error control: velocity, impulse, work.
 #[derive(Clone, Copy)]
 struct Scales {
     v: f64,
     p: f64,
     w: f64,
-}
-
-#[inline]
-fn error_norm<const N: usize>(
-    err: &[f64; N],
-    y0: &[f64; N],
-    y1: &[f64; N],
-    atol: &[f64; N],
-) -> f64 {
-    let mut m = 0.0f64;
-    for i in 0..N {
-        let sc = atol[i] + RTOL * y0[i].abs().max(y1[i].abs());
-        m = m.max((err[i] / sc).abs());
-    }
-    m
 }
 
 /// Integrate the Darboux–Keller equations of `problem` to the termination `term`, calling
@@ -613,11 +629,12 @@ fn slip_stage(
             if q < 0.0 {
                 h = h.min(0.5 * sigma / -q);
             }
-            let (y1, k1, err) = dopri_step(&fp, pt.p, &y, &k, h);
-            let en = error_norm(&err, &y, &y1, &atol_p);
+            let st = dop853_step(&fp, pt.p, &y, &k, h);
+            let y1 = st.y;
+            let en = error_measure(&st, |i| atol_p[i] + RTOL * y[i].abs().max(y1[i].abs()));
             if en.is_nan() || en > 1.0 {
                 h *= if en.is_finite() {
-                    (0.9 * en.powf(-0.2)).max(0.2)
+                    (0.9 * en.powf(-0.125)).max(0.2)
                 } else {
                     0.2
                 };
@@ -627,24 +644,32 @@ fn slip_stage(
                 continue;
             }
             let b = from_y(pt.p + h, &y1);
+            let k1 = fp(pt.p + h, &y1);
             if let Some((kind, ga, gb)) = first_event(ev, pt, &b) {
                 let (p0, y0, k0, h0) = (pt.p, y, k, h);
-                let g = |theta: f64| -> f64 {
-                    let (yt, _, _) = dopri_step(&fp, p0, &y0, &k0, theta * h0);
-                    let c = from_y(p0 + theta * h0, &yt);
+                let event = |c: &Point| -> f64 {
                     match kind {
                         0 => c.vn,
-                        1 => ev.terminal(&c),
+                        1 => ev.terminal(c),
                         _ => -c.vn,
                     }
                 };
-                let theta = locate(g, ga, gb);
-                let (yt, kt, _) = dopri_step(&fp, p0, &y0, &k0, theta * h0);
+                let dense = Dense::new(&fp, p0, &y0, &st, &k1, h0);
+                let seed = dense_root(
+                    |theta| event(&from_y(p0 + theta * h0, &dense.at(theta))),
+                    ga,
+                    gb,
+                );
+                let g = |theta: f64| -> f64 {
+                    let yt = dop853_step(&fp, p0, &y0, &k0, theta * h0).y;
+                    event(&from_y(p0 + theta * h0, &yt))
+                };
+                let theta = locate(g, ga, gb, seed);
+                let yt = dop853_step(&fp, p0, &y0, &k0, theta * h0).y;
                 *pt = from_y(p0 + theta * h0, &yt);
                 *steps += 1;
                 observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
                 y = yt;
-                k = kt;
                 match kind {
                     0 => {
                         pt.vn = 0.0;
@@ -666,6 +691,7 @@ fn slip_stage(
                         ev.second = Some(pt.p);
                     }
                 }
+                k = fp(pt.p, &y);
                 continue;
             }
             *pt = b;
@@ -673,7 +699,7 @@ fn slip_stage(
             k = k1;
             *steps += 1;
             observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
-            h *= (0.9 * en.max(1e-10).powf(-0.2)).min(5.0);
+            h *= (0.9 * en.max(1e-10).powf(-0.125)).min(6.0);
         }
         if !switch_to_log {
             return Err(BreakdownReason::NoSeparation);
@@ -705,33 +731,42 @@ fn slip_stage(
         let mut back_to_p = false;
         while u > u_end && *steps < max_steps {
             let hstep = hu.max(u_end - u);
-            let (z1, k1, err) = dopri_step(&fu, u, &z, &kz, hstep);
-            let en = error_norm(&err, &z, &z1, &atol_u);
+            let st = dop853_step(&fu, u, &z, &kz, hstep);
+            let z1 = st.y;
+            let en = error_measure(&st, |i| atol_u[i] + RTOL * z[i].abs().max(z1[i].abs()));
             if en.is_nan() || en > 1.0 {
                 hu *= if en.is_finite() {
-                    (0.9 * en.powf(-0.2)).max(0.2)
+                    (0.9 * en.powf(-0.125)).max(0.2)
                 } else {
                     0.2
                 };
                 continue;
             }
             let b = from_z(u + hstep, &z1);
+            let k1 = fu(u + hstep, &z1);
             if let Some((kind, ga, gb)) = first_event(ev, pt, &b) {
                 let (u0, z0, k0) = (u, z, kz);
-                let g = |theta: f64| -> f64 {
-                    let (zt, _, _) = dopri_step(&fu, u0, &z0, &k0, theta * hstep);
-                    let c = from_z(u0 + theta * hstep, &zt);
+                let event = |c: &Point| -> f64 {
                     match kind {
                         0 => c.vn,
-                        1 => ev.terminal(&c),
+                        1 => ev.terminal(c),
                         _ => -c.vn,
                     }
                 };
-                let theta = locate(g, ga, gb);
-                let (zt, kt, _) = dopri_step(&fu, u0, &z0, &k0, theta * hstep);
+                let dense = Dense::new(&fu, u0, &z0, &st, &k1, hstep);
+                let seed = dense_root(
+                    |theta| event(&from_z(u0 + theta * hstep, &dense.at(theta))),
+                    ga,
+                    gb,
+                );
+                let g = |theta: f64| -> f64 {
+                    let zt = dop853_step(&fu, u0, &z0, &k0, theta * hstep).y;
+                    event(&from_z(u0 + theta * hstep, &zt))
+                };
+                let theta = locate(g, ga, gb, seed);
+                let zt = dop853_step(&fu, u0, &z0, &k0, theta * hstep).y;
                 u = u0 + theta * hstep;
                 z = zt;
-                kz = kt;
                 *pt = from_z(u, &z);
                 *steps += 1;
                 observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
@@ -748,6 +783,7 @@ fn slip_stage(
                     1 => return Ok(SlipEnd::Terminated { phi: z[0] }),
                     _ => ev.second = Some(pt.p),
                 }
+                kz = fu(u, &z);
                 continue;
             }
             u += hstep;
@@ -768,7 +804,7 @@ fn slip_stage(
                 back_to_p = true;
                 break;
             }
-            hu *= (0.9 * en.max(1e-10).powf(-0.2)).min(5.0);
+            hu *= (0.9 * en.max(1e-10).powf(-0.125)).min(6.0);
         }
         if back_to_p {
             h = 0.05 * pt.vt.norm().max(f64::MIN_POSITIVE);
