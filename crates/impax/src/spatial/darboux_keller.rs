@@ -650,21 +650,27 @@ fn slip_stage(
             sigma,
         ]
     };
-    // State in u-mode (u = ln σ): [φ, p, vn, pt1, pt2, wn, wt].
-    let fu = |u: f64, z: &[f64; 7]| -> [f64; 7] {
-        let sigma = u.exp();
-        let s = Vec2::new(z[0].cos(), z[0].sin());
+    // State in u-mode (u = ln σ): [ŝ1, ŝ2, σ, p, vn, pt1, pt2, wn, wt] — the direction as a
+    // vector (normalised on use) and σ carried along (dσ/du = σ), so no transcendental
+    // function is evaluated.
+    let fu = |_u: f64, z: &[f64; 9]| -> [f64; 9] {
+        let s = Vec2::new(z[0], z[1]);
+        let s = s / s.norm();
         let g = wtn - mu * (wtt * s);
         let q = s.dot(&g);
         let f = s.x * g.y - s.y * g.x;
+        let sigma = z[2];
         let dp = sigma / q;
+        let dphi = f / q;
         [
-            f / q,
+            -s.y * dphi,
+            s.x * dphi,
+            sigma,
             dp,
             (wnn - mu * wtn.dot(&s)) * dp,
             -mu * s.x * dp,
             -mu * s.y * dp,
-            z[2] * dp,
+            z[4] * dp,
             -mu * sigma * dp,
         ]
     };
@@ -685,16 +691,22 @@ fn slip_stage(
         wn: z[5],
         wt: z[6],
     };
-    let from_z = |u: f64, z: &[f64; 7]| Point {
-        p: z[1],
-        vt: u.exp() * Vec2::new(z[0].cos(), z[0].sin()),
-        vn: z[2],
-        pt: Vec2::new(z[3], z[4]),
-        wn: z[5],
-        wt: z[6],
+    let dir_z = |z: &[f64; 9]| {
+        let s = Vec2::new(z[0], z[1]);
+        s / s.norm()
+    };
+    let from_z = |_u: f64, z: &[f64; 9]| Point {
+        p: z[3],
+        vt: z[2] * dir_z(z),
+        vn: z[4],
+        pt: Vec2::new(z[5], z[6]),
+        wn: z[7],
+        wt: z[8],
     };
     let atol_u = [
         RTOL,
+        RTOL,
+        RTOL * sc.v,
         RTOL * sc.p,
         RTOL * sc.v,
         RTOL * sc.p,
@@ -846,8 +858,11 @@ fn slip_stage(
                 let u_start = pt.vt.norm().ln();
                 let u_end = u_start - LOG_SPAN;
                 let mut u = u_start;
+                let sigma = pt.vt.norm();
                 let mut z = [
-                    pt.vt.y.atan2(pt.vt.x),
+                    pt.vt.x / sigma,
+                    pt.vt.y / sigma,
+                    sigma,
                     pt.p,
                     pt.vn,
                     pt.pt.x,
@@ -877,10 +892,10 @@ fn slip_stage(
                         *pt = from_z(u, &z);
                         *steps += 1;
                         observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
-                        if let Some(end) = after_event(kind, pt, ev, z[0]) {
+                        if let Some(end) = after_event(kind, pt, ev, pt.vt.y.atan2(pt.vt.x)) {
                             return Ok(end);
                         }
-                        z[2] = pt.vn;
+                        z[4] = pt.vn;
                         kz = fu(u, &z);
                         continue;
                     }
@@ -896,7 +911,7 @@ fn slip_stage(
                         return Ok(end);
                     }
                     // The slip must keep shrinking; otherwise go on in τ.
-                    let s = Vec2::new(z[0].cos(), z[0].sin());
+                    let s = dir_z(&z);
                     let g = wtn - mu * (wtt * s);
                     let q = s.dot(&g);
                     if q >= -0.7 * g.norm() {
@@ -916,7 +931,7 @@ fn slip_stage(
                 }
                 // σ has shrunk by e^-40: the rest is a straight run at the last bit of the
                 // result.
-                let s = Vec2::new(z[0].cos(), z[0].sin());
+                let s = dir_z(&z);
                 let q = s.dot(&(wtn - mu * (wtt * s)));
                 if q.is_nan() || q >= 0.0 {
                     return Err(BreakdownReason::NoSeparation);
