@@ -128,6 +128,17 @@ impl LawId {
     ) -> crate::spatial::Resolution3 {
         crate::spatial::laws::resolve(self, problem)
     }
+
+    /// Resolve a spatial (3D) contact-space problem with this law and the options of the
+    /// Darboux–Keller integration (tolerance).
+    #[inline]
+    pub fn resolve3_with(
+        self,
+        problem: &crate::spatial::ContactProblem3,
+        opts: &crate::spatial::SpatialOptions,
+    ) -> crate::spatial::Resolution3 {
+        crate::spatial::laws::resolve_with(self, problem, opts)
+    }
 }
 
 impl fmt::Display for LawId {

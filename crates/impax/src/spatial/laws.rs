@@ -2,7 +2,7 @@
 //! `energetic` by the Darboux–Keller integration ([`super::darboux_keller`]), `lcp` by
 //! [`super::lcp`].
 
-use super::darboux_keller::{integrate, PathEnd, Termination};
+use super::darboux_keller::{integrate, PathEnd, SpatialOptions, Termination};
 use super::outcome::{Detail3, Outcome3, Phase3Kind, Phases3, Resolution3};
 use super::ContactProblem3;
 use crate::law::LawId;
@@ -208,6 +208,16 @@ pub fn darboux_keller_observed(
     law: LawId,
     observe: &mut impl FnMut(f64, Vec3),
 ) -> Resolution3 {
+    darboux_keller_observed_with(problem, law, &SpatialOptions::default(), observe)
+}
+
+/// [`darboux_keller_observed`] with the integration options `opts`.
+pub fn darboux_keller_observed_with(
+    problem: &ContactProblem3,
+    law: LawId,
+    opts: &SpatialOptions,
+    observe: &mut impl FnMut(f64, Vec3),
+) -> Resolution3 {
     let term = match law {
         LawId::Newton => Termination::Newton,
         LawId::Poisson => Termination::Poisson,
@@ -219,7 +229,8 @@ pub fn darboux_keller_observed(
             })
         }
     };
-    let end = integrate(problem, term, observe).map_err(|reason| Breakdown { law, reason })?;
+    let end =
+        integrate(problem, term, opts, observe).map_err(|reason| Breakdown { law, reason })?;
     let detail = Detail3::DarbouxKeller {
         slip_halt: end.slip_halt,
         second_compression: end.second_compression,
@@ -231,11 +242,17 @@ pub fn darboux_keller_observed(
 /// Resolve a spatial problem with a law (`two-phase`, `smith` and `smith-centre` are planar
 /// only and break down with [`BreakdownReason::PlanarOnly`]).
 pub fn resolve(law: LawId, problem: &ContactProblem3) -> Resolution3 {
+    resolve_with(law, problem, &SpatialOptions::default())
+}
+
+/// [`resolve`] with the options `opts` of the Darboux–Keller integration (the other laws
+/// ignore them).
+pub fn resolve_with(law: LawId, problem: &ContactProblem3, opts: &SpatialOptions) -> Resolution3 {
     match law {
         LawId::Whittaker => whittaker(problem),
         LawId::Brach => brach(problem),
         LawId::Newton | LawId::Poisson | LawId::Energetic => {
-            darboux_keller_observed(problem, law, &mut |_, _| {})
+            darboux_keller_observed_with(problem, law, opts, &mut |_, _| {})
         }
         LawId::Lcp => super::lcp::resolve(problem),
         LawId::TwoPhase | LawId::Smith | LawId::SmithCentre => Err(Breakdown {

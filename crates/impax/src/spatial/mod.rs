@@ -18,6 +18,7 @@ mod outcome;
 mod problem;
 mod rk;
 
+pub use darboux_keller::SpatialOptions;
 pub use invariant::{
     invariant_rays, resumption_direction, sticking_ratio, InvariantRay, InvariantRays, RayKind,
 };
