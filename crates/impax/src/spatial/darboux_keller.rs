@@ -863,18 +863,19 @@ fn slip_stage(
                     }
                     let sigma = pt.vt.norm();
                     let (q, gn) = rates(pt.vt);
-                    // Once the slip is small, go logarithmic if it shrinks steadily
-                    // (hysteresis: enter only where the shrink rate is a good part of |g|),
-                    // otherwise to the pseudo-time τ, in which a swing of the direction
-                    // near the origin takes steps independent of σ.
+                    // Go logarithmic as soon as the slip shrinks steadily (hysteresis: enter
+                    // only where the shrink rate is nearly |g|): steps in p_n would have to
+                    // shrink with σ. Once the slip is small otherwise, go to the
+                    // pseudo-time τ, in which a swing of the direction near the origin
+                    // takes steps independent of σ.
+                    if q < -0.9 * gn {
+                        mode = Mode::U;
+                        hu = -(h * -q / sigma).min(0.25);
+                        break;
+                    }
                     if sigma < 0.05 * sigma0 {
-                        if q < -0.9 * gn {
-                            mode = Mode::U;
-                            hu = -0.25;
-                        } else {
-                            mode = Mode::T;
-                            ht = (h / sigma).min(0.5 / gn.max(f64::MIN_POSITIVE));
-                        }
+                        mode = Mode::T;
+                        ht = (h / sigma).min(0.5 / gn.max(f64::MIN_POSITIVE));
                         break;
                     }
                     // Never step past the predicted halt.
