@@ -9,25 +9,28 @@
 //!    ```
 //!    integrated by an adaptive explicit Runge–Kutta pair of order 8 with error estimators
 //!    of orders 5 and 3 (DOP853, Hairer, Nørsett & Wanner, *Solving ODEs I*, §II.5) in
-//!    `p_n`. The direction field is singular at `σ = |v_t| → 0`, so once the slip is small
-//!    the independent variable changes:
-//!    * on a steady approach to a halt (`ŝ·g < −0.9 |g|`, i.e. near a centripetal invariant
-//!      ray or on an inward spiral) it becomes `u = ln σ` (decreasing), in which the system
-//!      is smooth all the way:
+//!    `p_n`. The direction field is singular at `σ = |v_t| → 0`, and steps in `p_n` must
+//!    shrink with `σ`, so the independent variable changes:
+//!    * as soon as the slip shrinks steadily (`ŝ·g < −0.9 |g|`: near a centripetal
+//!      invariant ray, or on an inward spiral), whatever its size, it becomes `u = ln σ`
+//!      (decreasing), in which the system is smooth all the way (the direction is carried
+//!      as a vector and `σ` as a state, `dσ/du = σ`, so no trigonometric function is
+//!      evaluated):
 //!      ```text
 //!      dφ/du = (ŝ × g)/(ŝ·g),  dp_n/du = σ/(ŝ·g),  d(·)/du = d(·)/dp_n · dp_n/du,
 //!      ```
 //!      integrated until `σ` has shrunk by `e⁻⁴⁰`; the remaining impulse `σ/|ŝ·g|` is added
 //!      in closed form;
-//!    * otherwise (the direction swings while the slip passes near zero, `ŝ·g ≥ −0.7 |g|`
-//!      on leaving `u`) it becomes the pseudo-time `τ` with `dp_n = σ dτ`, in which the
+//!    * once the slip is small (below `σ⁻/20`) and not shrinking steadily, or on leaving
+//!      `u` (`ŝ·g ≥ −0.7 |g|`: the direction swings while the slip passes near zero), it
+//!      becomes the pseudo-time `τ` with `dp_n = σ dτ`, in which the
 //!      system has no division and is smooth away from `v_t = 0` itself:
 //!      ```text
 //!      dv_t/dτ = σ w_tn − μ W_tt v_t,  dv_n/dτ = σ w_nn − μ w_tn·v_t,  dp_n/dτ = σ,
 //!      dp_t/dτ = −μ v_t,  dW_n/dτ = σ v_n,  dW_t/dτ = −μ σ²,
 //!      ```
-//!      with the step bounded by the stability limit `3/(|w_tn| + μ|W_tt|)`; back to `p_n`
-//!      once the slip has grown past a tenth of `σ⁻`.
+//!      with the step bounded by the stability limit `3/(|w_tn| + μ|W_tt|)`; back to `u`
+//!      when the slip shrinks steadily again, to `p_n` once it has grown past `σ⁻/10`.
 //!
 //!    No small epsilon decides the halt.
 //! 2. **Stick** if `|W_tt⁻¹ w_tn| ≤ μ`: `dv_n/dp_n = w_nn − w_tnᵀ W_tt⁻¹ w_tn`, linear;
