@@ -12,12 +12,17 @@ use crate::fmt::Table;
 use crate::input::{CliError, CliResult};
 use crate::progress::Progress;
 use crate::space::{self, Setup};
-use impax::analysis::{run_ordered, Sequence, Tally};
+use impax::analysis::{run_ordered, run_ordered_waves, Sequence, Tally};
 use std::io::Write;
 use std::sync::Mutex;
 
 /// Points per chunk: large enough to amortise the scheduling, small enough for progress.
 pub const CHUNK_POINTS: u64 = 8192;
+
+/// Chunks per wave and per thread of `--format summary` (see
+/// [`impax::analysis::run_ordered_waves`]): 64 chunk tallies per thread are a few hundred
+/// kilobytes, and a thread idles at most one chunk in 64 at the end of a wave.
+const SUMMARY_CHUNKS_PER_THREAD: usize = 64;
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum Format {
@@ -251,9 +256,11 @@ fn summary(setup: &Setup, w: &mut Box<dyn Write + Send>, quiet: bool) -> CliResu
     let progress = Progress::new(total, quiet);
     let mut tallies = vec![Tally::new(); nl];
     let mut notes = ChunkNotes::default();
-    run_ordered(
+    // A chunk's tally is a few hundred bytes: long waves keep both cores busy.
+    run_ordered_waves(
         total,
         CHUNK_POINTS,
+        SUMMARY_CHUNKS_PER_THREAD,
         |range| {
             let n = range.end - range.start;
             let (t, notes) = evaluate::tally(setup, range);

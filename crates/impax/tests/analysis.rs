@@ -3,7 +3,7 @@
 //! agrees with the engine's own sign change of Whittaker's ΔT.
 
 use impax::analysis::{
-    for_each_resolution, resolve_columns, resolve_problems, run_ordered,
+    for_each_resolution, resolve_columns, resolve_problems, run_ordered, run_ordered_waves,
     whittaker_sphere_energy_ratio, whittaker_sphere_thresholds, Axis, Grid, ImpactSummary,
     ProblemColumns, RandomSamples, SampleRange, Sequence, Space, Status, Tally,
 };
@@ -96,7 +96,7 @@ fn columns_validate_each_problem() {
 #[test]
 fn driver_is_ordered_and_thread_count_independent() {
     let problems = random_problems(20_000, 5);
-    let run = |threads: usize| {
+    let run_waves = |threads: usize, waves: usize| {
         let pool = rayon::ThreadPoolBuilder::new()
             .num_threads(threads)
             .build()
@@ -105,9 +105,10 @@ fn driver_is_ordered_and_thread_count_independent() {
             let mut order = Vec::new();
             let mut tally = Tally::new();
             let mut energies = Vec::new();
-            run_ordered(
+            run_ordered_waves(
                 problems.len() as u64,
                 777,
+                waves,
                 |r| {
                     let ps = &problems[r.start as usize..r.end as usize];
                     let mut out = vec![ImpactSummary::INVALID; ps.len()];
@@ -127,8 +128,18 @@ fn driver_is_ordered_and_thread_count_independent() {
             (order, tally, energies)
         })
     };
+    let run = |threads: usize| run_waves(threads, 4);
     let (o1, t1, e1) = run(1);
     let (o3, t3, e3) = run(3);
+    // The wave length changes only how many chunks are in flight, never the order.
+    for (threads, waves) in [(2, 1), (2, 64), (3, 7)] {
+        let (o, t, e) = run_waves(threads, waves);
+        assert_eq!(
+            (&o, &t, &e),
+            (&o1, &t1, &e1),
+            "{threads} threads, {waves} per wave"
+        );
+    }
     assert_eq!(o1, (0..20_000u64).step_by(777).collect::<Vec<_>>());
     assert_eq!(o1, o3);
     assert_eq!(e1, e3);

@@ -23,6 +23,6 @@ pub use batch::{
     Sequence, Status,
 };
 pub use grid::{Axis, Grid, RandomSamples, SampleRange, Space};
-pub use sweep::run_ordered;
+pub use sweep::{run_ordered, run_ordered_waves};
 pub use tally::Tally;
 pub use threshold::{whittaker_sphere_energy_ratio, whittaker_sphere_thresholds, SphereThresholds};

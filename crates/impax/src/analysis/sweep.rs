@@ -24,14 +24,38 @@
 use rayon::prelude::*;
 use std::ops::Range;
 
-/// How many chunks are computed per wave and per thread (enough to balance uneven chunks).
-const CHUNKS_PER_THREAD: usize = 4;
+/// How many chunks [`run_ordered`] computes per wave and per thread (enough to balance
+/// uneven chunks while the results of two waves stay small, e.g. megabytes of CSV rows).
+pub const CHUNKS_PER_THREAD: usize = 4;
 
 /// Compute `work(range)` for consecutive ranges of `chunk` indices covering `0..total`, in
 /// parallel, and pass the results to `sink` in index order.
 ///
 /// Stops at the first error of `sink` and returns it. `chunk = 0` is taken as 1.
-pub fn run_ordered<T, E, W, S>(total: u64, chunk: u64, work: W, mut sink: S) -> Result<(), E>
+pub fn run_ordered<T, E, W, S>(total: u64, chunk: u64, work: W, sink: S) -> Result<(), E>
+where
+    T: Send,
+    E: Send,
+    W: Fn(Range<u64>) -> T + Sync,
+    S: FnMut(T) -> Result<(), E> + Send,
+{
+    run_ordered_waves(total, chunk, CHUNKS_PER_THREAD, work, sink)
+}
+
+/// [`run_ordered`] with `chunks_per_thread` chunks per wave and per thread (at least 1).
+///
+/// Each wave ends when its slowest chunk does, so a thread can idle for up to one chunk per
+/// wave: with small chunk results (a tally, a few numbers) a long wave (e.g. 64 chunks per
+/// thread) keeps every core busy; with large ones (rows of text) a short wave bounds the
+/// memory (two waves of results at most). The order of the results seen by `sink` does not
+/// depend on `chunks_per_thread` nor on the number of threads.
+pub fn run_ordered_waves<T, E, W, S>(
+    total: u64,
+    chunk: u64,
+    chunks_per_thread: usize,
+    work: W,
+    mut sink: S,
+) -> Result<(), E>
 where
     T: Send,
     E: Send,
@@ -40,7 +64,7 @@ where
 {
     let chunk = chunk.max(1);
     let n_chunks = total.div_ceil(chunk);
-    let wave = (rayon::current_num_threads() * CHUNKS_PER_THREAD).max(1) as u64;
+    let wave = (rayon::current_num_threads() * chunks_per_thread.max(1)).max(1) as u64;
     let range_of = |c: u64| c * chunk..((c + 1) * chunk).min(total);
     let compute = |first: u64| -> Vec<T> {
         let last = (first + wave).min(n_chunks);
