@@ -503,9 +503,10 @@ fn linear_piece(
         Termination::Energetic => {
             if pc >= start.p && kn > 0.0 {
                 // Compression ends inside this piece: from p_c (v_n = 0) the restitution
-                // work −e² W_c is reached at x = √(2 (−e² W_c)/k_n) — no cancellation.
-                let need = (-ev.e * ev.e * ev.wc).max(0.0);
-                Some(pc - start.p + (2.0 * need / kn).sqrt())
+                // work −e² W_c is reached at x = e √2 √(−W_c) / √k_n — no cancellation, and
+                // no overflow of the quotient −W_c / k_n where x itself is representable.
+                let root = (-ev.wc).max(0.0).sqrt() / kn.sqrt();
+                Some(pc - start.p + ev.e * std::f64::consts::SQRT_2 * root)
             } else {
                 let need = (1.0 - ev.e * ev.e) * ev.wc - start.wn;
                 if need <= 0.0 && start.p >= pc && start.vn >= 0.0 {

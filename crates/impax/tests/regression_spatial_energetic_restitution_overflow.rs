@@ -1,15 +1,13 @@
-//! OPEN BUG, fails until fixed: spatial `energetic` returns non-finite numbers for a large
-//! but representable impact.
+//! Fixed: spatial `energetic` returned non-finite numbers for a large but representable
+//! impact (now `x = e √2 √(−W_c)/√k_n`, no overflowing quotient).
 //!
-//! The energetic termination on a straight piece that contains the end of compression is
+//! The energetic termination on a straight piece that contains the end of compression was
 //! computed as `x = p_c − p_start + √(2 (−e² W_c) / k_n)`; the quotient `2 (−e² W_c)/k_n`
 //! overflows although `x` itself is representable (it is `e p_c`, since
-//! `−W_c = ½ k_n p_c²`). (This is the formula of the working-tree fix of the `e = 0`
-//! bug in `regression_spatial_energetic_plastic.rs`; the previous `work_root` form did not
-//! overflow here.)
+//! `−W_c = ½ k_n p_c²`).
 //!
 //! `W = 1e-100 · I`, `v⁻ = (0, 0, −1e100)`, `μ = 2`, `e = 1` (approach energy 5e299,
-//! accepted by validation): expected stick from rest, `p = (0, 0, 2e200)`; got
+//! accepted by validation): expected stick from rest, `p = (0, 0, 2e200)`; it gave
 //! `p = (NaN, NaN, inf)` as `Ok`. Found by
 //! `spatial_validation::no_law_panics_on_extreme_valid_problems`.
 
