@@ -141,21 +141,11 @@ fn build(args: &AuditArgs) -> CliResult<Audit> {
     if mechanism::is_mechanism_toml(&text) {
         return mechanism_audit(source, &mechanism_flags(args));
     }
-    let m = &args.mechanism;
-    for (flag, given) in [
-        ("angles-deg", m.angles_deg.is_some()),
-        ("rates", m.rates.is_some()),
-        ("masses", m.masses.is_some()),
-        ("lengths", m.lengths.is_some()),
-        ("gravity", m.gravity.is_some()),
-        ("position", m.position.is_some()),
-        ("radius", args.radius.is_some()),
-    ] {
-        if given {
-            return Err(CliError::input(format!(
-                "--{flag}: only for a built-in scenario or a mechanism file; edit the body scenario file instead"
-            )));
-        }
+    let radius = args.radius.is_some().then_some("radius");
+    if let Some(flag) = args.mechanism.first_given().or(radius) {
+        return Err(CliError::input(format!(
+            "--{flag}: only for a built-in scenario or a mechanism file; edit the body scenario file instead"
+        )));
     }
     if crate::compare3::is_spatial(&text) {
         return spatial_audit(source, &text, args);

@@ -216,6 +216,23 @@ pub struct MechanismFlags {
     pub position: Option<Vec<f64>>,
 }
 
+impl MechanismFlags {
+    /// The first mechanism flag given on the command line (its name without `--`), if any:
+    /// body scenarios refuse them.
+    pub fn first_given(&self) -> Option<&'static str> {
+        [
+            ("angles-deg", self.angles_deg.is_some()),
+            ("rates", self.rates.is_some()),
+            ("masses", self.masses.is_some()),
+            ("lengths", self.lengths.is_some()),
+            ("gravity", self.gravity.is_some()),
+            ("position", self.position.is_some()),
+        ]
+        .into_iter()
+        .find_map(|(flag, given)| given.then_some(flag))
+    }
+}
+
 #[derive(Debug, Args)]
 pub struct ConservedArgs {
     /// A built-in mechanism (`ring-pendulum`, `cart-pendulum`, `double-pendulum`, `sphere`,

@@ -73,22 +73,12 @@ pub fn run(args: &CompareArgs, out: &mut Vec<u8>) -> CliResult<()> {
 
 /// The mechanism flags are refused for body scenarios.
 fn reject_mechanism_flags(args: &CompareArgs) -> CliResult<()> {
-    let m = &args.mechanism;
-    for (flag, given) in [
-        ("angles-deg", m.angles_deg.is_some()),
-        ("rates", m.rates.is_some()),
-        ("masses", m.masses.is_some()),
-        ("lengths", m.lengths.is_some()),
-        ("gravity", m.gravity.is_some()),
-        ("position", m.position.is_some()),
-    ] {
-        if given {
-            return Err(CliError::input(format!(
-                "--{flag}: only for a mechanism (e.g. `impax compare double-pendulum --{flag} …`)"
-            )));
-        }
+    match args.mechanism.first_given() {
+        Some(flag) => Err(CliError::input(format!(
+            "--{flag}: only for a mechanism (e.g. `impax compare double-pendulum --{flag} …`)"
+        ))),
+        None => Ok(()),
     }
-    Ok(())
 }
 
 /// Routh's impulse-space diagram and the energy bars of every law, to `path`.
