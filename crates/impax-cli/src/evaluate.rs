@@ -1,7 +1,7 @@
 //! One chunk of a sweep: points → contact problems → every law through the batch API.
 
 use crate::space::Setup;
-use impax::analysis::{for_each_resolution, resolve_problems, ImpactSummary, Tally};
+use impax::analysis::{for_each_brief, resolve_problems, ImpactSummary, Tally};
 use impax::bodies::PlanarImpact;
 use impax::planar::ContactProblem;
 use impax::LawId;
@@ -73,8 +73,9 @@ pub fn tally(setup: &Setup, range: Range<u64>) -> (Vec<Tally>, ChunkNotes) {
                         t.add_resolution(&imp.resolve(law, p).map(|b| b.outcome), t0);
                     }
                 } else {
-                    // The batch, reduced on the fly: no record per impact.
-                    for_each_resolution(law, problems, |j, r| t.add_resolution(r, t0s[j]));
+                    // The batch, reduced on the fly: no record per impact, and only the
+                    // brief of each outcome (verdict, phases, ΔT) is computed.
+                    for_each_brief(law, problems, |j, r| t.add_brief(r, t0s[j]));
                 }
                 for _ in 0..notes.invalid {
                     t.add(&ImpactSummary::INVALID, 1.0);

@@ -1,7 +1,7 @@
 //! Impact-law ids and the [`ImpactLaw`] capability trait.
 
 use crate::error::{Error, Result};
-use crate::planar::{ContactProblem, Resolution};
+use crate::planar::{BriefResolution, ContactProblem, OutcomeBrief, Resolution};
 use std::fmt;
 use std::str::FromStr;
 
@@ -169,4 +169,12 @@ pub trait ImpactLaw {
     fn id(&self) -> LawId;
     /// Resolve one impact.
     fn resolve(&self, problem: &ContactProblem) -> Resolution;
+    /// Resolve one impact to its verdict, phases and `ΔT` only: what a tally reads. Always
+    /// [`OutcomeBrief::of`] the outcome of [`resolve`](ImpactLaw::resolve) (or the same
+    /// breakdown); a law may override it to skip the rest of the record (the Darboux–Keller
+    /// laws do).
+    #[inline]
+    fn resolve_brief(&self, problem: &ContactProblem) -> BriefResolution {
+        self.resolve(problem).map(|o| OutcomeBrief::of(&o))
+    }
 }

@@ -3,12 +3,12 @@
 //! agrees with the engine's own sign change of Whittaker's ΔT.
 
 use impax::analysis::{
-    for_each_resolution, resolve_columns, resolve_problems, run_ordered, run_ordered_waves,
-    whittaker_sphere_energy_ratio, whittaker_sphere_thresholds, Axis, Grid, ImpactSummary,
-    ProblemColumns, RandomSamples, SampleRange, Sequence, Space, Status, Tally,
+    for_each_brief, for_each_resolution, resolve_columns, resolve_problems, run_ordered,
+    run_ordered_waves, whittaker_sphere_energy_ratio, whittaker_sphere_thresholds, Axis, Grid,
+    ImpactSummary, ProblemColumns, RandomSamples, SampleRange, Sequence, Space, Status, Tally,
 };
 use impax::paper::liu2012::Seed;
-use impax::planar::{ContactProblem, Verdict};
+use impax::planar::{ContactProblem, OutcomeBrief, Verdict};
 use impax::LawId;
 
 fn random_problems(n: usize, seed: u64) -> Vec<ContactProblem> {
@@ -64,10 +64,36 @@ fn batch_equals_single_calls_for_every_law() {
         let mut fused = Tally::new();
         for_each_resolution(law, &problems, |_, r| fused.add_resolution(r, 0.5));
         assert_eq!(format!("{fused:?}"), format!("{from_records:?}"), "{law}");
+        // The briefs (which the Darboux–Keller laws compute without the full record) too.
+        let mut briefed = Tally::new();
+        for_each_brief(law, &problems, |_, r| briefed.add_brief(r, 0.5));
+        assert_eq!(format!("{briefed:?}"), format!("{from_records:?}"), "{law}");
     }
     // smith-centre needs a body: a breakdown in contact space.
     resolve_problems(LawId::SmithCentre, &problems, &mut out).unwrap();
     assert!(out.iter().all(|s| s.status == Status::Breakdown));
+}
+
+#[test]
+fn briefs_equal_the_full_outcomes_bit_for_bit() {
+    // `resolve_brief` shares the path end and the ΔT/verdict code with `resolve`: the same
+    // bits on every problem, for every law (overridden or not).
+    let problems = random_problems(3000, 23);
+    for law in LawId::ALL {
+        let mut briefs = Vec::new();
+        for_each_brief(law, &problems, |_, r| briefs.push(*r));
+        for (p, brief) in problems.iter().zip(&briefs) {
+            let full = law.resolve(p).map(|o| OutcomeBrief::of(&o));
+            assert_eq!(format!("{brief:?}"), format!("{full:?}"), "{law}");
+            if let (Ok(b), Ok(f)) = (brief, &full) {
+                assert_eq!(
+                    b.energy_change.to_bits(),
+                    f.energy_change.to_bits(),
+                    "{law}"
+                );
+            }
+        }
+    }
 }
 
 #[test]

@@ -28,7 +28,9 @@ use crate::error::{Error, Result};
 use crate::law::{ImpactLaw, LawId};
 use crate::math::Vec2;
 use crate::planar::laws::{Brach, Energetic, Lcp, Newton, Poisson, Smith, TwoPhase, Whittaker};
-use crate::planar::{ContactProblem, Outcome, PhaseKind, Phases, Resolution, Verdict, WorkSplit};
+use crate::planar::{
+    BriefResolution, ContactProblem, Outcome, PhaseKind, Phases, Resolution, Verdict, WorkSplit,
+};
 
 /// What became of one problem of a batch.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -372,6 +374,34 @@ pub fn for_each_resolution(
     with_law!(law, |l| {
         for (i, p) in problems.iter().enumerate() {
             f(i, &l.resolve(p));
+        }
+    });
+}
+
+/// As [`for_each_resolution`] with the brief of each resolution
+/// ([`ImpactLaw::resolve_brief`]: verdict, phases and `ΔT`), for reductions that read no
+/// more, e.g. [`Tally::add_brief`](super::Tally::add_brief). The Darboux–Keller laws skip the
+/// rest of the record; the counts are those of the full resolutions.
+///
+/// ```
+/// use impax::analysis::{for_each_brief, for_each_resolution, Tally};
+/// use impax::planar::ContactProblem;
+/// use impax::LawId;
+/// let a = 30f64.to_radians();
+/// let p = ContactProblem::from_entries(3.5, 0.0, 1.0, a.sin(), -a.cos(), 0.4, 0.7).unwrap();
+/// let (mut brief, mut full) = (Tally::new(), Tally::new());
+/// for_each_brief(LawId::Energetic, &[p, p], |_, r| brief.add_brief(r, 0.5));
+/// for_each_resolution(LawId::Energetic, &[p, p], |_, r| full.add_resolution(r, 0.5));
+/// assert_eq!(brief, full);
+/// ```
+pub fn for_each_brief(
+    law: LawId,
+    problems: &[ContactProblem],
+    mut f: impl FnMut(usize, &BriefResolution),
+) {
+    with_law!(law, |l| {
+        for (i, p) in problems.iter().enumerate() {
+            f(i, &l.resolve_brief(p));
         }
     });
 }

@@ -19,8 +19,8 @@ pub mod tally;
 pub mod threshold;
 
 pub use batch::{
-    for_each_resolution, resolve_columns, resolve_problems, ImpactSummary, ProblemColumns,
-    Sequence, Status,
+    for_each_brief, for_each_resolution, resolve_columns, resolve_problems, ImpactSummary,
+    ProblemColumns, Sequence, Status,
 };
 pub use grid::{Axis, Grid, RandomSamples, SampleRange, Space};
 pub use sweep::{run_ordered, run_ordered_waves};

@@ -1,7 +1,7 @@
 //! A reduction of many impacts into counts and extremes (a sweep's "summary" output).
 
 use super::batch::{ImpactSummary, Sequence, Status};
-use crate::planar::{Resolution, Verdict};
+use crate::planar::{BriefResolution, OutcomeBrief, Resolution, Verdict};
 
 /// Counts by status and by phase sequence, and the range and sum of `ΔT/T0`, of one law
 /// over many impacts. Tallies of consecutive chunks [`merge`](Tally::merge) in order, so a
@@ -84,6 +84,14 @@ impl Tally {
     /// [`Tally::add`] of its [`ImpactSummary`]).
     #[inline]
     pub fn add_resolution(&mut self, r: &Resolution, t0: f64) {
+        self.add_brief(&r.as_ref().map(OutcomeBrief::of).map_err(|b| *b), t0);
+    }
+
+    /// Count one impact from the brief of the law's result
+    /// ([`ImpactLaw::resolve_brief`](crate::law::ImpactLaw::resolve_brief)): the same counts
+    /// as [`Tally::add_resolution`] of the full result.
+    #[inline]
+    pub fn add_brief(&mut self, r: &BriefResolution, t0: f64) {
         self.total += 1;
         match r {
             Ok(o) => {

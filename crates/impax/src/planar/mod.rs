@@ -8,7 +8,7 @@ pub mod path;
 mod problem;
 
 pub use outcome::{
-    Breakdown, BreakdownReason, Inconsistency, LawDetail, Outcome, Phase, PhaseKind, Phases,
-    Resolution, SlipDirection, SmithReading, Verdict, WorkSplit,
+    Breakdown, BreakdownReason, BriefResolution, Inconsistency, LawDetail, Outcome, OutcomeBrief,
+    Phase, PhaseKind, Phases, Resolution, SlipDirection, SmithReading, Verdict, WorkSplit,
 };
 pub use problem::{ContactProblem, InverseInertia};

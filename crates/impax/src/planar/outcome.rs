@@ -315,6 +315,42 @@ pub struct Outcome {
     pub detail: LawDetail,
 }
 
+/// The part of an [`Outcome`] a reduction over many impacts reads (e.g.
+/// [`Tally`](crate::analysis::Tally)): the verdict, the phase sequence and `ΔT`.
+///
+/// [`ImpactLaw::resolve_brief`](crate::law::ImpactLaw::resolve_brief) returns it; it always
+/// equals [`OutcomeBrief::of`] the full outcome, field for field.
+///
+/// ```
+/// use impax::planar::{laws::{Energetic, ImpactLaw}, ContactProblem, OutcomeBrief};
+/// let a = 30f64.to_radians();
+/// let p = ContactProblem::from_entries(3.5, 0.0, 1.0, a.sin(), -a.cos(), 0.4, 0.7).unwrap();
+/// let brief = Energetic.resolve_brief(&p).unwrap();
+/// assert_eq!(brief, OutcomeBrief::of(&Energetic.resolve(&p).unwrap()));
+/// assert_eq!(brief.phases.len(), 2); // slip, then stick
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct OutcomeBrief {
+    /// Headline verdict (as [`Outcome::verdict`]).
+    pub verdict: Verdict,
+    /// Phase sequence (as [`Outcome::phases`]).
+    pub phases: Phases,
+    /// `ΔT` (as [`Outcome::energy_change`]).
+    pub energy_change: f64,
+}
+
+impl OutcomeBrief {
+    /// The brief of a full outcome.
+    #[inline]
+    pub fn of(o: &Outcome) -> Self {
+        Self {
+            verdict: o.verdict,
+            phases: o.phases,
+            energy_change: o.energy_change,
+        }
+    }
+}
+
 impl Outcome {
     /// The vertices of the law's impulse path in Routh's `(p_t, p_n)` plane, from the origin
     /// to [`Outcome::impulse`] (Routh 1905; Stronge 2000, ch. 5).
@@ -452,3 +488,7 @@ impl fmt::Display for Breakdown {
 
 /// What a law returns: an outcome or a breakdown.
 pub type Resolution = Result<Outcome, Breakdown>;
+
+/// What [`ImpactLaw::resolve_brief`](crate::law::ImpactLaw::resolve_brief) returns: the
+/// brief of an outcome, or the breakdown.
+pub type BriefResolution = Result<OutcomeBrief, Breakdown>;

@@ -17,9 +17,10 @@
 //! compression ends; the termination rules [`newton`](super::newton),
 //! [`poisson`](super::poisson) and [`energetic`](super::energetic) pick the end on this path.
 
+use super::energy_and_verdict;
 use crate::math::Vec2;
 use crate::planar::path::PathSummary;
-use crate::planar::{ContactProblem, PhaseKind, Phases, SlipDirection};
+use crate::planar::{ContactProblem, OutcomeBrief, PhaseKind, Phases, SlipDirection};
 
 /// One straight piece of the Darboux–Keller path: friction ratio, `dv/dp_n`, regime.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -171,6 +172,48 @@ impl DarbouxKellerPath {
         from + solve(v, self.second.slope.y, remaining)
     }
 
+    /// Impulse `p(p_f) = (p_t, p_f)`, contact velocity `v(p_f)` and phases of the path ended
+    /// at `pf` (on the piece that holds `pf`: `p_t` and `v` are linear in `p_n`).
+    #[inline(always)]
+    pub fn end_at(&self, pf: f64) -> (Vec2, Vec2, Phases) {
+        let mut phases = Phases::new();
+        if pf <= self.halt {
+            phases.push(self.first.kind, pf);
+            (
+                Vec2::new(self.first.ratio * pf, pf),
+                self.v0 + self.first.slope * pf,
+                phases,
+            )
+        } else {
+            if self.halt > 0.0 {
+                phases.push(self.first.kind, self.halt);
+            }
+            phases.push(self.second.kind, pf);
+            let x = pf - self.halt;
+            (
+                Vec2::new(self.pt_halt + self.second.ratio * x, pf),
+                self.v_halt + self.second.slope * x,
+                phases,
+            )
+        }
+    }
+
+    /// The brief of the outcome of a termination rule that ends this path at `pf`: `ΔT`,
+    /// verdict and phases exactly as in the full record ([`ImpactLaw::resolve_brief`]),
+    /// without the works and the compression impulse.
+    ///
+    /// [`ImpactLaw::resolve_brief`]: crate::law::ImpactLaw::resolve_brief
+    #[inline(always)]
+    pub fn brief(&self, problem: &ContactProblem, pf: f64) -> OutcomeBrief {
+        let (impulse, velocity, phases) = self.end_at(pf);
+        let (energy_change, verdict) = energy_and_verdict(problem, impulse, velocity, false);
+        OutcomeBrief {
+            verdict,
+            phases,
+            energy_change,
+        }
+    }
+
     /// Impulse, velocity, compression, works and phases of the path ended at `pf`.
     #[inline]
     pub fn summarize(&self, pf: f64) -> PathSummary {
@@ -182,25 +225,12 @@ impl DarbouxKellerPath {
         } else {
             normal_work
         };
-        let mut phases = Phases::new();
-        let (impulse, velocity, friction_work) = if pf <= self.halt {
-            phases.push(self.first.kind, pf);
-            (
-                Vec2::new(self.first.ratio * pf, pf),
-                self.v0 + self.first.slope * pf,
-                self.first.ratio * pf * (self.v0.x + 0.5 * self.first.slope.x * pf),
-            )
+        let (impulse, velocity, phases) = self.end_at(pf);
+        let friction_work = if pf <= self.halt {
+            self.first.ratio * pf * (self.v0.x + 0.5 * self.first.slope.x * pf)
         } else {
-            if self.halt > 0.0 {
-                phases.push(self.first.kind, self.halt);
-            }
-            phases.push(self.second.kind, pf);
             let x = pf - self.halt;
-            (
-                Vec2::new(self.pt_halt + self.second.ratio * x, pf),
-                self.v_halt + self.second.slope * x,
-                self.friction_halt + self.second.ratio * x * (0.5 * self.second.slope.x * x),
-            )
+            self.friction_halt + self.second.ratio * x * (0.5 * self.second.slope.x * x)
         };
         PathSummary {
             impulse,

@@ -14,7 +14,7 @@
 use super::darboux_keller::DarbouxKellerPath;
 use super::{assemble, ImpactLaw};
 use crate::law::LawId;
-use crate::planar::{ContactProblem, LawDetail, Resolution};
+use crate::planar::{BriefResolution, ContactProblem, LawDetail, Resolution};
 
 /// Energetic restitution on the exact Darboux–Keller path.
 ///
@@ -28,6 +28,19 @@ use crate::planar::{ContactProblem, LawDetail, Resolution};
 #[derive(Debug, Clone, Copy, Default)]
 pub struct Energetic;
 
+impl Energetic {
+    /// The path and its end `p_f`: `W_n(p_f) − W_c = −e² W_c` past the end of compression
+    /// `p_c` (the restitution work `e² |W_c|`).
+    #[inline(always)]
+    fn end(problem: &ContactProblem) -> (DarbouxKellerPath, f64) {
+        let path = DarbouxKellerPath::new(problem);
+        let pc = path.first_normal_velocity(0.0);
+        let e = problem.restitution();
+        let pf = path.restitution_work_reached(pc, -e * e * path.normal_work_to(pc));
+        (path, pf)
+    }
+}
+
 impl ImpactLaw for Energetic {
     fn id(&self) -> LawId {
         LawId::Energetic
@@ -35,10 +48,7 @@ impl ImpactLaw for Energetic {
 
     #[inline]
     fn resolve(&self, problem: &ContactProblem) -> Resolution {
-        let path = DarbouxKellerPath::new(problem);
-        let pc = path.first_normal_velocity(0.0);
-        let e = problem.restitution();
-        let pf = path.restitution_work_reached(pc, -e * e * path.normal_work_to(pc));
+        let (path, pf) = Self::end(problem);
         Ok(assemble(
             problem,
             LawId::Energetic,
@@ -48,5 +58,11 @@ impl ImpactLaw for Energetic {
             },
             None,
         ))
+    }
+
+    #[inline]
+    fn resolve_brief(&self, problem: &ContactProblem) -> BriefResolution {
+        let (path, pf) = Self::end(problem);
+        Ok(path.brief(problem, pf))
     }
 }

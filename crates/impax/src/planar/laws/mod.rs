@@ -116,6 +116,30 @@ pub(crate) fn finish_line(
     )
 }
 
+/// `ΔT` and the verdict of the impulse `p` that ends at the contact velocity `v⁺` (from the
+/// law's path): `ΔT = ½ (v⁻ + v⁺)·p`, then [`Verdict::EnergyGained`] if
+/// [`is_energy_gain`], else [`Verdict::InconsistentAssumption`] if the law's assumption is
+/// contradicted, else [`Verdict::Consistent`]. Shared by the outcome record and its brief.
+#[inline(always)]
+pub(crate) fn energy_and_verdict(
+    problem: &ContactProblem,
+    impulse: Vec2,
+    velocity_after: Vec2,
+    inconsistent: bool,
+) -> (f64, Verdict) {
+    // ΔT = ½ (v⁻ + v⁺)·p with v⁺ from the path (exact zeros at a halt): better conditioned
+    // than v⁻·p + ½ pᵀ W p, to which it is identical.
+    let energy_change = 0.5 * (problem.velocity() + velocity_after).dot(&impulse);
+    let verdict = if is_energy_gain(problem, energy_change, impulse, velocity_after) {
+        Verdict::EnergyGained
+    } else if inconsistent {
+        Verdict::InconsistentAssumption
+    } else {
+        Verdict::Consistent
+    };
+    (energy_change, verdict)
+}
+
 #[inline]
 pub(crate) fn assemble(
     problem: &ContactProblem,
@@ -130,16 +154,8 @@ pub(crate) fn assemble(
         restitution: sum.normal_work - sum.compression_work,
         friction: sum.friction_work,
     };
-    // ΔT = ½ (v⁻ + v⁺)·p with v⁺ from the path (exact zeros at a halt): better conditioned
-    // than v⁻·p + ½ pᵀ W p, to which it is identical.
-    let energy_change = 0.5 * (problem.velocity() + sum.velocity).dot(&impulse);
-    let verdict = if is_energy_gain(problem, energy_change, impulse, sum.velocity) {
-        Verdict::EnergyGained
-    } else if inconsistency.is_some() {
-        Verdict::InconsistentAssumption
-    } else {
-        Verdict::Consistent
-    };
+    let (energy_change, verdict) =
+        energy_and_verdict(problem, impulse, sum.velocity, inconsistency.is_some());
     Outcome {
         law,
         impulse,

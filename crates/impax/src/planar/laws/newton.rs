@@ -7,7 +7,7 @@
 use super::darboux_keller::DarbouxKellerPath;
 use super::{assemble, ImpactLaw};
 use crate::law::LawId;
-use crate::planar::{ContactProblem, LawDetail, Resolution};
+use crate::planar::{BriefResolution, ContactProblem, LawDetail, Resolution};
 
 /// Kinematic restitution on the exact Darboux–Keller path.
 ///
@@ -22,6 +22,16 @@ use crate::planar::{ContactProblem, LawDetail, Resolution};
 #[derive(Debug, Clone, Copy, Default)]
 pub struct Newton;
 
+impl Newton {
+    /// The path and its end: the first `p_f` with `v_n(p_f) = −e v_n⁻`.
+    #[inline(always)]
+    fn end(problem: &ContactProblem) -> (DarbouxKellerPath, f64) {
+        let path = DarbouxKellerPath::new(problem);
+        let pf = path.first_normal_velocity(-problem.restitution() * problem.velocity().y);
+        (path, pf)
+    }
+}
+
 impl ImpactLaw for Newton {
     fn id(&self) -> LawId {
         LawId::Newton
@@ -29,8 +39,7 @@ impl ImpactLaw for Newton {
 
     #[inline]
     fn resolve(&self, problem: &ContactProblem) -> Resolution {
-        let path = DarbouxKellerPath::new(problem);
-        let pf = path.first_normal_velocity(-problem.restitution() * problem.velocity().y);
+        let (path, pf) = Self::end(problem);
         Ok(assemble(
             problem,
             LawId::Newton,
@@ -40,5 +49,11 @@ impl ImpactLaw for Newton {
             },
             None,
         ))
+    }
+
+    #[inline]
+    fn resolve_brief(&self, problem: &ContactProblem) -> BriefResolution {
+        let (path, pf) = Self::end(problem);
+        Ok(path.brief(problem, pf))
     }
 }

@@ -6,7 +6,7 @@
 use super::darboux_keller::DarbouxKellerPath;
 use super::{assemble, ImpactLaw};
 use crate::law::LawId;
-use crate::planar::{ContactProblem, LawDetail, Resolution};
+use crate::planar::{BriefResolution, ContactProblem, LawDetail, Resolution};
 
 /// Kinetic restitution on the exact Darboux–Keller path.
 ///
@@ -20,6 +20,16 @@ use crate::planar::{ContactProblem, LawDetail, Resolution};
 #[derive(Debug, Clone, Copy, Default)]
 pub struct Poisson;
 
+impl Poisson {
+    /// The path and its end `p_f = (1 + e) p_c`.
+    #[inline(always)]
+    fn end(problem: &ContactProblem) -> (DarbouxKellerPath, f64) {
+        let path = DarbouxKellerPath::new(problem);
+        let pf = (1.0 + problem.restitution()) * path.first_normal_velocity(0.0);
+        (path, pf)
+    }
+}
+
 impl ImpactLaw for Poisson {
     fn id(&self) -> LawId {
         LawId::Poisson
@@ -27,8 +37,7 @@ impl ImpactLaw for Poisson {
 
     #[inline]
     fn resolve(&self, problem: &ContactProblem) -> Resolution {
-        let path = DarbouxKellerPath::new(problem);
-        let pf = (1.0 + problem.restitution()) * path.first_normal_velocity(0.0);
+        let (path, pf) = Self::end(problem);
         Ok(assemble(
             problem,
             LawId::Poisson,
@@ -38,5 +47,11 @@ impl ImpactLaw for Poisson {
             },
             None,
         ))
+    }
+
+    #[inline]
+    fn resolve_brief(&self, problem: &ContactProblem) -> BriefResolution {
+        let (path, pf) = Self::end(problem);
+        Ok(path.brief(problem, pf))
     }
 }
