@@ -131,34 +131,37 @@ fn fill(
     t0s.clear();
     impacts.clear();
     summaries.clear();
-    setup.space.for_each_in(range.clone(), |i, vals| {
-        if visits {
-            values.extend_from_slice(vals);
-        }
-        for (f, &x) in setup.fields.iter().zip(vals) {
-            template.set(*f, x);
-        }
-        let kept = if keep { Some(&mut *impacts) } else { None };
-        match template.point_into(problems, t0s, kept) {
-            Ok(()) => {
-                if visits {
-                    valid.push(true)
+    // Only the fields whose values changed are set again (on a grid, the fast axis).
+    setup
+        .space
+        .for_each_changed_in(range.clone(), |i, vals, changed| {
+            if visits {
+                values.extend_from_slice(vals);
+            }
+            for (f, &x) in setup.fields[changed..].iter().zip(&vals[changed..]) {
+                template.set(*f, x);
+            }
+            let kept = if keep { Some(&mut *impacts) } else { None };
+            match template.point_into(problems, t0s, kept) {
+                Ok(()) => {
+                    if visits {
+                        valid.push(true)
+                    }
+                }
+                Err(e) => {
+                    if visits {
+                        valid.push(false);
+                    }
+                    notes.invalid += 1;
+                    if notes.first_invalid.is_none() {
+                        notes.first_invalid = Some(Invalid {
+                            index: i,
+                            reason: e.to_string(),
+                        });
+                    }
                 }
             }
-            Err(e) => {
-                if visits {
-                    valid.push(false);
-                }
-                notes.invalid += 1;
-                if notes.first_invalid.is_none() {
-                    notes.first_invalid = Some(Invalid {
-                        index: i,
-                        reason: e.to_string(),
-                    });
-                }
-            }
-        }
-    });
+        });
     notes
 }
 

@@ -92,7 +92,12 @@ impl Axis {
         if self.count == 1 {
             return self.start;
         }
-        let n = (self.count - 1) as f64;
+        self.value_over(i, (self.count - 1) as f64)
+    }
+
+    /// [`Axis::value`] with `n = count − 1 > 0` given as `f64` (converted once per axis).
+    #[inline(always)]
+    fn value_over(&self, i: u64, n: f64) -> f64 {
         let i = i as f64;
         (self.start * (n - i) + self.stop * i) / n
     }
@@ -165,6 +170,29 @@ impl Grid {
     /// Call `f(index, values)` for every point with index in `range`, in order. The values
     /// are advanced like an odometer (one division per call, not per point).
     pub fn for_each_in(&self, range: std::ops::Range<u64>, mut f: impl FnMut(u64, &[f64])) {
+        self.for_each_changed_in(range, |i, v, _| f(i, v));
+    }
+
+    /// As [`Grid::for_each_in`], and tell `f(index, values, changed)` the first axis whose
+    /// value may differ from the previous call's (`0` on the first call): `values[..changed]`
+    /// are the previous call's, so a caller can skip setting them again.
+    ///
+    /// ```
+    /// use impax::analysis::{Axis, Grid};
+    /// let g = Grid::new(vec![
+    ///     Axis::new("a", 0.0, 1.0, 2).unwrap(),
+    ///     Axis::new("b", 0.0, 2.0, 3).unwrap(),
+    /// ])
+    /// .unwrap();
+    /// let mut changed = Vec::new();
+    /// g.for_each_changed_in(1..5, |_, _, k| changed.push(k));
+    /// assert_eq!(changed, [0, 1, 0, 1]); // (0, 1), (0, 2), (1, 0), (1, 1)
+    /// ```
+    pub fn for_each_changed_in(
+        &self,
+        range: std::ops::Range<u64>,
+        mut f: impl FnMut(u64, &[f64], usize),
+    ) {
         let d = self.axes.len();
         let mut idx = vec![0u64; d];
         let mut vals = vec![0f64; d];
@@ -175,20 +203,24 @@ impl Grid {
         for k in 0..d {
             vals[k] = self.axes[k].value(idx[k]);
         }
+        // `count − 1` of each axis as f64 (an axis advanced past its start has count > 1).
+        let last: Vec<f64> = self.axes.iter().map(|a| (a.count - 1) as f64).collect();
+        let mut changed = 0;
         for i in range {
-            f(i, &vals);
+            f(i, &vals, changed);
             // Advance the odometer.
             let mut k = d;
             while k > 0 {
                 k -= 1;
                 idx[k] += 1;
                 if idx[k] < self.axes[k].count {
-                    vals[k] = self.axes[k].value(idx[k]);
+                    vals[k] = self.axes[k].value_over(idx[k], last[k]);
                     break;
                 }
                 idx[k] = 0;
                 vals[k] = self.axes[k].start;
             }
+            changed = k;
         }
     }
 }
@@ -364,13 +396,24 @@ impl Space {
     }
     /// Call `f(index, values)` for every point with index in `range`, in order.
     pub fn for_each_in(&self, range: std::ops::Range<u64>, mut f: impl FnMut(u64, &[f64])) {
+        self.for_each_changed_in(range, |i, v, _| f(i, v));
+    }
+
+    /// As [`Space::for_each_in`], and tell `f(index, values, changed)` the first value that
+    /// may differ from the previous call's ([`Grid::for_each_changed_in`]; always `0` for
+    /// random samples).
+    pub fn for_each_changed_in(
+        &self,
+        range: std::ops::Range<u64>,
+        mut f: impl FnMut(u64, &[f64], usize),
+    ) {
         match self {
-            Space::Grid(g) => g.for_each_in(range, f),
+            Space::Grid(g) => g.for_each_changed_in(range, f),
             Space::Random(r) => {
                 let mut vals = vec![0.0; r.ranges().len()];
                 for i in range {
                     r.point(i, &mut vals);
-                    f(i, &vals);
+                    f(i, &vals, 0);
                 }
             }
         }
