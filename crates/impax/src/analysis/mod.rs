@@ -5,6 +5,7 @@
 //!   pure function of `i`;
 //! * [`batch`]: [`resolve_problems`] / [`resolve_columns`]: one law over many problems
 //!   (structure-of-arrays in, compact [`ImpactSummary`] records out), no allocation;
+//!   [`for_each_brief`]: each law's verdict, phases and `ΔT` only, for reductions;
 //! * [`sweep`]: [`run_ordered`]: chunks computed in parallel, consumed in order, constant
 //!   memory — output independent of the thread count;
 //! * [`tally`]: [`Tally`]: counts by verdict and phase sequence, range of `ΔT/T0`;
