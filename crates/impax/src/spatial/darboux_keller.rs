@@ -19,8 +19,12 @@
 //!      ```text
 //!      dφ/du = (ŝ × g)/(ŝ·g),  dp_n/du = σ/(ŝ·g),  d(·)/du = d(·)/dp_n · dp_n/du,
 //!      ```
-//!      integrated until `σ` has shrunk by `e⁻⁴⁰`; the remaining impulse `σ/|ŝ·g|` is added
-//!      in closed form;
+//!      integrated until the series about the centripetal ray ahead
+//!      (module `ray_series`: the normal form of the direction flow, every quadrature in
+//!      closed form term by term) gives the whole rest of the slip, the halt at the ray's
+//!      angle and any event before it to the last bits; where that series does not converge
+//!      (a weakly attracting ray), until `σ` has shrunk by `e⁻⁴⁰`, the remaining impulse
+//!      `σ/|ŝ·g|` then added in closed form;
 //!    * once the slip is small (below `σ⁻/20`) and not shrinking steadily, or on leaving
 //!      `u` (`ŝ·g ≥ −0.7 |g|`: the direction swings while the slip passes near zero), it
 //!      becomes the pseudo-time `τ` with `dp_n = σ dτ`, in which the
@@ -47,6 +51,7 @@
 
 use super::invariant::{resumption_direction, sticking_ratio};
 use super::outcome::{Phase3Kind, Phases3};
+use super::ray_series::{Field, RaySeries};
 use super::rk::{dop853_step, error_measure, Dense, Step};
 use super::ContactProblem3;
 use crate::math::{Mat2, Vec2, Vec3};
@@ -671,6 +676,153 @@ fn first_event(ev: &Events, a: &Point, b: &Point) -> Option<(u8, f64, f64)> {
     }
 }
 
+/// The angle `φ` wrapped to `(−π, π]`.
+#[inline]
+fn wrap_angle(phi: f64) -> f64 {
+    phi.sin().atan2(phi.cos())
+}
+
+/// The series about the centripetal invariant ray that a shrinking slip turns toward, built
+/// once the direction is within 0.3 rad of the ray (where it can converge).
+struct TailSeries {
+    ray: Option<(f64, Vec2)>,
+    series: Option<RaySeries>,
+    built: bool,
+}
+
+impl TailSeries {
+    fn toward(field: &Field, vt: Vec2) -> TailSeries {
+        TailSeries {
+            ray: field
+                .ray_ahead(vt.y.atan2(vt.x))
+                .map(|phi| (phi, Vec2::new(phi.cos(), phi.sin()))),
+            series: None,
+            built: false,
+        }
+    }
+
+    fn get(&mut self, field: &Field, wnn: f64, vt: Vec2) -> Option<&RaySeries> {
+        if !self.built {
+            let (phi, dir) = self.ray?;
+            if dir.dot(&vt) < 0.955 * vt.norm() {
+                return None;
+            }
+            self.built = true;
+            self.series = RaySeries::new(field, wnn, phi).filter(RaySeries::attracts_to_halt);
+        }
+        self.series.as_ref()
+    }
+}
+
+/// The rest of a slip running into the centripetal ray of `ser`, in closed form
+/// ([`RaySeries`]), with the events in it located on the series: the end of the slip stage,
+/// or `None` (nothing changed) while the series does not yet give the rest to the last bits
+/// of the result, or an event could hide inside it (`v_n` not monotone on the rest).
+#[allow(clippy::too_many_arguments)]
+fn series_tail(
+    ser: &RaySeries,
+    wtn: Vec2,
+    wnn: f64,
+    mu: f64,
+    sc: Scales,
+    pt: &mut Point,
+    ev: &mut Events,
+    observe: &mut impl FnMut(f64, Vec3),
+) -> Option<SlipEnd> {
+    let sigma0 = pt.vt.norm();
+    if !(sigma0 > 0.0 && sigma0.is_finite()) {
+        return None;
+    }
+    let dir0 = pt.vt / sigma0;
+    let eta0 = ser.offset(dir0);
+    if eta0.is_nan() || eta0.abs() > 0.6 {
+        return None;
+    }
+    let xi0 = ser.normal_coordinate(eta0)?;
+    let tol = (1e-15 * sc.p / (sigma0 * ser.impulse_per_slip())).min(1e-6);
+    let trunc = ser.truncation(xi0);
+    if trunc.is_nan() || trunc > tol {
+        return None;
+    }
+    // v_n must be monotone on the rest, so that each event function is: dv_n/dp_n =
+    // w_nn − μ w_tn·ŝ keeps its sign at both ends and has no extremum (ŝ ∥ ±w_tn) between.
+    let rate = |s: Vec2| wnn - mu * wtn.dot(&s);
+    let (d0, d1) = (rate(dir0), rate(ser.dir));
+    if d0 * d1 < 0.0 || (d0 == 0.0) != (d1 == 0.0) {
+        return None;
+    }
+    if wtn.x != 0.0 || wtn.y != 0.0 {
+        let psi = wtn.y.atan2(wtn.x);
+        let (lo, hi) = (eta0.min(0.0), eta0.max(0.0));
+        for cand in [psi, psi + std::f64::consts::PI] {
+            let off = wrap_angle(cand - ser.phi);
+            if off > lo && off < hi {
+                return None;
+            }
+        }
+    }
+    let base = *pt;
+    let at = |s: f64| -> Point {
+        let inc = ser.increment(sigma0, xi0, base.vn, s);
+        let vt = if s == f64::NEG_INFINITY {
+            Vec2::zeros()
+        } else {
+            let phi = ser.phi + ser.angle_offset(xi0 * (ser.lambda * s).exp());
+            sigma0 * s.exp() * Vec2::new(phi.cos(), phi.sin())
+        };
+        Point {
+            p: base.p + inc.dp,
+            vt,
+            vn: base.vn + inc.dvn,
+            pt: base.pt + inc.dpt,
+            wn: base.wn + inc.dwn,
+            wt: base.wt + inc.dwt,
+        }
+    };
+    let end = at(f64::NEG_INFINITY);
+    if !(end.p.is_finite() && end.vn.is_finite() && end.wn.is_finite() && end.wt.is_finite()) {
+        return None;
+    }
+    let halt_phi = wrap_angle(ser.phi);
+    // At most three events lie ahead (compression end and a second compression once each,
+    // then the termination, which ends the loop).
+    loop {
+        let Some((kind, ga, gb)) = first_event(ev, pt, &end) else {
+            *pt = end;
+            observe(pt.p, Vec3::new(0.0, 0.0, pt.vn));
+            return Some(SlipEnd::Halted { phi: halt_phi });
+        };
+        // θ ∈ [0, 1] from the current point to the halt: s = ln(1 − θ).
+        let from = *pt;
+        let s_from = if from.vt == base.vt {
+            0.0
+        } else {
+            (from.vt.norm() / sigma0).ln()
+        };
+        let s_of = |th: f64| {
+            if th >= 1.0 {
+                f64::NEG_INFINITY
+            } else {
+                s_from + (-th).ln_1p()
+            }
+        };
+        let th = illinois(|th| event_value(ev, kind, &at(s_of(th))), 0.0, ga, 1.0, gb);
+        *pt = if th >= 1.0 { end } else { at(s_of(th)) };
+        observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
+        let phi = if th >= 1.0 {
+            halt_phi
+        } else {
+            pt.vt.y.atan2(pt.vt.x)
+        };
+        if let Some(done) = after_event(kind, pt, ev, phi) {
+            return Some(done);
+        }
+        if th >= 1.0 {
+            return Some(SlipEnd::Halted { phi: halt_phi });
+        }
+    }
+}
+
 #[allow(clippy::too_many_arguments)]
 fn slip_stage(
     wtt: &Mat2,
@@ -801,6 +953,7 @@ fn slip_stage(
         sc.rtol * sc.w,
     ];
     let sigma0 = pt.vt.norm();
+    let field = Field::new(wtt, wtn, mu);
     // The rest of the slip is a straight run into the origin when the direction is (to the
     // last bit of the result) on an invariant ray: the remaining impulse σ/|ŝ·g| times the
     // angular offset from the ray is below 1e-16 of the impulse scale. Returns (ŝ, ŝ·g).
@@ -839,7 +992,13 @@ fn slip_stage(
                 Ok(SlipEnd::Terminated { phi })
             } else {
                 pt.vt = Vec2::zeros();
-                Ok(SlipEnd::Halted { phi })
+                // The slip halts along the centripetal ray that the direction tends to; where
+                // the ray attracts weakly the direction is still measurably off it here.
+                let ray = field.ray_ahead(phi).map_or(phi, wrap_angle);
+                let off = wrap_angle(ray - phi).abs();
+                Ok(SlipEnd::Halted {
+                    phi: if off > 1e-9 { ray } else { phi },
+                })
             }
         };
     let max_steps = 200_000u32;
@@ -941,6 +1100,12 @@ fn slip_stage(
                 ];
                 let mut kz = fu(u, &z);
                 let mut leave = false;
+                let mut series = TailSeries::toward(&field, pt.vt);
+                if let Some(ser) = series.get(&field, wnn, pt.vt) {
+                    if let Some(end) = series_tail(ser, wtn, wnn, mu, sc, pt, ev, observe) {
+                        return Ok(end);
+                    }
+                }
                 while u > u_end && *steps < max_steps {
                     let hstep = hu.max(u_end - u);
                     let st = dop853_step(&fu, u, &z, &kz, hstep);
@@ -975,6 +1140,11 @@ fn slip_stage(
                     *pt = b;
                     *steps += 1;
                     observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
+                    if let Some(ser) = series.get(&field, wnn, pt.vt) {
+                        if let Some(end) = series_tail(ser, wtn, wnn, mu, sc, pt, ev, observe) {
+                            return Ok(end);
+                        }
+                    }
                     if let Some((s, q)) = straight_tail(pt.vt) {
                         let end = run_tail(pt, ev, s, q)?;
                         observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));

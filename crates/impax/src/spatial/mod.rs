@@ -16,6 +16,7 @@ pub mod laws;
 pub mod lcp;
 mod outcome;
 mod problem;
+mod ray_series;
 mod rk;
 
 pub use darboux_keller::SpatialOptions;

@@ -1,13 +1,13 @@
-//! OPEN BUG, fails until fixed: the slip direction reported at a halt is not the direction
-//! in which the slip halts.
+//! Regression (fixed): the slip direction reported at a halt is the direction in which the
+//! slip halts.
 //!
 //! A slip that halts runs into the origin along a centripetal invariant ray (theory §2); the
 //! direction at the halt — `to` of the `Slip { from, to }` phase followed by stick or resumed
-//! slip — is that ray's angle. The integration reports the direction at the point where it
-//! switches to its straight closed-form tail (`σ` about `e⁻⁴⁰` of the switch value), where
-//! the remaining impulse is negligible but the direction may still be far from the ray when
-//! the ray attracts weakly (`δφ ∝ σ^κ` with small `κ`). The reported angle also depends on
-//! the discretisation: rotating the tangent plane changes it by ~1e-3 rad.
+//! slip — is that ray's angle. The integration used to report the direction at the point where
+//! it switched to its straight closed-form tail (`σ` about `e⁻⁴⁰` of the switch value), still
+//! far from a weakly attracting ray (`δφ ∝ σ^κ` with small `κ`); it now reports the ray the
+//! direction tends to (reached by the series about the ray, or located from the last
+//! direction).
 //!
 //! `W = [[6, 0, 0.7], [0, 6, 0], [0.7, 0, 1]]`, `v⁻ = (−0.4, 0.9, −1.5)`, `μ = 1.45`,
 //! `e = 0.5`, `newton`: the invariant rays are `φ = 0` and `φ = π` (both centripetal;

@@ -1,0 +1,510 @@
+//! The slip near an invariant ray in closed form: a convergent series about the ray
+//! (theory §2, "Spatial"; the linearisation of the direction field at an invariant ray,
+//! Poincaré's normal form of a one-dimensional flow).
+//!
+//! With `u = ln σ` the direction of slip obeys an autonomous scalar equation and everything
+//! else is a quadrature weighted by `σ = e^u`:
+//!
+//! ```text
+//! dφ/du = F(φ) = f(φ)/q(φ),   f = ŝ × g,  q = ŝ · g,  g = w_tn − μ W_tt ŝ,
+//! dp_n/du = σ/q,  dp_t/du = −μ ŝ σ/q,  dv_n/du = (w_nn − μ w_tn·ŝ) σ/q,
+//! dW_n/du = v_n σ/q,  dW_t/du = −μ σ²/q.
+//! ```
+//!
+//! At an invariant ray `φ*` (`f(φ*) = 0`, `q(φ*) ≠ 0`) put `η = φ − φ*` and
+//! `λ = F'(φ*) = f'(φ*)/q(φ*)`. The flow is conjugate to its linear part: there is an
+//! analytic `h` with `h(ξ) = ξ + b₂ ξ² + …` and `λ ξ h'(ξ) = F(φ* + h(ξ))`, so that
+//! `η(u) = h(ξ₀ e^{λ(u−u₀)})` exactly (`b_n = Σ_{k≥2} F_k [h^k]_n / (λ (n − 1))`, order by
+//! order: no resonance in one dimension). Along that solution every integrand is `σ` or `σ²`
+//! times a power series in `ξ`, and each term integrates in closed form with
+//! `E(a, s) = (e^{a s} − 1)/a`:
+//!
+//! ```text
+//! Δp_n(s) = σ₀ Σ r_k ξ₀^k E(1 + kλ, s),          r = 1/q ∘ (φ* + h),
+//! Δp_t(s) = −μ σ₀ Σ (c_k, s_k) ξ₀^k E(1 + kλ, s), (c, s) = (cos, sin)/q ∘ (φ* + h),
+//! Δv_n(s) = σ₀ Σ κ_k ξ₀^k E(1 + kλ, s),          κ = w_nn r − μ (w₁ c + w₂ s),
+//! ΔW_n(s) = v_n₀ Δp_n + σ₀² [Σ_n (κ/(1+jλ) ∗ r)_n ξ₀^n E(2 + nλ, s)
+//!                           − Σ_k r_k ξ₀^k E(1 + kλ, s) · Σ_j κ_j ξ₀^j/(1 + jλ)],
+//! ΔW_t(s) = −μ σ₀² Σ r_k ξ₀^k E(2 + kλ, s),
+//! ```
+//!
+//! with `s = u − u₀`. Toward a centripetal ray (`q < 0`, `λ > 0`) the limit `s → −∞` is the
+//! halt of slip, `E(a, −∞) = −1/a`: the tens of integration steps that resolve `σ` over
+//! tens of e-folds are replaced by one evaluation of the series, and the direction at the
+//! halt is the ray's angle `φ*` itself.
+
+use crate::math::{Mat2, Vec2};
+
+/// Number of series terms (`ξ⁰ … ξ^(TERMS−1)`).
+pub(crate) const TERMS: usize = 14;
+
+/// `E(a, s) = (e^{a s} − 1)/a` (`s` at `a = 0`), without cancellation.
+#[inline]
+pub(crate) fn expm1_ratio(a: f64, s: f64) -> f64 {
+    if a == 0.0 {
+        s
+    } else {
+        (a * s).exp_m1() / a
+    }
+}
+
+/// The direction field's trigonometric coefficients: `f(φ) = A cos φ + B sin φ + C cos 2φ +
+/// D sin 2φ` (`A = w₂, B = −w₁, C = −μ W₁₂, D = −μ (W₂₂ − W₁₁)/2`), and
+/// `q(φ) = w₁ cos φ + w₂ sin φ − μ (M + P cos 2φ + Q sin 2φ)` with `M = (W₁₁ + W₂₂)/2`,
+/// `P = (W₁₁ − W₂₂)/2`, `Q = W₁₂`.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Field {
+    a: f64,
+    b: f64,
+    c: f64,
+    d: f64,
+    w1: f64,
+    w2: f64,
+    m: f64,
+    p: f64,
+    q: f64,
+    mu: f64,
+}
+
+impl Field {
+    pub(crate) fn new(wtt: &Mat2, wtn: Vec2, mu: f64) -> Field {
+        Field {
+            a: wtn.y,
+            b: -wtn.x,
+            c: -mu * wtt[(0, 1)],
+            d: -0.5 * mu * (wtt[(1, 1)] - wtt[(0, 0)]),
+            w1: wtn.x,
+            w2: wtn.y,
+            m: 0.5 * (wtt[(0, 0)] + wtt[(1, 1)]),
+            p: 0.5 * (wtt[(0, 0)] - wtt[(1, 1)]),
+            q: wtt[(0, 1)],
+            mu,
+        }
+    }
+
+    /// `f(φ) = ŝ × g` and `f'(φ)`.
+    #[inline]
+    fn f_df(&self, phi: f64) -> (f64, f64) {
+        let (s, c) = phi.sin_cos();
+        let (s2, c2) = (2.0 * phi).sin_cos();
+        (
+            self.a * c + self.b * s + self.c * c2 + self.d * s2,
+            -self.a * s + self.b * c - 2.0 * self.c * s2 + 2.0 * self.d * c2,
+        )
+    }
+
+    /// The invariant ray that the direction reaches from `phi` as the slip shrinks (`q < 0`:
+    /// `dφ/d(−ln σ) = f/|q|`, so the direction turns toward the sign of `f`): the first root of
+    /// `f` ahead in that sense (scanned in steps of 0.1 rad, then Newton's method kept
+    /// inside the bracket). `None` if none within a turn.
+    pub(crate) fn ray_ahead(&self, phi: f64) -> Option<f64> {
+        let f = |x: f64| self.f_df(x).0;
+        let (f0, df0) = self.f_df(phi);
+        if f0 == 0.0 {
+            return Some(phi);
+        }
+        // On a ray up to round-off (whose sign says nothing about the sense): Newton there.
+        if (f0 / df0).abs() < 1e-6 {
+            let mut x = phi;
+            for _ in 0..3 {
+                let (fx, dfx) = self.f_df(x);
+                if fx == 0.0 || dfx == 0.0 {
+                    break;
+                }
+                x -= fx / dfx;
+            }
+            return Some(x);
+        }
+        let step = 0.1f64.copysign(f0);
+        let mut a = phi;
+        for _ in 0..64 {
+            let b = a + step;
+            if (f(b) <= 0.0) != (f0 <= 0.0) {
+                return Some(self.polish(a, f(a), b));
+            }
+            a = b;
+        }
+        None
+    }
+
+    /// The root of `f` in the bracket `[a, b]` (`f(a)`, `f(b)` of opposite signs).
+    fn polish(&self, mut a: f64, mut fa: f64, mut b: f64) -> f64 {
+        let mut x = 0.5 * (a + b);
+        for _ in 0..60 {
+            let (fx, dfx) = self.f_df(x);
+            if fx == 0.0 {
+                return x;
+            }
+            if (fx < 0.0) == (fa < 0.0) {
+                a = x;
+                fa = fx;
+            } else {
+                b = x;
+            }
+            let newton = x - fx / dfx;
+            let next = if newton > a.min(b) && newton < a.max(b) {
+                newton
+            } else {
+                0.5 * (a + b)
+            };
+            if (next - x).abs() <= 2.0 * f64::EPSILON * x.abs().max(1.0) {
+                return next;
+            }
+            x = next;
+        }
+        x
+    }
+}
+
+/// Taylor coefficients of `cos(θ + kη)` or `sin(θ + kη)` in `η`.
+fn trig_series(theta: f64, k: f64, sine: bool) -> [f64; TERMS] {
+    let (s, c) = theta.sin_cos();
+    // d^n/dη^n: cycle (c, −s, −c, s) for cos, (s, c, −s, −c) for sin.
+    let cyc = if sine { [s, c, -s, -c] } else { [c, -s, -c, s] };
+    let mut out = [0.0; TERMS];
+    let mut fact = 1.0;
+    let mut kn = 1.0;
+    for (n, o) in out.iter_mut().enumerate() {
+        if n > 0 {
+            fact *= n as f64;
+            kn *= k;
+        }
+        *o = cyc[n % 4] * kn / fact;
+    }
+    out
+}
+
+/// `x / y` for power series (`y₀ ≠ 0`).
+fn divide(x: &[f64; TERMS], y: &[f64; TERMS]) -> [f64; TERMS] {
+    let mut out = [0.0; TERMS];
+    let inv = 1.0 / y[0];
+    for n in 0..TERMS {
+        let acc: f64 = y[1..=n]
+            .iter()
+            .zip(out[..n].iter().rev())
+            .map(|(a, b)| a * b)
+            .sum();
+        out[n] = (x[n] - acc) * inv;
+    }
+    out
+}
+
+/// The closed-form slip about one invariant ray (see the module documentation).
+#[derive(Debug, Clone)]
+pub(crate) struct RaySeries {
+    /// The ray's angle `φ*`.
+    pub phi: f64,
+    /// `(cos φ*, sin φ*)`.
+    pub dir: Vec2,
+    /// `λ = F'(φ*)`: the rate at which the direction approaches the ray per unit of `ln σ`.
+    pub lambda: f64,
+    mu: f64,
+    b: [f64; TERMS],
+    r: [f64; TERMS],
+    rc: [f64; TERMS],
+    rs: [f64; TERMS],
+    kappa: [f64; TERMS],
+    kr: [f64; TERMS],
+}
+
+/// Increments along the series from its start (`s = 0`) to `s`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Increment {
+    pub dp: f64,
+    pub dpt: Vec2,
+    pub dvn: f64,
+    pub dwn: f64,
+    pub dwt: f64,
+}
+
+impl RaySeries {
+    /// The series about the ray `phi` of the field (`wnn`, `wtn` for the normal
+    /// quantities). `None` if `q(φ*) = 0` or `λ` is not finite and nonzero.
+    pub(crate) fn new(field: &Field, wnn: f64, phi: f64) -> Option<RaySeries> {
+        let co = trig_series(phi, 1.0, false);
+        let si = trig_series(phi, 1.0, true);
+        let co2 = trig_series(2.0 * phi, 2.0, false);
+        let si2 = trig_series(2.0 * phi, 2.0, true);
+        let mut f = [0.0; TERMS];
+        let mut q = [0.0; TERMS];
+        for n in 0..TERMS {
+            f[n] = field.a * co[n] + field.b * si[n] + field.c * co2[n] + field.d * si2[n];
+            q[n] = field.w1 * co[n] + field.w2 * si[n]
+                - field.mu * (field.p * co2[n] + field.q * si2[n]);
+        }
+        q[0] -= field.mu * field.m;
+        // φ* is a root of f: its value there is round-off.
+        f[0] = 0.0;
+        if q[0] == 0.0 || !q[0].is_finite() {
+            return None;
+        }
+        let big_f = divide(&f, &q);
+        let lambda = big_f[1];
+        if lambda == 0.0 || !lambda.is_finite() {
+            return None;
+        }
+        // pw[k][n] = [h^k]_n, built order by order with b.
+        let mut pw = [[0.0f64; TERMS]; TERMS];
+        let mut b = [0.0; TERMS];
+        b[1] = 1.0;
+        pw[1][1] = 1.0;
+        for n in 2..TERMS {
+            for k in 2..=n {
+                // [h^k]_n = Σ_{j=1}^{n−k+1} b_j [h^(k−1)]_(n−j)
+                let acc: f64 = b[1..=n - k + 1]
+                    .iter()
+                    .zip(pw[k - 1][k - 1..n].iter().rev())
+                    .map(|(x, y)| x * y)
+                    .sum();
+                pw[k][n] = acc;
+            }
+            let mut acc = 0.0;
+            for k in 2..=n {
+                acc += big_f[k] * pw[k][n];
+            }
+            b[n] = acc / (lambda * (n - 1) as f64);
+            pw[1][n] = b[n];
+        }
+        let compose = |g: &[f64; TERMS]| -> [f64; TERMS] {
+            let mut out = [0.0; TERMS];
+            out[0] = g[0];
+            for n in 1..TERMS {
+                let mut acc = 0.0;
+                for k in 1..=n {
+                    acc += g[k] * pw[k][n];
+                }
+                out[n] = acc;
+            }
+            out
+        };
+        let mut one = [0.0; TERMS];
+        one[0] = 1.0;
+        let r = compose(&divide(&one, &q));
+        let rc = compose(&divide(&co, &q));
+        let rs = compose(&divide(&si, &q));
+        let mut kappa = [0.0; TERMS];
+        for n in 0..TERMS {
+            kappa[n] = wnn * r[n] - field.mu * (field.w1 * rc[n] + field.w2 * rs[n]);
+        }
+        let mut ka = [0.0; TERMS];
+        for (j, k) in ka.iter_mut().enumerate() {
+            *k = kappa[j] / (1.0 + j as f64 * lambda);
+        }
+        let mut kr = [0.0; TERMS];
+        for n in 0..TERMS {
+            let mut acc = 0.0;
+            for j in 0..=n {
+                acc += ka[j] * r[n - j];
+            }
+            kr[n] = acc;
+        }
+        let all = b.iter().chain(&r).chain(&rc).chain(&rs).chain(&kr);
+        if !all.clone().all(|x| x.is_finite()) {
+            return None;
+        }
+        Some(RaySeries {
+            phi,
+            dir: Vec2::new(phi.cos(), phi.sin()),
+            lambda,
+            mu: field.mu,
+            b,
+            r,
+            rc,
+            rs,
+            kappa,
+            kr,
+        })
+    }
+
+    /// Whether the ray is centripetal (`q(φ*) < 0`) and attracts the direction as the slip
+    /// shrinks (`λ > 0`): the series then runs to the halt.
+    pub(crate) fn attracts_to_halt(&self) -> bool {
+        self.r[0] < 0.0 && self.lambda > 0.0
+    }
+
+    /// `|1/q(φ*)|`: the impulse per unit of slip along the ray.
+    pub(crate) fn impulse_per_slip(&self) -> f64 {
+        self.r[0].abs()
+    }
+
+    /// The offset `η` of the direction `s` (unit vector) from the ray.
+    #[inline]
+    pub(crate) fn offset(&self, s: Vec2) -> f64 {
+        (self.dir.x * s.y - self.dir.y * s.x).atan2(self.dir.dot(&s))
+    }
+
+    /// `η = h(ξ)`.
+    pub(crate) fn angle_offset(&self, xi: f64) -> f64 {
+        self.b.iter().rev().fold(0.0, |acc, &c| acc * xi + c)
+    }
+
+    /// `ξ = h⁻¹(η)` by Newton's method, or `None` if it does not converge.
+    pub(crate) fn normal_coordinate(&self, eta: f64) -> Option<f64> {
+        let mut xi = eta;
+        for _ in 0..12 {
+            let (mut h, mut dh) = (0.0, 0.0);
+            for &c in self.b.iter().rev() {
+                dh = dh * xi + h;
+                h = h * xi + c;
+            }
+            if dh == 0.0 || !dh.is_finite() {
+                return None;
+            }
+            let step = (h - eta) / dh;
+            xi -= step;
+            if step.abs() <= 8.0 * f64::EPSILON * xi.abs() || xi == 0.0 {
+                return Some(xi);
+            }
+        }
+        None
+    }
+
+    /// The size of the last two terms of the series at `ξ`, relative to the first (an
+    /// estimate of the truncation error), or `∞` if the terms are not decreasing.
+    pub(crate) fn truncation(&self, xi: f64) -> f64 {
+        let x = xi.abs();
+        let size = |k: usize| {
+            let r0 = self.r[0].abs();
+            (self.b[k].abs()
+                + (self.r[k].abs() + self.rc[k].abs() + self.rs[k].abs()) / r0
+                + self.kr[k].abs() / self.kr[0].abs().max(r0 * r0 * 1e-300))
+                * x.powi(k as i32)
+        };
+        let (a, b, c) = (size(TERMS - 3), size(TERMS - 2), size(TERMS - 1));
+        if !(c <= b && b <= a) && c + b > 0.0 {
+            return f64::INFINITY;
+        }
+        b + c
+    }
+
+    /// The increments from `s = 0` (slip `σ₀`, normal coordinate `ξ₀`, normal velocity
+    /// `vn0`) to `s` (`s = −∞` for the halt toward a centripetal ray).
+    pub(crate) fn increment(&self, sigma0: f64, xi0: f64, vn0: f64, s: f64) -> Increment {
+        let e = |a: f64| {
+            if s == f64::NEG_INFINITY {
+                -1.0 / a
+            } else {
+                expm1_ratio(a, s)
+            }
+        };
+        let (mut sp, mut sc, mut ss, mut sk, mut skr, mut sr2, mut ka) =
+            (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+        let mut x = 1.0;
+        for k in 0..TERMS {
+            let kl = k as f64 * self.lambda;
+            let e1 = e(1.0 + kl) * x;
+            let e2 = e(2.0 + kl) * x;
+            sp += self.r[k] * e1;
+            sc += self.rc[k] * e1;
+            ss += self.rs[k] * e1;
+            sk += self.kappa[k] * e1;
+            skr += self.kr[k] * e2;
+            sr2 += self.r[k] * e2;
+            ka += self.kappa[k] * x / (1.0 + kl);
+            x *= xi0;
+        }
+        let dp = sigma0 * sp;
+        Increment {
+            dp,
+            dpt: Vec2::new(sc, ss) * (-self.mu * sigma0),
+            dvn: sigma0 * sk,
+            dwn: vn0 * dp + sigma0 * sigma0 * (skr - sp * ka),
+            dwt: -self.mu * sigma0 * sigma0 * sr2,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The u-system (φ, p, p_t, v_n, W_n, W_t) by classical RK4 with tiny steps, as an
+    /// independent check of the series.
+    fn reference(
+        wtt: &Mat2,
+        wtn: Vec2,
+        wnn: f64,
+        mu: f64,
+        phi0: f64,
+        sigma0: f64,
+        s_end: f64,
+    ) -> [f64; 7] {
+        let rhs = |u: f64, y: &[f64; 7]| -> [f64; 7] {
+            let s = Vec2::new(y[0].cos(), y[0].sin());
+            let g = wtn - mu * (wtt * s);
+            let q = s.dot(&g);
+            let f = s.x * g.y - s.y * g.x;
+            let sigma = sigma0 * u.exp();
+            let dp = sigma / q;
+            [
+                f / q,
+                dp,
+                -mu * s.x * dp,
+                -mu * s.y * dp,
+                (wnn - mu * wtn.dot(&s)) * dp,
+                y[4] * dp,
+                -mu * sigma * dp,
+            ]
+        };
+        let n = 200_000;
+        let h = s_end / n as f64;
+        let mut y = [phi0, 0.0, 0.0, 0.0, 0.3, 0.0, 0.0];
+        let add = |y: &[f64; 7], k: &[f64; 7], c: f64| {
+            let mut o = *y;
+            for i in 0..7 {
+                o[i] += c * k[i];
+            }
+            o
+        };
+        for i in 0..n {
+            let u = i as f64 * h;
+            let k1 = rhs(u, &y);
+            let k2 = rhs(u + 0.5 * h, &add(&y, &k1, 0.5 * h));
+            let k3 = rhs(u + 0.5 * h, &add(&y, &k2, 0.5 * h));
+            let k4 = rhs(u + h, &add(&y, &k3, h));
+            for j in 0..7 {
+                y[j] += h / 6.0 * (k1[j] + 2.0 * k2[j] + 2.0 * k3[j] + k4[j]);
+            }
+        }
+        y
+    }
+
+    #[test]
+    fn series_agrees_with_a_fine_integration() {
+        let wtt = Mat2::new(2.0, 0.6, 0.6, 1.0);
+        let wtn = Vec2::new(0.3, -0.2);
+        let (wnn, mu) = (1.5, 0.8);
+        let field = Field::new(&wtt, wtn, mu);
+        let phi = field.ray_ahead(1.8).expect("a ray ahead of 1.8");
+        let ser = RaySeries::new(&field, wnn, phi).expect("series");
+        assert!(ser.attracts_to_halt(), "λ = {}", ser.lambda);
+        for eta in [0.02, -0.05, 0.1] {
+            let xi = ser.normal_coordinate(eta).expect("inverse");
+            assert!((ser.angle_offset(xi) - eta).abs() < 1e-15);
+            let sigma0 = 0.1;
+            for s in [-2.0, -30.0] {
+                let r = reference(&wtt, wtn, wnn, mu, phi + eta, sigma0, s);
+                let inc = ser.increment(sigma0, xi, 0.3, s);
+                let eta_s = ser.angle_offset(xi * (ser.lambda * s).exp());
+                let got = [
+                    phi + eta_s,
+                    inc.dp,
+                    inc.dpt.x,
+                    inc.dpt.y,
+                    0.3 + inc.dvn,
+                    inc.dwn,
+                    inc.dwt,
+                ];
+                for j in 0..7 {
+                    assert!(
+                        (got[j] - r[j]).abs() <= 1e-11 * (1.0 + r[j].abs()),
+                        "η {eta} s {s} component {j}: series {} reference {} (trunc {})",
+                        got[j],
+                        r[j],
+                        ser.truncation(xi)
+                    );
+                }
+            }
+        }
+    }
+}
