@@ -17,6 +17,7 @@ mod compare;
 mod compare3;
 mod compare_mech;
 mod conserved;
+mod csv_rows;
 mod evaluate;
 mod explore;
 mod fmt;

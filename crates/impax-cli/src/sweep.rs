@@ -6,7 +6,8 @@
 //! byte-identical for any `--threads`.
 
 use crate::cli::SweepArgs;
-use crate::columns::{body_after, Column};
+use crate::columns::Column;
+use crate::csv_rows::{Rows, RowsSetup};
 use crate::evaluate::{self, ChunkNotes};
 use crate::fmt::Table;
 use crate::input::{CliError, CliResult};
@@ -169,13 +170,6 @@ fn merge_notes(total: &mut ChunkNotes, chunk: ChunkNotes) {
     }
 }
 
-#[inline]
-fn push_number(buf: &mut Vec<u8>, fmt: &mut zmij::Buffer, x: f64) {
-    if x.is_finite() {
-        buf.extend_from_slice(fmt.format_finite(x).as_bytes());
-    }
-}
-
 fn csv(
     setup: &Setup,
     columns: &[Column],
@@ -189,6 +183,8 @@ fn csv(
         .map_err(io_error)?;
     let needs_body = columns.iter().any(|c| c.needs_body());
     let law_names: Vec<&str> = setup.laws.iter().map(|l| l.as_str()).collect();
+    let rows_setup = RowsSetup::new(&law_names, &setup.space);
+    let d = setup.fields.len();
     let total = setup.space.len();
     let progress = Progress::new(total, quiet);
     let mut notes = ChunkNotes::default();
@@ -200,43 +196,20 @@ fn csv(
         CHUNK_POINTS,
         |range| {
             let n = range.end - range.start;
-            let mut buf = pool
+            let buf = pool
                 .lock()
                 .ok()
                 .and_then(|mut p| p.pop())
-                .unwrap_or_else(|| Vec::with_capacity((n as usize) * law_names.len() * 160));
-            let mut fmt = zmij::Buffer::new();
-            let mut prefix = Vec::with_capacity(64);
+                .unwrap_or_else(|| vec![0; (n as usize) * law_names.len() * 320]);
+            let mut rows = Rows::new(&rows_setup, &setup.space, d, columns, range.start, buf);
             let notes = evaluate::chunk(setup, range, needs_body, |_, vals, point, sums| {
-                prefix.clear();
-                for &v in vals {
-                    push_number(&mut prefix, &mut fmt, v);
-                    prefix.push(b',');
-                }
-                for (s, law) in sums.iter().zip(&law_names) {
-                    buf.extend_from_slice(&prefix);
-                    buf.extend_from_slice(law.as_bytes());
-                    let body = if needs_body {
-                        body_after(s, point)
-                    } else {
-                        [f64::NAN; 3]
-                    };
-                    for &c in columns {
-                        buf.push(b',');
-                        match c {
-                            Column::Status => buf.extend_from_slice(s.status.id().as_bytes()),
-                            Column::Sequence => buf.extend_from_slice(s.sequence.id().as_bytes()),
-                            _ => push_number(&mut buf, &mut fmt, c.value(s, point, body)),
-                        }
-                    }
-                    buf.push(b'\n');
-                }
+                rows.point(vals, point, sums)
             });
-            (n, buf, notes)
+            let (buf, len) = rows.finish();
+            (n, buf, len, notes)
         },
-        |(n, mut buf, chunk_notes)| {
-            w.write_all(&buf).map_err(io_error)?;
-            buf.clear();
+        |(n, buf, len, chunk_notes)| {
+            w.write_all(&buf[..len]).map_err(io_error)?;
             if let Ok(mut p) = pool.lock() {
                 p.push(buf);
             }
