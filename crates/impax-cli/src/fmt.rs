@@ -1,7 +1,11 @@
 //! Text formatting: numbers and aligned tables.
 
-/// Fixed-point with sign, `-0` shown as `0`.
+/// Fixed-point with sign, `-0` shown as `0`; scientific (`+2.000000e200`) from 10⁹ on, where
+/// fixed point would print hundreds of digits.
 pub fn signed(x: f64, decimals: usize) -> String {
+    if x.is_finite() && x.abs() >= 1e9 {
+        return format!("{:+.*e}", decimals, x);
+    }
     let s = format!("{:+.*}", decimals, x);
     let zero = format!("{:+.*}", decimals, 0.0);
     let neg_zero = format!("-{}", &zero[1..]);
@@ -9,6 +13,21 @@ pub fn signed(x: f64, decimals: usize) -> String {
         zero
     } else {
         s
+    }
+}
+
+/// An input number as given (shortest round trip), in scientific form outside
+/// `[1e-6, 1e9)` so that `1e200` is not printed with two hundred digits.
+pub struct Plain(pub f64);
+
+impl std::fmt::Display for Plain {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let x = self.0;
+        if x.is_finite() && x != 0.0 && !(1e-6..1e9).contains(&x.abs()) {
+            write!(f, "{x:e}")
+        } else {
+            write!(f, "{x}")
+        }
     }
 }
 

@@ -1,7 +1,7 @@
 //! `impax resolve`: a planar contact-space problem directly.
 
 use crate::cli::ResolveArgs;
-use crate::fmt::{signed, Table};
+use crate::fmt::{signed, Plain, Table};
 use crate::input::{finite_flag, parse_numbers, CliError, CliResult};
 use crate::json;
 use crate::scenario::parse_laws;
@@ -94,8 +94,15 @@ pub fn run(args: &ResolveArgs, out: &mut Vec<u8>) -> CliResult<()> {
             }
         }
         let mut s = format!(
-            "impax resolve — W = [[{}, {}], [{}, {}]], v⁻ = ({}, {}), μ = {mu}, e = {e}\n\n",
-            w[0], w[1], w[1], w[2], v[0], v[1]
+            "impax resolve — W = [[{}, {}], [{}, {}]], v⁻ = ({}, {}), μ = {}, e = {}\n\n",
+            Plain(w[0]),
+            Plain(w[1]),
+            Plain(w[1]),
+            Plain(w[2]),
+            Plain(v[0]),
+            Plain(v[1]),
+            Plain(mu),
+            Plain(e)
         );
         s.push_str(&t.render());
         for n in notes {
@@ -345,18 +352,32 @@ fn run_spatial(args: &ResolveArgs, out: &mut Vec<u8>) -> CliResult<()> {
             }
         }
         let mut s = format!(
-            "impax resolve (3D) — W = [[{}, {}, {}], [{}, {}, {}], [{}, {}, {}]], v⁻ = ({}, {}, {}), μ = {mu}, e = {e}\n",
-            w[0], w[1], w[2], w[1], w[3], w[4], w[2], w[4], w[5], v[0], v[1], v[2]
+            "impax resolve (3D) — W = [[{}, {}, {}], [{}, {}, {}], [{}, {}, {}]], v⁻ = ({}, {}, {}), μ = {}, e = {}\n",
+            Plain(w[0]),
+            Plain(w[1]),
+            Plain(w[2]),
+            Plain(w[1]),
+            Plain(w[3]),
+            Plain(w[4]),
+            Plain(w[2]),
+            Plain(w[4]),
+            Plain(w[5]),
+            Plain(v[0]),
+            Plain(v[1]),
+            Plain(v[2]),
+            Plain(mu),
+            Plain(e)
         );
         let lambda = sticking_ratio(&problem);
         s.push_str(&format!(
-            "stick {} (|W_tt⁻¹ w_tn| = {:.6} vs μ = {mu}); invariant rays: {}\n\n",
+            "stick {} (|W_tt⁻¹ w_tn| = {:.6} vs μ = {}); invariant rays: {}\n\n",
             if lambda.norm() <= mu {
                 "possible"
             } else {
                 "impossible"
             },
             lambda.norm(),
+            Plain(mu),
             match rays {
                 InvariantRays::All => "every direction (no swirl)".to_string(),
                 _ => rays

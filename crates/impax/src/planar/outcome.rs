@@ -315,6 +315,19 @@ pub struct Outcome {
     pub detail: LawDetail,
 }
 
+impl Outcome {
+    /// Whether every number of the outcome is finite.
+    pub fn is_finite(&self) -> bool {
+        self.impulse.iter().all(|x| x.is_finite())
+            && self.velocity_after.iter().all(|x| x.is_finite())
+            && self.energy_change.is_finite()
+            && self.work.compression.is_finite()
+            && self.work.restitution.is_finite()
+            && self.work.friction.is_finite()
+            && self.compression_impulse.is_none_or(f64::is_finite)
+    }
+}
+
 /// The part of an [`Outcome`] a reduction over many impacts reads (e.g.
 /// [`Tally`](crate::analysis::Tally)): the verdict, the phase sequence and `ΔT`.
 ///
@@ -424,6 +437,10 @@ pub enum BreakdownReason {
     /// The complementarity conditions of `lcp` have no solution (not observed for a
     /// positive definite `W`; reported rather than guessed).
     NoSolution,
+    /// The law's impulse, velocity or energy is not representable in double precision
+    /// (e.g. `whittaker` with `μ = 1e200`: `|p_t| = μ p_n` and `ΔT ≈ ½ W_tt p_t²` overflow).
+    /// Reported rather than returning infinities as numbers.
+    Overflow,
 }
 
 impl BreakdownReason {
@@ -437,6 +454,7 @@ impl BreakdownReason {
             BreakdownReason::NoSeparation => "no-separation",
             BreakdownReason::PlanarOnly => "planar-only",
             BreakdownReason::NoSolution => "no-solution",
+            BreakdownReason::Overflow => "overflow",
         }
     }
 }
@@ -466,6 +484,9 @@ impl fmt::Display for BreakdownReason {
             BreakdownReason::NoSolution => {
                 f.write_str("the complementarity conditions have no solution")
             }
+            BreakdownReason::Overflow => f.write_str(
+                "the result is not representable in double precision (overflow)",
+            ),
         }
     }
 }

@@ -263,9 +263,66 @@ struct Scales {
     rtol: f64,
 }
 
+/// The power of two nearest `1/x`, or 1 while `x` is within `[2⁻⁶⁰, 2⁶⁰]`.
+fn rescale_factor(x: f64) -> f64 {
+    if x > 0.0 && x.is_finite() && !(2f64.powi(-60)..=2f64.powi(60)).contains(&x) {
+        2f64.powi(-(x.log2().round() as i32))
+    } else {
+        1.0
+    }
+}
+
 /// Integrate the Darboux–Keller equations of `problem` to the termination `term` with the
 /// options `opts`, calling `observe(p_n, v)` at every accepted point (for hodographs).
+///
+/// The equations are homogeneous: with `v' = a v` and `W' = b W` the path is the same with
+/// `p' = (a/b) p` and works `W' = (a²/b) W`. Velocities or a `W` of extreme magnitude
+/// (outside `[2⁻⁶⁰, 2⁶⁰]`, where squares under- or overflow) are integrated scaled by powers
+/// of two — exact — and the result scaled back.
 pub fn integrate(
+    problem: &ContactProblem3,
+    term: Termination,
+    opts: &SpatialOptions,
+    observe: &mut impl FnMut(f64, Vec3),
+) -> Result<PathEnd, BreakdownReason> {
+    let v = problem.velocity();
+    let w = problem.w();
+    let a = rescale_factor(v.amax());
+    let b = rescale_factor(w.amax());
+    if a == 1.0 && b == 1.0 {
+        return integrate_scaled(problem, term, opts, observe);
+    }
+    let upper = [
+        w[(0, 0)],
+        w[(0, 1)],
+        w[(0, 2)],
+        w[(1, 1)],
+        w[(1, 2)],
+        w[(2, 2)],
+    ]
+    .map(|x| x * b);
+    let scaled = ContactProblem3::from_upper(
+        upper,
+        [v.x * a, v.y * a, v.z * a],
+        problem.friction(),
+        problem.restitution(),
+    )
+    .map_err(|_| BreakdownReason::NoSeparation)?;
+    let (kp, kv, kw) = (b / a, 1.0 / a, b / (a * a));
+    let mut end = integrate_scaled(&scaled, term, opts, &mut |p, v| observe(p * kp, v * kv))?;
+    end.impulse *= kp;
+    end.velocity *= kv;
+    end.compression_impulse = end.compression_impulse.map(|x| x * kp);
+    end.compression_work *= kw;
+    end.normal_work *= kw;
+    end.friction_work *= kw;
+    end.phases.scale_impulse(kp);
+    end.slip_halt = end.slip_halt.map(|x| x * kp);
+    end.second_compression = end.second_compression.map(|x| x * kp);
+    Ok(end)
+}
+
+fn integrate_scaled(
     problem: &ContactProblem3,
     term: Termination,
     opts: &SpatialOptions,
@@ -676,35 +733,54 @@ fn first_event(ev: &Events, a: &Point, b: &Point) -> Option<(u8, f64, f64)> {
     }
 }
 
+/// `|v|` without overflow or underflow of the squares (`hypot` only where they would).
+#[inline]
+fn norm_of(v: Vec2) -> f64 {
+    let n = v.norm();
+    if n.is_finite() && n > 1e-150 {
+        n
+    } else {
+        v.x.hypot(v.y)
+    }
+}
+
 /// The angle `φ` wrapped to `(−π, π]`.
 #[inline]
 fn wrap_angle(phi: f64) -> f64 {
     phi.sin().atan2(phi.cos())
 }
 
-/// The series about the centripetal invariant ray that a shrinking slip turns toward, built
-/// once the direction is within 0.3 rad of the ray (where it can converge).
+/// The series about the centripetal invariant ray that a shrinking slip turns toward: the
+/// ray is located once the direction turns slowly (`|ŝ × g| ≤ 0.15 |ŝ·g|`), the series
+/// built once the direction is within 0.3 rad of it (where it can converge).
 struct TailSeries {
-    ray: Option<(f64, Vec2)>,
+    ray: Option<Option<(f64, Vec2)>>,
     series: Option<RaySeries>,
     built: bool,
 }
 
 impl TailSeries {
-    fn toward(field: &Field, vt: Vec2) -> TailSeries {
+    fn new() -> TailSeries {
         TailSeries {
-            ray: field
-                .ray_ahead(vt.y.atan2(vt.x))
-                .map(|phi| (phi, Vec2::new(phi.cos(), phi.sin()))),
+            ray: None,
             series: None,
             built: false,
         }
     }
 
-    fn get(&mut self, field: &Field, wnn: f64, vt: Vec2) -> Option<&RaySeries> {
+    fn get(&mut self, field: &Field, wnn: f64, g: Vec2, vt: Vec2) -> Option<&RaySeries> {
         if !self.built {
-            let (phi, dir) = self.ray?;
-            if dir.dot(&vt) < 0.955 * vt.norm() {
+            let sigma = vt.norm();
+            let (f, q) = (vt.x * g.y - vt.y * g.x, vt.dot(&g));
+            if f.abs() > 0.15 * q.abs() {
+                return None;
+            }
+            let (phi, dir) = (*self.ray.get_or_insert_with(|| {
+                field
+                    .ray_ahead(vt.y.atan2(vt.x))
+                    .map(|phi| (phi, Vec2::new(phi.cos(), phi.sin())))
+            }))?;
+            if dir.dot(&vt) < 0.955 * sigma {
                 return None;
             }
             self.built = true;
@@ -970,7 +1046,7 @@ fn slip_stage(
         let f = (s.x * wtn.y - s.y * wtn.x)
             - mu * (wtt[(0, 1)] * (s.x * s.x - s.y * s.y)
                 + (wtt[(1, 1)] - wtt[(0, 0)]) * s.x * s.y);
-        let gn = g.norm();
+        let gn = norm_of(g);
         let est = (f.abs() / gn) * (1.0 + gn / -q) * (1.0 + mu) * sigma / -q;
         (est <= 1e-16 * sc.p).then_some((s, q))
     };
@@ -994,11 +1070,14 @@ fn slip_stage(
                 pt.vt = Vec2::zeros();
                 // The slip halts along the centripetal ray that the direction tends to; where
                 // the ray attracts weakly the direction is still measurably off it here.
-                let ray = field.ray_ahead(phi).map_or(phi, wrap_angle);
-                let off = wrap_angle(ray - phi).abs();
-                Ok(SlipEnd::Halted {
-                    phi: if off > 1e-9 { ray } else { phi },
-                })
+                let g = wtn - mu * (wtt * s);
+                let on_ray = (s.x * g.y - s.y * g.x).abs() <= 1e-9 * norm_of(g);
+                let ray = if on_ray {
+                    phi
+                } else {
+                    field.ray_ahead(phi).map_or(phi, wrap_angle)
+                };
+                Ok(SlipEnd::Halted { phi: ray })
             }
         };
     let max_steps = 200_000u32;
@@ -1010,7 +1089,7 @@ fn slip_stage(
     let rates = |vt: Vec2| -> (f64, f64) {
         let s = vt / vt.norm();
         let g = wtn - mu * (wtt * s);
-        (s.dot(&g), g.norm())
+        (s.dot(&g), norm_of(g))
     };
     while *steps < max_steps {
         match mode {
@@ -1100,8 +1179,9 @@ fn slip_stage(
                 ];
                 let mut kz = fu(u, &z);
                 let mut leave = false;
-                let mut series = TailSeries::toward(&field, pt.vt);
-                if let Some(ser) = series.get(&field, wnn, pt.vt) {
+                let mut series = TailSeries::new();
+                let g0 = wtn - mu * (wtt * (pt.vt / sigma));
+                if let Some(ser) = series.get(&field, wnn, g0, pt.vt) {
                     if let Some(end) = series_tail(ser, wtn, wnn, mu, sc, pt, ev, observe) {
                         return Ok(end);
                     }
@@ -1140,7 +1220,8 @@ fn slip_stage(
                     *pt = b;
                     *steps += 1;
                     observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
-                    if let Some(ser) = series.get(&field, wnn, pt.vt) {
+                    let g1 = wtn - mu * (wtt * dir_z(&z));
+                    if let Some(ser) = series.get(&field, wnn, g1, pt.vt) {
                         if let Some(end) = series_tail(ser, wtn, wnn, mu, sc, pt, ev, observe) {
                             return Ok(end);
                         }
@@ -1154,9 +1235,9 @@ fn slip_stage(
                     let s = dir_z(&z);
                     let g = wtn - mu * (wtt * s);
                     let q = s.dot(&g);
-                    if q >= -0.7 * g.norm() {
+                    if q >= -0.7 * norm_of(g) {
                         mode = Mode::T;
-                        let gn = g.norm().max(f64::MIN_POSITIVE);
+                        let gn = norm_of(g).max(f64::MIN_POSITIVE);
                         ht = (hu.abs() / q.abs().max(f64::MIN_POSITIVE)).min(0.5 / gn);
                         leave = true;
                         break;

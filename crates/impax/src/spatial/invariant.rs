@@ -230,7 +230,8 @@ pub fn sticking_ratio(problem: &ContactProblem3) -> Vec2 {
 ///
 /// In the eigenbasis `W_tt = Q diag(d1, d2) Qᵀ`, `w̃ = Qᵀ w_tn`, `λ'` solves the secular
 /// equation `Σ w̃ᵢ² / (λ' + μ dᵢ)² = 1`, whose left side decreases strictly and convexly:
-/// Newton's method from `λ' = 0` converges monotonically.
+/// Newton's method from a point left of the root (`max(0, |w̃| − μ d_max)`) converges
+/// monotonically.
 pub fn resumption_direction(problem: &ContactProblem3) -> Option<(Vec2, f64)> {
     let wtt = problem.wtt();
     let w = problem.wtn();
@@ -254,7 +255,10 @@ pub fn resumption_direction(problem: &ContactProblem3) -> Option<(Vec2, f64)> {
     if f0.is_nan() || f0 <= 0.0 {
         return None;
     }
-    let mut l = 0.0f64;
+    // Start at the lower bound λ' ≥ |w̃| − μ d_max of the root (every term there is at
+    // least w̃ᵢ²/|w̃|², so the secular function is ≥ 0): from 0 a tiny μ would make it
+    // overflow.
+    let mut l = (wq.norm() - mu * d.x.max(d.y)).max(0.0);
     for _ in 0..100 {
         let (f, df) = secular(l);
         let step = -f / df;

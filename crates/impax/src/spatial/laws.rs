@@ -248,7 +248,7 @@ pub fn resolve(law: LawId, problem: &ContactProblem3) -> Resolution3 {
 /// [`resolve`] with the options `opts` of the Darboux–Keller integration (the other laws
 /// ignore them).
 pub fn resolve_with(law: LawId, problem: &ContactProblem3, opts: &SpatialOptions) -> Resolution3 {
-    match law {
+    let out = match law {
         LawId::Whittaker => whittaker(problem),
         LawId::Brach => brach(problem),
         LawId::Newton | LawId::Poisson | LawId::Energetic => {
@@ -259,6 +259,14 @@ pub fn resolve_with(law: LawId, problem: &ContactProblem3, opts: &SpatialOptions
             law,
             reason: BreakdownReason::PlanarOnly,
         }),
+    }?;
+    if out.is_finite() {
+        Ok(out)
+    } else {
+        Err(Breakdown {
+            law,
+            reason: BreakdownReason::Overflow,
+        })
     }
 }
 

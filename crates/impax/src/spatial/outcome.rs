@@ -68,6 +68,13 @@ pub struct Phases3 {
 }
 
 impl Phases3 {
+    /// Multiply every phase's end impulse by `k` (a change of units).
+    pub(crate) fn scale_impulse(&mut self, k: f64) {
+        for p in &mut self.items[..self.len] {
+            p.ends_at *= k;
+        }
+    }
+
     /// No phases.
     pub const fn new() -> Self {
         Self {
@@ -154,6 +161,19 @@ pub struct Outcome3 {
     pub inconsistency: Option<Inconsistency>,
     /// Law-specific detail.
     pub detail: Detail3,
+}
+
+impl Outcome3 {
+    /// Whether every number of the outcome is finite.
+    pub fn is_finite(&self) -> bool {
+        self.impulse.iter().all(|x| x.is_finite())
+            && self.velocity_after.iter().all(|x| x.is_finite())
+            && self.energy_change.is_finite()
+            && self.work.compression.is_finite()
+            && self.work.restitution.is_finite()
+            && self.work.friction.is_finite()
+            && self.compression_impulse.is_none_or(f64::is_finite)
+    }
 }
 
 /// What a spatial law returns.

@@ -96,7 +96,7 @@ impl Field {
     /// The invariant ray that the direction reaches from `phi` as the slip shrinks (`q < 0`:
     /// `dφ/d(−ln σ) = f/|q|`, so the direction turns toward the sign of `f`): the first root of
     /// `f` ahead in that sense (scanned in steps of 0.1 rad, then Newton's method kept
-    /// inside the bracket). `None` if none within a turn.
+    /// inside the bracket). `None` if none within 0.8 rad.
     pub(crate) fn ray_ahead(&self, phi: f64) -> Option<f64> {
         let f = |x: f64| self.f_df(x).0;
         let (f0, df0) = self.f_df(phi);
@@ -117,7 +117,7 @@ impl Field {
         }
         let step = 0.1f64.copysign(f0);
         let mut a = phi;
-        for _ in 0..64 {
+        for _ in 0..8 {
             let b = a + step;
             if (f(b) <= 0.0) != (f0 <= 0.0) {
                 return Some(self.polish(a, f(a), b));

@@ -15,10 +15,10 @@
 //!   `|v_t|/|v_n| ∈ {0, 1e-12, 1, 1e12}`, `μ ∈ {0, 1e-300, 1e-12, 2, 1e3, 1e50}`,
 //!   `e ∈ {0, 1e-300, 1e-16, 0.5, 1 − 1e-16, 1}`; every success is finite (impulse,
 //!   velocity, works, `ΔT`) with `p_n ≥ 0`, every failure is a `Breakdown`, and the
-//!   planar-only laws break down with `planar-only` / `needs-body`. (Beyond these ranges —
-//!   `|v_t| < 1e-154`, `μ |W_tt| > 1e154`, anisotropy above ~1e4 — the Darboux–Keller laws
-//!   currently break down after ~5 s each in a debug build:
-//!   `regression_spatial_extreme_no_separation.rs`.)
+//!   planar-only laws break down with `planar-only` / `needs-body`; and the same beyond
+//!   the squares' range: `|v| = 1e-160`, `μ = 1e200`, `W_tt` anisotropic to 1e6 with a
+//!   coupling (`regression_spatial_extreme_no_separation.rs` checks three of them against
+//!   their closed form).
 
 use impax::math::{Mat3, Vec3};
 use impax::planar::ContactProblem;
@@ -196,8 +196,7 @@ fn out_of_range_velocity_and_coefficients_are_named() {
 }
 
 /// Upper triangles of `W`: near-singular through the coupling (Schur complement ~1e-6),
-/// `w_nn` tiny or large, anisotropic `W_tt` (up to 100; beyond ~1e4 the library's explicit
-/// integrator is stiff, see `regression_spatial_extreme_no_separation.rs`), scaled by
+/// `w_nn` tiny or large, anisotropic `W_tt` (up to 1e6, with a coupling), scaled by
 /// `10^±100`.
 fn matrices() -> Vec<[f64; 6]> {
     let mut out = vec![
@@ -209,6 +208,8 @@ fn matrices() -> Vec<[f64; 6]> {
         [1.0, 0.0, 0.6, 1.0, 0.799_999, 1.0],
         [2.0, -1.9, 0.3, 2.0, -0.3, 1.0],
         [1e-3, 0.0, 0.0, 1e-1, 0.0031, 1.0],
+        [1.0, 0.0, 0.2, 1e6, 0.3, 1.0],
+        [1e4, 0.5, -0.3, 1.0, 0.2, 1.0],
     ];
     let base = out.clone();
     for s in [1e-100, 1e100] {
@@ -226,9 +227,9 @@ fn no_law_panics_on_extreme_valid_problems() {
     let mut invalid = 0usize;
     let mut dk_broke = 0usize;
     let mut failures = Vec::new();
-    let mags = [1e-100, 1.0, 1e100];
+    let mags = [1e-160, 1e-100, 1.0, 1e100];
     let ratios = [0.0, 1e-12, 1.0, 1e12];
-    let mus = [0.0, 1e-300, 1e-12, 2.0, 1e3, 1e50];
+    let mus = [0.0, 1e-300, 1e-12, 2.0, 1e3, 1e50, 1e200];
     let es = [0.0, 1e-300, 1e-16, 0.5, 1.0 - 1e-16, 1.0];
     let mut k = 0usize;
     for u in matrices() {
@@ -270,6 +271,7 @@ fn no_law_panics_on_extreme_valid_problems() {
                                         | LawId::Newton
                                         | LawId::Poisson
                                         | LawId::Energetic
+                                        | LawId::Lcp
                                 ) {
                                     failures.push(format!("{law} (planar only) solved {p:?}"));
                                 }
