@@ -31,3 +31,28 @@ fn plastic_brach_ends_at_the_end_of_compression() {
         o.impulse.z
     );
 }
+
+/// An ill-conditioned sticking `brach` impact at `e = 0` (found by
+/// `spatial_properties::plastic_impacts_end_at_the_end_of_compression`): the normal impulse
+/// from the Cholesky solve and `−v_n⁻/slope` differed by 1.2e-11 relative; the compression
+/// ends at the end of the impact, exactly.
+#[test]
+fn plastic_sticking_brach_ends_at_the_end_of_compression() {
+    let w = [
+        0.6221982193243969,
+        0.02245065754257838,
+        -0.18794654826583992,
+        2.0616962914366073,
+        0.6076392086965461,
+        0.241674497009648,
+    ];
+    let p = impax::spatial::ContactProblem3::from_upper(
+        w,
+        [-5.085453246422038, 6.745601455720763, -0.01],
+        1.2013314902089984,
+        0.0,
+    )
+    .unwrap();
+    let o = impax::LawId::Brach.resolve3(&p).unwrap();
+    assert_eq!(o.compression_impulse, Some(o.impulse.z));
+}

@@ -74,7 +74,11 @@ pub(crate) fn straight(
     // Every straight law ends by Newton's rule, v_n(p_f) = −e v_n⁻ ≥ 0: compression has
     // ended by p_f (at p_f when e = 0, whatever the round-off of p_f).
     let (pc, wc) = if slope.z > 0.0 {
-        let pc = (-v.z / slope.z).min(pf);
+        let pc = if problem.restitution() == 0.0 {
+            pf
+        } else {
+            (-v.z / slope.z).min(pf)
+        };
         (Some(pc), pc * (v.z + 0.5 * slope.z * pc))
     } else {
         (None, normal_work)
