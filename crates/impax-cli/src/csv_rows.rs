@@ -19,6 +19,16 @@ use impax::analysis::{ImpactSummary, Sequence, Space, Status};
 const CELL: usize = 32;
 /// Where a cell keeps its length.
 const LEN: usize = CELL - 1;
+/// The most bytes a cell takes in a row: 24 of zmij's longest number (its buffer's size) and
+/// the comma.
+const WIDEST: usize = 25;
+
+/// A buffer large enough for the rows of `points` points (`laws` rows each, of `cells`
+/// cells: fields, law and columns): rows never outgrow it, and the pages past the rows
+/// written are never touched.
+pub fn chunk_bytes(points: usize, laws: usize, cells: usize) -> usize {
+    points * laws * cells * WIDEST + CELL
+}
 
 /// One cell: text and comma in `text[..text[LEN]]`, made from the value with bits `bits`.
 #[derive(Clone, Copy)]
@@ -78,11 +88,11 @@ impl Cell {
             copy_ends::<8>(s, out, &mut self.text);
         } else if n >= 4 {
             copy_ends::<4>(s, out, &mut self.text);
-        } else {
-            for (i, &b) in s.iter().enumerate() {
-                out[i] = b;
-                self.text[i] = b;
-            }
+        } else if n >= 2 {
+            copy_ends::<2>(s, out, &mut self.text);
+        } else if n == 1 {
+            out[0] = s[0];
+            self.text[0] = s[0];
         }
         out[n] = b',';
         self.text[n] = b',';
@@ -192,7 +202,7 @@ impl<'a> Rows<'a> {
             (Some(t), Space::Grid(_)) => (first % t.cells.len() as u64) as usize,
             _ => 0,
         };
-        let point_max = nl * (d + 1 + columns.len()) * CELL + CELL;
+        let point_max = chunk_bytes(1, nl, d + 1 + columns.len());
         if buf.len() < point_max {
             buf.resize(point_max, 0);
         }
@@ -361,5 +371,96 @@ mod tests {
             assert_eq!(memo.text[LEN], expected.text[LEN]);
             assert_eq!(memo.bits, x.to_bits());
         }
+    }
+
+    /// A row as formatted without any cache: every number anew.
+    fn naive(vals: &[f64], law: &str, s: &ImpactSummary, columns: &[Column]) -> String {
+        let num = |x: f64| {
+            if x.is_finite() {
+                zmij::Buffer::new().format_finite(x).to_string()
+            } else {
+                String::new()
+            }
+        };
+        let mut cells: Vec<String> = vals.iter().map(|&x| num(x)).collect();
+        cells.push(law.into());
+        for &c in columns {
+            cells.push(match c {
+                Column::Status => s.status.id().into(),
+                Column::Sequence => s.sequence.id().into(),
+                _ => num(c.value(s, None, [f64::NAN; 3])),
+            });
+        }
+        cells.join(",") + "\n"
+    }
+
+    #[test]
+    fn rows_equal_numbers_formatted_anew() {
+        use impax::analysis::{Axis, Grid};
+        use impax::math::Vec2;
+        use impax::planar::{Verdict, WorkSplit};
+        // The fast axis repeats (table), the slow one changes rarely, a third field comes
+        // from outside the table's axis; numbers repeat, change sign (0.0 and -0.0 differ),
+        // go missing and come back, for two laws that alternate.
+        let grid = Grid::new(vec![
+            Axis::new("a", 0.0, 1.0, 3).unwrap(),
+            Axis::new("b", -1.0, 1.0, 5).unwrap(),
+        ])
+        .unwrap();
+        let space = Space::Grid(grid.clone());
+        let setup = RowsSetup::new(&["energetic", "newton"], &space);
+        assert!(setup.table.is_some());
+        let columns = Column::ALL;
+        let first = 2;
+        let mut rows = Rows::new(&setup, &space, 2, &columns, first, Vec::new());
+        let mut expected = String::new();
+        let pick = [
+            0.0,
+            -0.0,
+            0.1,
+            0.1,
+            f64::NAN,
+            1e-7,
+            1e-7,
+            -2.5,
+            f64::INFINITY,
+            0.3,
+        ];
+        let mut points = Vec::new();
+        grid.for_each_in(first..grid.len(), |_, v| points.push(v.to_vec()));
+        for (i, vals) in points.iter().enumerate() {
+            let sums: Vec<ImpactSummary> = (0..2)
+                .map(|k| {
+                    let x = |j: usize| pick[(i / (1 + j % 3) + j + k) % pick.len()];
+                    ImpactSummary {
+                        status: if x(0).is_finite() {
+                            Status::Resolved(Verdict::Consistent)
+                        } else {
+                            Status::Breakdown
+                        },
+                        sequence: if i % 4 < 2 {
+                            Sequence::Slip
+                        } else {
+                            Sequence::SlipStick
+                        },
+                        impulse: Vec2::new(x(1), x(2)),
+                        velocity_after: Vec2::new(x(3), x(4)),
+                        energy_change: x(5),
+                        work: WorkSplit {
+                            compression: x(6),
+                            restitution: x(7),
+                            friction: x(8),
+                        },
+                        compression_impulse: x(9),
+                    }
+                })
+                .collect();
+            rows.point(vals, None, &sums);
+            for (s, law) in sums.iter().zip(["energetic", "newton"]) {
+                expected += &naive(vals, law, s, &columns);
+            }
+        }
+        let (buf, len) = rows.finish();
+        assert_eq!(std::str::from_utf8(&buf[..len]).unwrap(), expected);
     }
 }

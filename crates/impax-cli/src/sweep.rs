@@ -7,7 +7,7 @@
 
 use crate::cli::SweepArgs;
 use crate::columns::Column;
-use crate::csv_rows::{Rows, RowsSetup};
+use crate::csv_rows::{chunk_bytes, Rows, RowsSetup};
 use crate::evaluate::{self, ChunkNotes};
 use crate::fmt::Table;
 use crate::input::{CliError, CliResult};
@@ -185,6 +185,13 @@ fn csv(
     let law_names: Vec<&str> = setup.laws.iter().map(|l| l.as_str()).collect();
     let rows_setup = RowsSetup::new(&law_names, &setup.space);
     let d = setup.fields.len();
+    // Zeroed (untouched pages stay unmapped) and never outgrown: a row takes at most 25 bytes
+    // a cell, about 18 on average.
+    let row_bytes = chunk_bytes(
+        CHUNK_POINTS as usize,
+        law_names.len(),
+        d + 1 + columns.len(),
+    );
     let total = setup.space.len();
     let progress = Progress::new(total, quiet);
     let mut notes = ChunkNotes::default();
@@ -200,7 +207,7 @@ fn csv(
                 .lock()
                 .ok()
                 .and_then(|mut p| p.pop())
-                .unwrap_or_else(|| vec![0; (n as usize) * law_names.len() * 320]);
+                .unwrap_or_else(|| vec![0; row_bytes]);
             let mut rows = Rows::new(&rows_setup, &setup.space, d, columns, range.start, buf);
             let notes = evaluate::chunk(setup, range, needs_body, |_, vals, point, sums| {
                 rows.point(vals, point, sums)
