@@ -7,6 +7,7 @@ mod outcome;
 pub mod path;
 mod problem;
 
+pub(crate) use outcome::record_is_finite;
 pub use outcome::{
     Breakdown, BreakdownReason, BriefResolution, Inconsistency, LawDetail, Outcome, OutcomeBrief,
     Phase, PhaseKind, Phases, Resolution, SlipDirection, SmithReading, Verdict, WorkSplit,

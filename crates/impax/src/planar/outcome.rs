@@ -318,14 +318,34 @@ pub struct Outcome {
 impl Outcome {
     /// Whether every number of the outcome is finite.
     pub fn is_finite(&self) -> bool {
-        self.impulse.iter().all(|x| x.is_finite())
-            && self.velocity_after.iter().all(|x| x.is_finite())
-            && self.energy_change.is_finite()
-            && self.work.compression.is_finite()
-            && self.work.restitution.is_finite()
-            && self.work.friction.is_finite()
-            && self.compression_impulse.is_none_or(f64::is_finite)
+        record_is_finite(
+            self.impulse.iter().chain(self.velocity_after.iter()),
+            &self.work,
+            self.energy_change,
+            self.compression_impulse,
+        )
     }
+}
+
+/// Whether the numbers of an outcome record (impulse and velocity components, the work
+/// split, `ΔT`, the compression impulse) are all finite; shared by the planar and spatial
+/// records.
+pub(crate) fn record_is_finite<'a>(
+    components: impl IntoIterator<Item = &'a f64>,
+    work: &WorkSplit,
+    energy_change: f64,
+    compression_impulse: Option<f64>,
+) -> bool {
+    components.into_iter().all(|x| x.is_finite())
+        && [
+            work.compression,
+            work.restitution,
+            work.friction,
+            energy_change,
+        ]
+        .iter()
+        .all(|x| x.is_finite())
+        && compression_impulse.is_none_or(f64::is_finite)
 }
 
 /// The part of an [`Outcome`] a reduction over many impacts reads (e.g.

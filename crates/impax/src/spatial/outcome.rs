@@ -166,13 +166,12 @@ pub struct Outcome3 {
 impl Outcome3 {
     /// Whether every number of the outcome is finite.
     pub fn is_finite(&self) -> bool {
-        self.impulse.iter().all(|x| x.is_finite())
-            && self.velocity_after.iter().all(|x| x.is_finite())
-            && self.energy_change.is_finite()
-            && self.work.compression.is_finite()
-            && self.work.restitution.is_finite()
-            && self.work.friction.is_finite()
-            && self.compression_impulse.is_none_or(f64::is_finite)
+        crate::planar::record_is_finite(
+            self.impulse.iter().chain(self.velocity_after.iter()),
+            &self.work,
+            self.energy_change,
+            self.compression_impulse,
+        )
     }
 }
 
