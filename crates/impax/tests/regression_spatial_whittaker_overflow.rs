@@ -1,6 +1,6 @@
-//! Regression (fixed in 3D; the planar `whittaker` still returns the infinities): an
-//! unbounded energy gain was returned as an ordinary result, not as a gain. A spatial result
-//! with a non-finite number is now the breakdown `overflow`.
+//! Regression (fixed): an unbounded energy gain was returned as an ordinary result, not as a
+//! gain. A result with a non-finite number is now the breakdown `overflow`, in 3D and in the
+//! plane.
 //!
 //! `whittaker` keeps friction `μ p_n` against the initial slip whatever happens, so a huge
 //! `μ` drives the contact backwards with a huge tangential impulse and a huge energy gain.
@@ -34,4 +34,29 @@ fn an_overflowing_gain_is_a_breakdown() {
     let o = LawId::Whittaker.resolve3(&p).expect("representable");
     assert!(o.energy_change.is_finite() && o.energy_change > 1e199);
     assert_eq!(o.verdict, impax::planar::Verdict::EnergyGained);
+}
+
+#[test]
+fn an_overflowing_planar_gain_is_a_breakdown() {
+    let p =
+        impax::planar::ContactProblem::from_entries(1.0, 0.0, 1.0, 1.0, -1.0, 1e200, 1.0).unwrap();
+    for law in [LawId::Whittaker, LawId::TwoPhase] {
+        match law.resolve(&p) {
+            Err(b) => assert_eq!(b.reason.id(), "overflow", "{law}: {b}"),
+            Ok(o) => assert!(o.is_finite(), "{law}: {o:?}"),
+        }
+    }
+    let b = LawId::Whittaker.resolve(&p).expect_err("overflow");
+    assert_eq!(b.reason.id(), "overflow");
+    // The brief of an outcome (what a sweep's tally reads) agrees with the full record.
+    use impax::planar::laws::{Energetic, ImpactLaw, Newton, Poisson};
+    assert_eq!(Newton.resolve(&p).is_ok(), Newton.resolve_brief(&p).is_ok());
+    assert_eq!(
+        Poisson.resolve(&p).is_ok(),
+        Poisson.resolve_brief(&p).is_ok()
+    );
+    assert_eq!(
+        Energetic.resolve(&p).is_ok(),
+        Energetic.resolve_brief(&p).is_ok()
+    );
 }

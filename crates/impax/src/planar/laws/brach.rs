@@ -12,7 +12,7 @@
 //! stops the slip; the ratio is taken as beyond the cone, `μ sign(p*_t)` (with `μ = 0`:
 //! frictionless Newton restitution, as every law gives without friction).
 
-use super::{finish_line, newton_normal_impulse, ImpactLaw};
+use super::{checked, finish_line, newton_normal_impulse, ImpactLaw};
 use crate::law::LawId;
 use crate::math::sign;
 use crate::planar::{
@@ -61,7 +61,7 @@ impl ImpactLaw for Brach {
             );
             // p* is defined by v_t⁺ = 0: keep that exact rather than its round-off.
             out.velocity_after.x = 0.0;
-            return Ok(out);
+            return checked(out);
         }
         let k = mu * sign(ratio);
         let pf = newton_normal_impulse(problem, k).map_err(|denominator| Breakdown {
@@ -74,7 +74,7 @@ impl ImpactLaw for Brach {
         } else {
             SlipDirection::of(v.x)
         };
-        Ok(finish_line(
+        checked(finish_line(
             problem,
             law,
             PhaseKind::Slip(dir),

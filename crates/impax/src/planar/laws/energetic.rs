@@ -12,7 +12,7 @@
 //! `ΔT = W_n + W_t ≤ 0`: this law never gains energy.
 
 use super::darboux_keller::DarbouxKellerPath;
-use super::{assemble, ImpactLaw};
+use super::{assemble, checked, checked_brief, ImpactLaw};
 use crate::law::LawId;
 use crate::planar::{BriefResolution, ContactProblem, LawDetail, Resolution};
 
@@ -49,7 +49,7 @@ impl ImpactLaw for Energetic {
     #[inline]
     fn resolve(&self, problem: &ContactProblem) -> Resolution {
         let (path, pf) = Self::end(problem);
-        Ok(assemble(
+        checked(assemble(
             problem,
             LawId::Energetic,
             path.summarize(pf),
@@ -63,6 +63,6 @@ impl ImpactLaw for Energetic {
     #[inline]
     fn resolve_brief(&self, problem: &ContactProblem) -> BriefResolution {
         let (path, pf) = Self::end(problem);
-        Ok(path.brief(problem, pf))
+        checked_brief(path.brief(problem, pf), LawId::Energetic)
     }
 }

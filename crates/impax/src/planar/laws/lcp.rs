@@ -69,7 +69,7 @@
 //! assert!(out.energy_change > 0.0);                   // the engine rule gains energy here
 //! ```
 
-use super::{finish_line, ImpactLaw};
+use super::{checked, finish_line, ImpactLaw};
 use crate::law::LawId;
 use crate::planar::{
     ContactProblem, LawDetail, Outcome, PhaseKind, Resolution, SlipDirection, Verdict,
@@ -202,7 +202,7 @@ impl ImpactLaw for Lcp {
             },
             None,
         );
-        Ok(tidy(out, best.kind))
+        checked(tidy(out, best.kind))
     }
 }
 

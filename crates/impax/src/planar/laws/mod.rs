@@ -31,7 +31,10 @@ pub use smith::Smith;
 pub use two_phase::TwoPhase;
 pub use whittaker::Whittaker;
 
-use super::outcome::{Inconsistency, LawDetail, Outcome, PhaseKind, Verdict, WorkSplit};
+use super::outcome::{
+    Breakdown, BreakdownReason, BriefResolution, Inconsistency, LawDetail, Outcome, OutcomeBrief,
+    PhaseKind, Resolution, Verdict, WorkSplit,
+};
 use super::path::{line_summary, ImpulsePath, PathSummary};
 use super::ContactProblem;
 use crate::law::LawId;
@@ -80,6 +83,34 @@ pub(crate) fn newton_normal_impulse(problem: &ContactProblem, ratio: f64) -> Res
         Ok(pf)
     } else {
         Err(den)
+    }
+}
+
+/// The outcome as the law's result, or the breakdown [`BreakdownReason::Overflow`] if one of
+/// its numbers is not finite (e.g. `whittaker` with `μ = 1e200`: `ΔT ≈ ½ W_tt (μ p_n)²`
+/// overflows) — never infinities reported as numbers.
+#[inline]
+pub(crate) fn checked(out: Outcome) -> Resolution {
+    if out.is_finite() {
+        Ok(out)
+    } else {
+        Err(Breakdown {
+            law: out.law,
+            reason: BreakdownReason::Overflow,
+        })
+    }
+}
+
+/// As [`checked`] for the brief of an outcome (only `ΔT` is a number there).
+#[inline]
+pub(crate) fn checked_brief(brief: OutcomeBrief, law: LawId) -> BriefResolution {
+    if brief.energy_change.is_finite() {
+        Ok(brief)
+    } else {
+        Err(Breakdown {
+            law,
+            reason: BreakdownReason::Overflow,
+        })
     }
 }
 

@@ -5,7 +5,7 @@
 //! energy (Stronge 1991); the outcome then says [`Verdict::EnergyGained`](crate::planar::Verdict).
 
 use super::darboux_keller::DarbouxKellerPath;
-use super::{assemble, ImpactLaw};
+use super::{assemble, checked, checked_brief, ImpactLaw};
 use crate::law::LawId;
 use crate::planar::{BriefResolution, ContactProblem, LawDetail, Resolution};
 
@@ -40,7 +40,7 @@ impl ImpactLaw for Newton {
     #[inline]
     fn resolve(&self, problem: &ContactProblem) -> Resolution {
         let (path, pf) = Self::end(problem);
-        Ok(assemble(
+        checked(assemble(
             problem,
             LawId::Newton,
             path.summarize(pf),
@@ -54,6 +54,6 @@ impl ImpactLaw for Newton {
     #[inline]
     fn resolve_brief(&self, problem: &ContactProblem) -> BriefResolution {
         let (path, pf) = Self::end(problem);
-        Ok(path.brief(problem, pf))
+        checked_brief(path.brief(problem, pf), LawId::Newton)
     }
 }

@@ -4,7 +4,7 @@
 //! times the compression impulse.
 
 use super::darboux_keller::DarbouxKellerPath;
-use super::{assemble, ImpactLaw};
+use super::{assemble, checked, checked_brief, ImpactLaw};
 use crate::law::LawId;
 use crate::planar::{BriefResolution, ContactProblem, LawDetail, Resolution};
 
@@ -38,7 +38,7 @@ impl ImpactLaw for Poisson {
     #[inline]
     fn resolve(&self, problem: &ContactProblem) -> Resolution {
         let (path, pf) = Self::end(problem);
-        Ok(assemble(
+        checked(assemble(
             problem,
             LawId::Poisson,
             path.summarize(pf),
@@ -52,6 +52,6 @@ impl ImpactLaw for Poisson {
     #[inline]
     fn resolve_brief(&self, problem: &ContactProblem) -> BriefResolution {
         let (path, pf) = Self::end(problem);
-        Ok(path.brief(problem, pf))
+        checked_brief(path.brief(problem, pf), LawId::Poisson)
     }
 }

@@ -26,7 +26,7 @@
 //! largest `σ η` — the least correction of Whittaker's rule — is taken, and the count is
 //! reported in [`LawDetail::Smith`].
 
-use super::{finish_line, ImpactLaw};
+use super::{checked, finish_line, ImpactLaw};
 use crate::law::LawId;
 use crate::math::{quadratic_roots, sign, Vec2};
 use crate::planar::{
@@ -291,7 +291,7 @@ impl ImpactLaw for Smith {
         } else {
             SlipDirection::of(v.x)
         };
-        Ok(finish_line(
+        checked(finish_line(
             problem,
             law,
             PhaseKind::Slip(dir),

@@ -23,7 +23,7 @@
 //! Whittaker's about the sticking impulse `p_t = −v_t⁻/W_tt`, so the two rules give the
 //! *same* `ΔT`.
 
-use super::{finish, finish_line, newton_normal_impulse, ImpactLaw};
+use super::{checked, finish, finish_line, newton_normal_impulse, ImpactLaw};
 use crate::law::LawId;
 use crate::planar::path::ImpulsePath;
 use crate::planar::{
@@ -58,7 +58,7 @@ impl ImpactLaw for TwoPhase {
                 law,
                 reason: BreakdownReason::NegativeNormalImpulse { denominator },
             })?;
-            return Ok(finish_line(
+            return checked(finish_line(
                 problem,
                 law,
                 PhaseKind::Slip(dir),
@@ -98,7 +98,7 @@ impl ImpactLaw for TwoPhase {
         let slip_after = path.velocity_at(total).x;
         let inconsistency =
             (slip_after * s0 > 0.0).then_some(Inconsistency::ReversalDidNotHappen { slip_after });
-        Ok(finish(
+        checked(finish(
             problem,
             law,
             &path,

@@ -12,7 +12,7 @@
 //! slip during the impact; when the slip has reversed by the end, the outcome carries
 //! [`Inconsistency::SlipReversed`], and the energy may rise (Kane's paradox).
 
-use super::{finish_line, newton_normal_impulse, ImpactLaw};
+use super::{checked, finish_line, newton_normal_impulse, ImpactLaw};
 use crate::law::LawId;
 use crate::planar::{
     Breakdown, BreakdownReason, ContactProblem, Inconsistency, LawDetail, PhaseKind, Resolution,
@@ -51,7 +51,7 @@ impl ImpactLaw for Whittaker {
             && problem.friction() > 0.0
             && slip_after * dir.sign() < 0.0)
             .then_some(Inconsistency::SlipReversed { slip_after });
-        Ok(finish_line(
+        checked(finish_line(
             problem,
             LawId::Whittaker,
             PhaseKind::Slip(dir),
