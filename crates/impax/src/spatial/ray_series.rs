@@ -67,6 +67,7 @@ pub(crate) struct Field {
 }
 
 impl Field {
+    /// The coefficients of `f` and `q` for `W_tt`, `w_tn` and `μ`.
     pub(crate) fn new(wtt: &Mat2, wtn: Vec2, mu: f64) -> Field {
         Field {
             a: wtn.y,
@@ -210,10 +211,15 @@ pub(crate) struct RaySeries {
 /// Increments along the series from its start (`s = 0`) to `s`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct Increment {
+    /// `Δp_n`.
     pub dp: f64,
+    /// `Δp_t`.
     pub dpt: Vec2,
+    /// `Δv_n`.
     pub dvn: f64,
+    /// Normal work `ΔW_n`.
     pub dwn: f64,
+    /// Friction work `ΔW_t`.
     pub dwt: f64,
 }
 
