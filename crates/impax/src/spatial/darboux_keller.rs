@@ -899,6 +899,68 @@ fn series_tail(
     }
 }
 
+/// What one attempted step of the slip stage did.
+enum Advance {
+    /// Rejected, with this error measure: the caller shrinks the step.
+    Rejected(f64),
+    /// Accepted, with this error measure: the caller may grow the step.
+    Accepted(f64),
+    /// Stopped at an event inside the step: `Some` if the law terminated there.
+    Event(Option<SlipEnd>),
+}
+
+/// One DOP853 step of size `h` from `(x, y)` (derivative `k`) in any of the integration
+/// variables: the error test against `atol + rtol |y|`, then the first event inside the step
+/// located on the discrete solution ([`locate_in_step`]) or else the whole step. On success
+/// `x`, `y`, `k`, `pt` and `steps` advance and `observe` sees the new point; after an event
+/// the state's `v_n` (entry `vn_at`) takes the point's exact value.
+#[allow(clippy::too_many_arguments)]
+fn advance<const N: usize>(
+    f: &impl Fn(f64, &[f64; N]) -> [f64; N],
+    point: &impl Fn(f64, &[f64; N]) -> Point,
+    atol: &[f64; N],
+    rtol: f64,
+    vn_at: usize,
+    x: &mut f64,
+    y: &mut [f64; N],
+    k: &mut [f64; N],
+    h: f64,
+    pt: &mut Point,
+    ev: &mut Events,
+    steps: &mut u32,
+    observe: &mut impl FnMut(f64, Vec3),
+) -> Advance {
+    let st = dop853_step(f, *x, y, k, h);
+    let y1 = st.y;
+    let en = error_measure(&st, |i| atol[i] + rtol * y[i].abs().max(y1[i].abs()));
+    if en.is_nan() || en > 1.0 {
+        return Advance::Rejected(en);
+    }
+    let b = point(*x + h, &y1);
+    let k1 = f(*x + h, &y1);
+    if let Some((kind, ga, gb)) = first_event(ev, pt, &b) {
+        let (xe, ye) = locate_in_step(f, point, ev, kind, *x, y, k, h, &st, &k1, ga, gb);
+        *x = xe;
+        *y = ye;
+        *pt = point(xe, &ye);
+        *steps += 1;
+        observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
+        if let Some(end) = after_event(kind, pt, ev, pt.vt.y.atan2(pt.vt.x)) {
+            return Advance::Event(Some(end));
+        }
+        y[vn_at] = pt.vn;
+        *k = f(*x, y);
+        return Advance::Event(None);
+    }
+    *x += h;
+    *y = y1;
+    *k = k1;
+    *pt = b;
+    *steps += 1;
+    observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
+    Advance::Accepted(en)
+}
+
 #[allow(clippy::too_many_arguments)]
 fn slip_stage(
     wtt: &Mat2,
@@ -1124,39 +1186,23 @@ fn slip_stage(
                     if q < 0.0 {
                         h = h.min(0.5 * sigma / -q);
                     }
-                    let st = dop853_step(&fp, pt.p, &y, &k, h);
-                    let y1 = st.y;
-                    let en =
-                        error_measure(&st, |i| atol_p[i] + sc.rtol * y[i].abs().max(y1[i].abs()));
-                    if en.is_nan() || en > 1.0 {
-                        h *= shrink(en);
-                        if h <= 1e-300 {
-                            return Err(BreakdownReason::NoSeparation);
+                    let mut x = pt.p;
+                    let adv = advance(
+                        &fp, &from_y, &atol_p, sc.rtol, 2, &mut x, &mut y, &mut k, h, pt, ev,
+                        steps, observe,
+                    );
+                    let en = match adv {
+                        Advance::Rejected(en) => {
+                            h *= shrink(en);
+                            if h <= 1e-300 {
+                                return Err(BreakdownReason::NoSeparation);
+                            }
+                            continue;
                         }
-                        continue;
-                    }
-                    let b = from_y(pt.p + h, &y1);
-                    let k1 = fp(pt.p + h, &y1);
-                    if let Some((kind, ga, gb)) = first_event(ev, pt, &b) {
-                        let (x, yt) = locate_in_step(
-                            &fp, &from_y, ev, kind, pt.p, &y, &k, h, &st, &k1, ga, gb,
-                        );
-                        *pt = from_y(x, &yt);
-                        *steps += 1;
-                        observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
-                        if let Some(end) = after_event(kind, pt, ev, pt.vt.y.atan2(pt.vt.x)) {
-                            return Ok(end);
-                        }
-                        y = yt;
-                        y[2] = pt.vn;
-                        k = fp(pt.p, &y);
-                        continue;
-                    }
-                    *pt = b;
-                    y = y1;
-                    k = k1;
-                    *steps += 1;
-                    observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
+                        Advance::Event(Some(end)) => return Ok(end),
+                        Advance::Event(None) => continue,
+                        Advance::Accepted(en) => en,
+                    };
                     h *= grow(en);
                 }
             }
@@ -1188,38 +1234,19 @@ fn slip_stage(
                 }
                 while u > u_end && *steps < max_steps {
                     let hstep = hu.max(u_end - u);
-                    let st = dop853_step(&fu, u, &z, &kz, hstep);
-                    let z1 = st.y;
-                    let en =
-                        error_measure(&st, |i| atol_u[i] + sc.rtol * z[i].abs().max(z1[i].abs()));
-                    if en.is_nan() || en > 1.0 {
-                        hu *= shrink(en);
-                        continue;
-                    }
-                    let b = from_z(u + hstep, &z1);
-                    let k1 = fu(u + hstep, &z1);
-                    if let Some((kind, ga, gb)) = first_event(ev, pt, &b) {
-                        let (x, zt) = locate_in_step(
-                            &fu, &from_z, ev, kind, u, &z, &kz, hstep, &st, &k1, ga, gb,
-                        );
-                        u = x;
-                        z = zt;
-                        *pt = from_z(u, &z);
-                        *steps += 1;
-                        observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
-                        if let Some(end) = after_event(kind, pt, ev, pt.vt.y.atan2(pt.vt.x)) {
-                            return Ok(end);
+                    let adv = advance(
+                        &fu, &from_z, &atol_u, sc.rtol, 4, &mut u, &mut z, &mut kz, hstep, pt, ev,
+                        steps, observe,
+                    );
+                    let en = match adv {
+                        Advance::Rejected(en) => {
+                            hu *= shrink(en);
+                            continue;
                         }
-                        z[4] = pt.vn;
-                        kz = fu(u, &z);
-                        continue;
-                    }
-                    u += hstep;
-                    z = z1;
-                    kz = k1;
-                    *pt = b;
-                    *steps += 1;
-                    observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
+                        Advance::Event(Some(end)) => return Ok(end),
+                        Advance::Event(None) => continue,
+                        Advance::Accepted(en) => en,
+                    };
                     let g1 = wtn - mu * (wtt * dir_z(&z));
                     if let Some(ser) = series.get(&field, wnn, g1, pt.vt) {
                         if let Some(end) = series_tail(ser, wtn, wnn, mu, sc, pt, ev, observe) {
@@ -1274,41 +1301,22 @@ fn slip_stage(
                 let sigma_end = pt.vt.norm() * (-LOG_SPAN).exp();
                 while *steps < max_steps {
                     ht = ht.min(h_stable);
-                    let st = dop853_step(&ft, t, &z, &kz, ht);
-                    let z1 = st.y;
-                    let en =
-                        error_measure(&st, |i| atol_t[i] + sc.rtol * z[i].abs().max(z1[i].abs()));
-                    if en.is_nan() || en > 1.0 {
-                        ht *= shrink(en);
-                        if ht <= 1e-300 {
-                            return Err(BreakdownReason::NoSeparation);
+                    let adv = advance(
+                        &ft, &from_t, &atol_t, sc.rtol, 2, &mut t, &mut z, &mut kz, ht, pt, ev,
+                        steps, observe,
+                    );
+                    let en = match adv {
+                        Advance::Rejected(en) => {
+                            ht *= shrink(en);
+                            if ht <= 1e-300 {
+                                return Err(BreakdownReason::NoSeparation);
+                            }
+                            continue;
                         }
-                        continue;
-                    }
-                    let b = from_t(t + ht, &z1);
-                    let k1 = ft(t + ht, &z1);
-                    if let Some((kind, ga, gb)) = first_event(ev, pt, &b) {
-                        let (x, zt) = locate_in_step(
-                            &ft, &from_t, ev, kind, t, &z, &kz, ht, &st, &k1, ga, gb,
-                        );
-                        t = x;
-                        z = zt;
-                        *pt = from_t(t, &z);
-                        *steps += 1;
-                        observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
-                        if let Some(end) = after_event(kind, pt, ev, pt.vt.y.atan2(pt.vt.x)) {
-                            return Ok(end);
-                        }
-                        z[2] = pt.vn;
-                        kz = ft(t, &z);
-                        continue;
-                    }
-                    t += ht;
-                    z = z1;
-                    kz = k1;
-                    *pt = b;
-                    *steps += 1;
-                    observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
+                        Advance::Event(Some(end)) => return Ok(end),
+                        Advance::Event(None) => continue,
+                        Advance::Accepted(en) => en,
+                    };
                     if let Some((s, q)) = straight_tail(pt.vt) {
                         let end = run_tail(pt, ev, s, q)?;
                         observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
