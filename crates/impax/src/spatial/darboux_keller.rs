@@ -1247,8 +1247,9 @@ fn slip_stage(
                         Advance::Event(None) => continue,
                         Advance::Accepted(en) => en,
                     };
-                    let g1 = wtn - mu * (wtt * dir_z(&z));
-                    if let Some(ser) = series.get(&field, wnn, g1, pt.vt) {
+                    let s = dir_z(&z);
+                    let g = wtn - mu * (wtt * s);
+                    if let Some(ser) = series.get(&field, wnn, g, pt.vt) {
                         if let Some(end) = series_tail(ser, wtn, wnn, mu, sc, pt, ev, observe) {
                             return Ok(end);
                         }
@@ -1259,8 +1260,6 @@ fn slip_stage(
                         return Ok(end);
                     }
                     // The slip must keep shrinking; otherwise go on in τ.
-                    let s = dir_z(&z);
-                    let g = wtn - mu * (wtt * s);
                     let q = s.dot(&g);
                     if q >= -0.7 * norm_of(g) {
                         mode = Mode::T;
