@@ -49,6 +49,8 @@
 //! on a bracket of ±1e-9 of the step around the seed), to near machine precision; in the
 //! linear stages they are exact.
 
+mod angle;
+
 use super::invariant::{resumption_direction, sticking_ratio};
 use super::outcome::{Phase3Kind, Phases3};
 use super::ray_series::{Field, RaySeries};
@@ -768,6 +770,15 @@ impl TailSeries {
         }
     }
 
+    /// With the ray ahead already located.
+    fn with_ray(phi: f64, dir: Vec2) -> TailSeries {
+        TailSeries {
+            ray: Some(Some((phi, dir))),
+            series: None,
+            built: false,
+        }
+    }
+
     fn get(&mut self, field: &Field, wnn: f64, g: Vec2, vt: Vec2) -> Option<&RaySeries> {
         if !self.built {
             let sigma = vt.norm();
@@ -897,6 +908,37 @@ fn series_tail(
             return Some(SlipEnd::Halted { phi: halt_phi });
         }
     }
+}
+
+/// Whether the slip turns or shrinks appreciably before the next normal event (the angle
+/// variable pays off), judged from the rates at `pt`: `(|ŝ × g| + max(0, −ŝ·g))/σ` times the
+/// normal impulse to the event, `|v_n|` (or `e |v_n⁻|` after compression) over
+/// `k_n = w_nn − μ w_tn·ŝ`, at least a quarter (always when `k_n ≤ 0`).
+fn turns_before_event(
+    pt: &Point,
+    ev: &Events,
+    vn_start: f64,
+    field: &Field,
+    wnn: f64,
+    wtn: Vec2,
+    mu: f64,
+) -> bool {
+    let sigma = pt.vt.norm();
+    let s = pt.vt / sigma;
+    let kn = wnn - mu * wtn.dot(&s);
+    if kn.is_nan() || kn <= 0.0 {
+        return true;
+    }
+    let to_event = if ev.pc.is_none() {
+        -pt.vn
+    } else {
+        ev.e * vn_start.abs()
+    }
+    .abs()
+        / kn;
+    let rate = field.f_at(s.x, s.y).abs() + (-field.q_at(s.x, s.y)).max(0.0);
+    // (A NaN says nothing: try the angle variable.)
+    (rate * to_event).partial_cmp(&(0.25 * sigma)) != Some(std::cmp::Ordering::Less)
 }
 
 /// What one attempted step of the slip stage did.
@@ -1091,6 +1133,7 @@ fn slip_stage(
         sc.rtol * sc.w,
     ];
     let sigma0 = pt.vt.norm();
+    let vn_start = pt.vn;
     let field = Field::new(wtt, wtn, mu);
     // The rest of the slip is a straight run into the origin when the direction is (to the
     // last bit of the result) on an invariant ray: the remaining impulse σ/|ŝ·g| times the
@@ -1143,6 +1186,10 @@ fn slip_stage(
             }
         };
     let max_steps = 200_000u32;
+    // The invariant rays, found when the angle variable is first tried.
+    let mut roots: Option<Option<angle::Roots>> = None;
+    // The angle variable is tried first, and again a few steps after a start on a ray.
+    let mut angle_retry = Some(0u32);
     let mut mode = Mode::P;
     let mut h = 0.05 * sc.p;
     let mut hu = -0.25f64;
@@ -1164,6 +1211,41 @@ fn slip_stage(
                         let end = run_tail(pt, ev, s, q)?;
                         observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
                         return Ok(end);
+                    }
+                    let try_angle = angle_retry.is_some_and(|at| {
+                        *steps >= at && turns_before_event(pt, ev, vn_start, &field, wnn, wtn, mu)
+                    });
+                    if try_angle {
+                        if let Some(roots) = roots
+                            .get_or_insert_with(|| angle::Roots::find(&field))
+                            .as_ref()
+                        {
+                            let cx = angle::Context {
+                                wtt,
+                                wtn,
+                                wnn,
+                                mu,
+                                field: &field,
+                                roots,
+                                sc,
+                                max_steps,
+                                e: ev.e,
+                                vn0: vn_start,
+                            };
+                            let before = *steps;
+                            let mut straight = |pt: &mut Point, ev: &mut Events| {
+                                straight_tail(pt.vt).map(|(s, q)| run_tail(pt, ev, s, q))
+                            };
+                            match angle::run(&cx, pt, ev, steps, observe, &mut straight)? {
+                                angle::Exit::End(end) => return Ok(end),
+                                angle::Exit::Handoff => {
+                                    angle_retry = (*steps == before).then_some(*steps + 3);
+                                    y = to_y(pt);
+                                    k = fp(pt.p, &y);
+                                    continue;
+                                }
+                            }
+                        }
                     }
                     let sigma = pt.vt.norm();
                     let (q, gn) = rates(pt.vt);

@@ -83,9 +83,28 @@ impl Field {
         }
     }
 
+    /// The coefficients `(A, B, C, D)` of `f`.
+    #[inline]
+    pub(crate) fn f_coefficients(&self) -> (f64, f64, f64, f64) {
+        (self.a, self.b, self.c, self.d)
+    }
+
+    /// `f = ŝ × g` at the direction `(c, s) = (cos φ, sin φ)`.
+    #[inline]
+    pub(crate) fn f_at(&self, c: f64, s: f64) -> f64 {
+        self.a * c + self.b * s + self.c * (c * c - s * s) + self.d * (2.0 * c * s)
+    }
+
+    /// `q = ŝ · g` at the direction `(c, s) = (cos φ, sin φ)`.
+    #[inline]
+    pub(crate) fn q_at(&self, c: f64, s: f64) -> f64 {
+        self.w1 * c + self.w2 * s
+            - self.mu * (self.m + self.p * (c * c - s * s) + self.q * (2.0 * c * s))
+    }
+
     /// `f(φ) = ŝ × g` and `f'(φ)`.
     #[inline]
-    fn f_df(&self, phi: f64) -> (f64, f64) {
+    pub(crate) fn f_df(&self, phi: f64) -> (f64, f64) {
         let (s, c) = phi.sin_cos();
         let (s2, c2) = (2.0 * phi).sin_cos();
         (
@@ -143,15 +162,16 @@ impl Field {
                 b = x;
             }
             let newton = x - fx / dfx;
-            let next = if newton > a.min(b) && newton < a.max(b) {
+            // Converged (checked before the bracket test: at the root the step is nil and
+            // the point sits on the bracket's end).
+            if (newton - x).abs() <= 2.0 * f64::EPSILON * x.abs().max(1.0) {
+                return newton;
+            }
+            x = if newton > a.min(b) && newton < a.max(b) {
                 newton
             } else {
                 0.5 * (a + b)
             };
-            if (next - x).abs() <= 2.0 * f64::EPSILON * x.abs().max(1.0) {
-                return next;
-            }
-            x = next;
         }
         x
     }

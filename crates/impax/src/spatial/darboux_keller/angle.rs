@@ -1,0 +1,614 @@
+//! The slip stage in the angle variable (theory §2, "Spatial"): the direction equation solved
+//! by a change of variable, everything else a quadrature on Chebyshev panels.
+//!
+//! During slip `dφ/dp_n = f(φ)/σ` keeps the sign of `f = ŝ × g` (`g = w_tn − μ W_tt ŝ`), so
+//! the direction turns monotonically from the invariant ray behind it toward the one ahead
+//! (the roots of `f`, which has zero mean over the circle and so at least two) and reaches
+//! neither at a finite impulse unless the slip halts there. With `θ` the angle turned in the
+//! sense of `f`, `δ_b = θ − θ_b` and `δ_a = θ_a − θ` the distances to the two rays and
+//! `D = δ_a + δ_b`, the variable
+//!
+//! ```text
+//! x = ln(δ_b/δ_a),   dθ/dx = δ_a δ_b / D,   ρ = (dθ/dx)/|f|,
+//! du/dx = q ρ,  dp_n/dx = σ ρ,  dp_t/dx = −μ ŝ σ ρ,  dW_t/dx = −μ σ² ρ,  dW_n/dx = v_n σ ρ
+//! ```
+//!
+//! (`u = ln σ`, `q = ŝ·g`) maps the sector onto the whole real line. Near either ray
+//! `|f| ≈ |f'| δ`, so `ρ` stays bounded and `σ ∝ e^{κ x}`: every integrand is smooth on the
+//! scale of one unit of `x` — a swing of the direction through a near-zero pass, the approach
+//! to a halt, a slip leaving a ray or growing along one, a nearly frozen slip alike. The
+//! only nonlinear equation (the direction's) is solved by the map itself; `u`, then `p_n`,
+//! `p_t`, `W_t`, then `v_n` (algebraic) and `W_n` are cumulative integrals on 17-node
+//! Chebyshev–Lobatto panels ([`crate::spatial::chebyshev`]), whose length follows the size of
+//! the last Chebyshev coefficients of `du/dx` and `dp_n/dx`. Events are located on the
+//! panel's interpolants.
+//!
+//! Near a ray `r`, `f` is evaluated from its expansion about the ray with `f(r) = 0` imposed
+//! (a change of the data by the round-off of the root, ~1e-16):
+//!
+//! ```text
+//! f(r + ε) = sin ε [Q + 2 S cos ε − R sin ε (2 cos ε + 1)/(1 + cos ε)],
+//! Q = B cos r − A sin r,  R = C cos 2r + D sin 2r,  S = D cos 2r − C sin 2r,
+//! ```
+//!
+//! so `ρ` keeps full relative accuracy however close the direction gets to the ray.
+
+// Tests of the form `!(x > 0.0)` are meant: a NaN must fail them.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
+use super::{
+    after_event, event_value, first_event, illinois, linear_piece, series_tail, Events, Linear,
+    Point, Scales, SlipEnd, TailSeries, Termination,
+};
+use crate::math::{Mat2, Vec2, Vec3};
+use crate::planar::BreakdownReason;
+use crate::spatial::chebyshev::{dot, lobatto, M, N};
+use crate::spatial::outcome::Phase3Kind;
+use crate::spatial::ray_series::Field;
+use std::f64::consts::TAU;
+use std::sync::OnceLock;
+
+/// The invariant rays as the roots of `f` in `[0, 2π)`, found by a scan that cannot miss a
+/// root (a bound on `|f''|` excludes roots between samples of `f` and `f'`).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Roots {
+    phi: [f64; 4],
+    len: usize,
+    /// Subdivisions left to the scan.
+    budget: u32,
+}
+
+/// Samples of the scan.
+const GRID: usize = 32;
+
+/// `(cos φ_k, sin φ_k)` on the scan's grid `φ_k = 2π k/GRID`.
+fn grid() -> &'static [(f64, f64); GRID] {
+    static GRID_TABLE: OnceLock<[(f64, f64); GRID]> = OnceLock::new();
+    GRID_TABLE.get_or_init(|| {
+        std::array::from_fn(|k| {
+            let (s, c) = (TAU * k as f64 / GRID as f64).sin_cos();
+            (c, s)
+        })
+    })
+}
+
+/// `f` and `f'` at the direction `(c, s)` (double angles by the product formulas).
+#[inline]
+fn f_df_at((a, b, cc, d): (f64, f64, f64, f64), c: f64, s: f64) -> (f64, f64) {
+    let (c2, s2) = (c * c - s * s, 2.0 * c * s);
+    (
+        a * c + b * s + cc * c2 + d * s2,
+        -a * s + b * c - 2.0 * cc * s2 + 2.0 * d * c2,
+    )
+}
+
+impl Roots {
+    /// The roots of `f`, or `None` if `f ≡ 0` (every direction invariant).
+    pub(super) fn find(field: &Field) -> Option<Roots> {
+        let (a, b, c, d) = field.f_coefficients();
+        let scale = a.abs() + b.abs() + c.abs() + d.abs();
+        if !(scale > 0.0) || !scale.is_finite() {
+            return None;
+        }
+        // f scaled to unit size (no underflow in the tests below).
+        let k = (a / scale, b / scale, c / scale, d / scale);
+        let (a, b, c, d) = k;
+        let scale = 1.0;
+        // |f''| ≤ |A| + |B| + 4 (|C| + |D|).
+        let bound = a.abs() + b.abs() + 4.0 * (c.abs() + d.abs());
+        let mut roots = Roots {
+            phi: [0.0; 4],
+            len: 0,
+            budget: 64,
+        };
+        let table = grid();
+        let h = TAU / GRID as f64;
+        let at = |j: usize| -> (f64, f64, f64) {
+            let (cj, sj) = table[j % GRID];
+            let (fx, dfx) = f_df_at(k, cj, sj);
+            (j as f64 * h, fx, dfx)
+        };
+        let mut prev = at(0);
+        for j in 1..=GRID {
+            let next = at(j);
+            roots.scan(k, prev, next, bound, scale, 0);
+            prev = next;
+        }
+        if roots.budget == 0 {
+            // Unresolved near-tangencies: the sector is not known for certain.
+            return None;
+        }
+        roots.phi[..roots.len].sort_by(f64::total_cmp);
+        Some(roots)
+    }
+
+    fn push(&mut self, phi: f64) {
+        let phi = phi.rem_euclid(TAU);
+        let dup = self.phi[..self.len].iter().any(|&r| {
+            let d = (r - phi).abs();
+            d.min(TAU - d) < 1e-12
+        });
+        if !dup && self.len < 4 {
+            self.phi[self.len] = phi;
+            self.len += 1;
+        }
+    }
+
+    /// Roots in `[a, b)` given `(φ, f, f')` at both ends.
+    fn scan(
+        &mut self,
+        k: (f64, f64, f64, f64),
+        (xa, fa, da): (f64, f64, f64),
+        (xb, fb, db): (f64, f64, f64),
+        bound: f64,
+        scale: f64,
+        depth: u32,
+    ) {
+        if fa == 0.0 {
+            self.push(xa);
+            return;
+        }
+        if fb != 0.0 && (fa < 0.0) != (fb < 0.0) {
+            self.push(polish(k, (xa, fa, da), (xb, fb, db)));
+            return;
+        }
+        // Same sign at both ends: f stays away from zero within r_a of a and r_b of b
+        // (f(a + t) ≥ |f_a| ± f'_a t − bound t²/2, oriented to the sign of f).
+        let sgn = fa.signum();
+        let (fa, da, fb, db) = (sgn * fa, sgn * da, sgn * fb, sgn * db);
+        let width = xb - xa;
+        // f ≥ min(f_a, f_b) − bound width²/8 on the interval.
+        if fa.min(fb) > 0.125 * bound * width * width {
+            return;
+        }
+        let reach = |f: f64, slope: f64| (slope + (slope * slope + 2.0 * bound * f).sqrt()) / bound;
+        if reach(fa, da) + reach(fb.max(0.0), -db) >= width {
+            return;
+        }
+        if depth >= 40 || width < 1e-12 {
+            // A tangency (double root) to the resolution of the scan.
+            if fa.min(fb) <= 1e-13 * scale {
+                self.push(if fa <= fb { xa } else { xb });
+            }
+            return;
+        }
+        if self.budget == 0 {
+            return;
+        }
+        self.budget -= 1;
+        let xm = 0.5 * (xa + xb);
+        let (sm, cm) = xm.sin_cos();
+        let (fm, dm) = f_df_at(k, cm, sm);
+        let mid = (xm, fm, dm);
+        self.scan(k, (xa, sgn * fa, sgn * da), mid, bound, scale, depth + 1);
+        self.scan(k, mid, (xb, sgn * fb, sgn * db), bound, scale, depth + 1);
+    }
+}
+
+/// The root of `f` between `a` and `b` (`f` of opposite signs there): Newton's method from the
+/// root of the cubic Hermite interpolant's secant, kept inside the bracket (bisection where it
+/// would leave), to the last bit.
+fn polish(
+    k: (f64, f64, f64, f64),
+    (mut a, mut fa, da): (f64, f64, f64),
+    (mut b, fb, db): (f64, f64, f64),
+) -> f64 {
+    // Start: Newton from the end with the smaller |f|, or the secant point.
+    let mut x = if fa.abs() < fb.abs() && da != 0.0 {
+        a - fa / da
+    } else if db != 0.0 {
+        b - fb / db
+    } else {
+        a - fa * (b - a) / (fb - fa)
+    };
+    if !(x > a.min(b) && x < a.max(b)) {
+        x = a - fa * (b - a) / (fb - fa);
+    }
+    for _ in 0..60 {
+        let (s, c) = x.sin_cos();
+        let (fx, dfx) = f_df_at(k, c, s);
+        if fx == 0.0 {
+            return x;
+        }
+        if (fx < 0.0) == (fa < 0.0) {
+            a = x;
+            fa = fx;
+        } else {
+            b = x;
+        }
+        let newton = x - fx / dfx;
+        if (newton - x).abs() <= 2.0 * f64::EPSILON * x.abs().max(1.0) {
+            return newton;
+        }
+        x = if newton > a.min(b) && newton < a.max(b) {
+            newton
+        } else {
+            0.5 * (a + b)
+        };
+    }
+    x
+}
+
+/// One invariant ray with the coefficients of `f`'s expansion about it.
+#[derive(Debug, Clone, Copy)]
+struct Ray {
+    phi: f64,
+    dir: Vec2,
+    q: f64,
+    r: f64,
+    s: f64,
+}
+
+impl Ray {
+    fn new(field: &Field, phi: f64) -> Ray {
+        let (a, b, c, d) = field.f_coefficients();
+        let (sr, cr) = phi.sin_cos();
+        let (s2, c2) = (2.0 * phi).sin_cos();
+        Ray {
+            phi,
+            dir: Vec2::new(cr, sr),
+            q: b * cr - a * sr,
+            r: c * c2 + d * s2,
+            s: d * c2 - c * s2,
+        }
+    }
+}
+
+/// The sector between the ray behind and the ray ahead.
+struct Fan {
+    sgn: f64,
+    d: f64,
+    ahead: Ray,
+    behind: Ray,
+}
+
+/// The integrand data at one value of `x`.
+#[derive(Debug, Clone, Copy)]
+struct Node {
+    s: Vec2,
+    q: f64,
+    rho: f64,
+}
+
+impl Fan {
+    /// `δ_a` at `x`.
+    fn delta_ahead(&self, x: f64) -> f64 {
+        if x > 0.0 {
+            let e = (-x).exp();
+            self.d * e / (1.0 + e)
+        } else {
+            self.d / (1.0 + x.exp())
+        }
+    }
+
+    /// The direction, `q` and `ρ` at `x`; `None` where `f` does not have the sign of the
+    /// sector (round-off at the very ends).
+    #[inline]
+    fn node(&self, field: &Field, x: f64) -> Option<Node> {
+        let (da, db, eps, ray) = if x > 0.0 {
+            let e = (-x).exp();
+            let da = self.d * e / (1.0 + e);
+            (da, self.d / (1.0 + e), -self.sgn * da, &self.ahead)
+        } else {
+            let e = x.exp();
+            let db = self.d * e / (1.0 + e);
+            (self.d / (1.0 + e), db, self.sgn * db, &self.behind)
+        };
+        let (se, ce) = eps.sin_cos();
+        let s = Vec2::new(
+            ray.dir.x * ce - ray.dir.y * se,
+            ray.dir.y * ce + ray.dir.x * se,
+        );
+        let f = if eps.abs() <= 1.0 {
+            se * (ray.q + 2.0 * ray.s * ce - ray.r * se * (2.0 * ce + 1.0) / (1.0 + ce))
+        } else {
+            field.f_at(s.x, s.y)
+        };
+        let fa = self.sgn * f;
+        if !(fa > 0.0) {
+            return None;
+        }
+        Some(Node {
+            s,
+            q: field.q_at(s.x, s.y),
+            rho: (da * db / self.d) / fa,
+        })
+    }
+}
+
+/// How the stage in the angle variable ended.
+pub(super) enum Exit {
+    /// The slip stage ended (terminated or halted).
+    End(SlipEnd),
+    /// The variable does not apply here (the slip is on a ray to round-off, or `f` lost its
+    /// sign): go on with the other variables from `pt`.
+    Handoff,
+}
+
+/// Everything the stage reads.
+pub(super) struct Context<'a> {
+    pub wtt: &'a Mat2,
+    pub wtn: Vec2,
+    pub wnn: f64,
+    pub mu: f64,
+    pub field: &'a Field,
+    pub roots: &'a Roots,
+    pub sc: Scales,
+    pub max_steps: u32,
+    /// The coefficient of restitution.
+    pub e: f64,
+    /// The normal velocity before the impact.
+    pub vn0: f64,
+}
+
+/// Run the slip from `pt` in the angle variable to its end, or hand it back.
+/// `straight` ends the slip in closed form once its direction is on a centripetal ray to the
+/// last bit of the result (`None` while it is not).
+pub(super) fn run(
+    cx: &Context,
+    pt: &mut Point,
+    ev: &mut Events,
+    steps: &mut u32,
+    observe: &mut impl FnMut(f64, Vec3),
+    straight: &mut impl FnMut(&mut Point, &mut Events) -> Option<Result<SlipEnd, BreakdownReason>>,
+) -> Result<Exit, BreakdownReason> {
+    let field = cx.field;
+    let sigma0 = pt.vt.norm();
+    if !(sigma0 > 0.0 && sigma0.is_finite()) || cx.roots.len == 0 {
+        return Ok(Exit::Handoff);
+    }
+    let phi0 = pt.vt.y.atan2(pt.vt.x);
+    let (f0, _) = field.f_df(phi0);
+    let (a, b, c, d) = field.f_coefficients();
+    if !(f0.abs() > 1e-14 * (a.abs() + b.abs() + c.abs() + d.abs())) {
+        return Ok(Exit::Handoff);
+    }
+    let sgn = f0.signum();
+    let (mut da0, mut db0) = (f64::INFINITY, f64::INFINITY);
+    let (mut ra, mut rb) = (0.0, 0.0);
+    for &r in &cx.roots.phi[..cx.roots.len] {
+        let ahead = (sgn * (r - phi0)).rem_euclid(TAU);
+        let behind = (sgn * (phi0 - r)).rem_euclid(TAU);
+        if ahead < da0 {
+            da0 = ahead;
+            ra = r;
+        }
+        if behind < db0 {
+            db0 = behind;
+            rb = r;
+        }
+    }
+    if !(da0 > 1e-12 && db0 > 1e-12) {
+        return Ok(Exit::Handoff);
+    }
+    let fan = Fan {
+        sgn,
+        d: da0 + db0,
+        ahead: Ray::new(field, ra),
+        behind: Ray::new(field, rb),
+    };
+    let qa = field.q_at(fan.ahead.dir.x, fan.ahead.dir.y);
+    let lb = lobatto();
+    let rtol = cx.sc.rtol;
+    let mut x = (db0 / da0).ln();
+    let Some(mut n0) = fan.node(field, x) else {
+        return Ok(Exit::Handoff);
+    };
+    let mut u0 = sigma0.ln();
+    let mut h = 1.4f64;
+    let mut series = TailSeries::with_ray(fan.ahead.phi, fan.ahead.dir);
+    loop {
+        if *steps >= cx.max_steps {
+            return Err(BreakdownReason::NoSeparation);
+        }
+        let base = *pt;
+        // The panel reaches at most a few times the normal impulse to the next event (`v_n`
+        // to 0, then to about `e |v_n⁻|`, at the rate `k_n = w_nn − μ w_tn·ŝ`), so that
+        // the events are located on interpolants of their own scale.
+        let kn = cx.wnn - cx.mu * cx.wtn.dot(&n0.s);
+        if kn > 0.0 {
+            let to_event = (base.vn.abs().max(cx.e * cx.vn0.abs())) / kn;
+            let rate = base.vt.norm() * n0.rho;
+            if to_event > 0.0 && rate > 0.0 {
+                h = h.min(4.0 * to_event / rate);
+            }
+        }
+        if !(h > 1e-12 * (1.0 + x.abs())) {
+            // The direction barely turns before the next event: the normal impulse is the
+            // better variable.
+            return Ok(Exit::Handoff);
+        }
+        let half = 0.5 * h;
+        let mut nodes = [n0; M];
+        let mut ok = true;
+        for (j, nd) in nodes.iter_mut().enumerate().skip(1) {
+            match fan.node(field, x + half * (1.0 + lb.t[j])) {
+                Some(n) => *nd = n,
+                None => {
+                    ok = false;
+                    break;
+                }
+            }
+        }
+        if !ok {
+            h *= 0.25;
+            if h < 1e-6 {
+                return Ok(Exit::Handoff);
+            }
+            continue;
+        }
+        let du: [f64; M] = std::array::from_fn(|j| nodes[j].q * nodes[j].rho);
+        let cu = lb.cumulative(&du);
+        let sig: [f64; M] = std::array::from_fn(|j| {
+            if j == 0 {
+                base.vt.norm()
+            } else {
+                (u0 + half * cu[j]).exp()
+            }
+        });
+        let dp: [f64; M] = std::array::from_fn(|j| sig[j] * nodes[j].rho);
+        let d1: [f64; M] = std::array::from_fn(|j| nodes[j].s.x * dp[j]);
+        let d2: [f64; M] = std::array::from_fn(|j| nodes[j].s.y * dp[j]);
+        let dw: [f64; M] = std::array::from_fn(|j| sig[j] * dp[j]);
+        // The error test: the last Chebyshev coefficients of each integrand against the
+        // tolerance on `u` (absolute: relative on σ) and relative on every other quantity
+        // (its value at the start plus the size of its increment over the panel).
+        // (`k` is the factor of the integral in the quantity.)
+        let rel = |v: &[f64; M], at: f64, k: f64| {
+            let size = v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+            k * half * lb.tail(v) / (rtol * (at.abs() + k * h * size))
+        };
+        let cp = lb.cumulative(&dp);
+        let c1 = lb.cumulative(&d1);
+        let c2 = lb.cumulative(&d2);
+        let pn: [f64; M] = std::array::from_fn(|j| base.p + half * cp[j]);
+        let ptv: [Vec2; M] =
+            std::array::from_fn(|j| base.pt - cx.mu * half * Vec2::new(c1[j], c2[j]));
+        let vn_at =
+            |p: f64, ptj: Vec2| base.vn + cx.wtn.dot(&(ptj - base.pt)) + cx.wnn * (p - base.p);
+        let vn: [f64; M] = std::array::from_fn(|j| {
+            if j == 0 {
+                base.vn
+            } else {
+                vn_at(pn[j], ptv[j])
+            }
+        });
+        let dn: [f64; M] = std::array::from_fn(|j| vn[j] * dp[j]);
+        let err = (half * lb.tail(&du) / rtol)
+            .max(rel(&dp, base.p, 1.0))
+            .max(rel(&d1, base.pt.x, cx.mu))
+            .max(rel(&d2, base.pt.y, cx.mu))
+            .max(rel(&dw, base.wt, cx.mu))
+            .max(rel(&dn, base.wn, 1.0));
+        if !(err <= 1.0) {
+            h *= if err.is_finite() {
+                (0.9 * err.powf(-1.0 / N as f64)).clamp(0.2, 0.9)
+            } else {
+                0.25
+            };
+            if h < 1e-6 {
+                return Ok(Exit::Handoff);
+            }
+            continue;
+        }
+        // The works at every node only where an event can read them (the energetic
+        // termination once compression has ended, or an event inside the panel); else at
+        // the panel's end only.
+        let all_works = || (lb.cumulative(&dn), lb.cumulative(&dw));
+        let mut works =
+            (ev.pc.is_some() && matches!(ev.term, Termination::Energetic)).then(all_works);
+        let (end_n, end_w) = (
+            base.wn + half * lb.integral(&dn),
+            base.wt - cx.mu * half * lb.integral(&dw),
+        );
+        let point = |j: usize, works: &Option<([f64; M], [f64; M])>| {
+            let (wn, wt) = match works {
+                Some((cn, cw)) => (base.wn + half * cn[j], base.wt - cx.mu * half * cw[j]),
+                None if j == N => (end_n, end_w),
+                None => (f64::NAN, f64::NAN),
+            };
+            Point {
+                p: pn[j],
+                vt: sig[j] * nodes[j].s,
+                vn: vn[j],
+                pt: ptv[j],
+                wn,
+                wt,
+            }
+        };
+        // The events on the panel's interpolants, node interval by node interval; the slip
+        // itself does not change at an event, so the panel goes on past any that does not
+        // end the law.
+        let light = |t: f64, (cn, cw): &([f64; M], [f64; M])| -> Point {
+            let l = lb.basis(t);
+            let p = base.p + half * dot(&l, &cp);
+            let ptt = base.pt - cx.mu * half * Vec2::new(dot(&l, &c1), dot(&l, &c2));
+            Point {
+                p,
+                vt: Vec2::zeros(),
+                vn: vn_at(p, ptt),
+                pt: ptt,
+                wn: base.wn + half * dot(&l, cn),
+                wt: base.wt - cx.mu * half * dot(&l, cw),
+            }
+        };
+        let mut prev = base;
+        #[allow(clippy::needless_range_loop)] // j indexes the node arrays and the nodes t_j
+        for j in 1..M {
+            let mut bj = point(j, &works);
+            let mut lo = lb.t[j - 1];
+            while let Some((kind, ga, gb)) = first_event(ev, &prev, &bj) {
+                let w = *works.get_or_insert_with(all_works);
+                bj = point(j, &works);
+                let t = illinois(
+                    |t| event_value(ev, kind, &light(t, &w)),
+                    lo,
+                    ga,
+                    lb.t[j],
+                    gb,
+                );
+                let mut e = if t == lb.t[j] { bj } else { light(t, &w) };
+                let ue = u0 + half * dot(&lb.basis(t), &cu);
+                let ne = fan.node(field, x + half * (1.0 + t)).unwrap_or(nodes[j]);
+                e.vt = ue.exp() * ne.s;
+                *pt = e;
+                *steps += 1;
+                observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
+                if let Some(end) = after_event(kind, pt, ev, pt.vt.y.atan2(pt.vt.x)) {
+                    return Ok(Exit::End(end));
+                }
+                prev = *pt;
+                lo = t;
+            }
+            observe(bj.p, Vec3::new(bj.vt.x, bj.vt.y, bj.vn));
+            prev = bj;
+        }
+        *pt = prev;
+        *steps += 1;
+        x += h;
+        u0 += half * cu[N];
+        n0 = nodes[N];
+        h *= (0.9 * err.max(1e-30).powf(-1.0 / N as f64)).min(4.0);
+        let da = fan.delta_ahead(x);
+        if qa < 0.0 {
+            if let Some(end) = straight(pt, ev) {
+                let end = end?;
+                observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
+                return Ok(Exit::End(end));
+            }
+            if da <= 0.3 {
+                let g = cx.wtn - cx.mu * (cx.wtt * (pt.vt / pt.vt.norm()));
+                if let Some(ser) = series.get(field, cx.wnn, g, pt.vt) {
+                    let sc = cx.sc;
+                    if let Some(end) = series_tail(ser, cx.wtn, cx.wnn, cx.mu, sc, pt, ev, observe)
+                    {
+                        return Ok(Exit::End(end));
+                    }
+                }
+            }
+        } else if da * (1.0 + cx.mu) <= f64::EPSILON * f64::EPSILON / 64.0 {
+            // On the ray ahead to the last bit of the result: the rest is a straight run
+            // along it.
+            let s = fan.ahead.dir;
+            let sigma = pt.vt.norm();
+            let piece = Linear {
+                kind: Phase3Kind::Stick,
+                ratio: -cx.mu * s,
+                dir: s,
+                sigma,
+                dsigma: qa,
+                length: f64::INFINITY,
+            };
+            let phi = pt.vt.y.atan2(pt.vt.x);
+            return if linear_piece(&piece, pt, ev, cx.wnn, cx.wtn, cx.mu)? {
+                observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
+                Ok(Exit::End(SlipEnd::Terminated { phi }))
+            } else {
+                Err(BreakdownReason::NoSeparation)
+            };
+        }
+        if x > 600.0 {
+            return Ok(Exit::Handoff);
+        }
+    }
+}
