@@ -612,3 +612,95 @@ pub(super) fn run(
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::spatial::{invariant_rays, ContactProblem3};
+
+    /// A small deterministic generator (xorshift), uniform in `[lo, hi)`.
+    struct Gen(u64);
+    impl Gen {
+        fn next(&mut self, lo: f64, hi: f64) -> f64 {
+            self.0 ^= self.0 << 13;
+            self.0 ^= self.0 >> 7;
+            self.0 ^= self.0 << 17;
+            lo + (hi - lo) * (self.0 >> 11) as f64 / (1u64 << 53) as f64
+        }
+    }
+
+    fn random_field(g: &mut Gen) -> (ContactProblem3, Field) {
+        let (a, c) = (10f64.powf(g.next(-1.0, 1.0)), 10f64.powf(g.next(-1.0, 1.0)));
+        let b = g.next(-0.9, 0.9) * (a * c).sqrt();
+        let (w1, w2) = (g.next(-1.0, 1.0), g.next(-1.0, 1.0));
+        let mu = 10f64.powf(g.next(-1.5, 0.5));
+        // w_nn above the Schur complement's bound w_tᵀ W_tt⁻¹ w_t.
+        let wnn = 1.0 + (c * w1 * w1 - 2.0 * b * w1 * w2 + a * w2 * w2) / (a * c - b * b);
+        let p = ContactProblem3::from_upper([a, b, w1, c, w2, wnn], [0.1, 0.2, -1.0], mu, 0.5)
+            .expect("SPD by construction");
+        let field = Field::new(&p.wtt(), p.wtn(), mu);
+        (p, field)
+    }
+
+    /// The scan finds the same rays as the companion matrix of the quartic in `tan(φ/2)`
+    /// (`invariant_rays`, an independent method), and each is a root of `f` to round-off.
+    #[test]
+    fn the_scan_finds_the_rays_of_the_companion_matrix() {
+        let mut g = Gen(0x9e37_79b9_7f4a_7c15);
+        let mut compared = 0;
+        for _ in 0..5000 {
+            let (p, field) = random_field(&mut g);
+            let roots = Roots::find(&field).expect("f is not identically zero");
+            let (a, b, c, d) = field.f_coefficients();
+            let scale = a.abs() + b.abs() + c.abs() + d.abs();
+            for &r in &roots.phi[..roots.len] {
+                let (s, co) = r.sin_cos();
+                assert!(field.f_at(co, s).abs() <= 1e-14 * scale, "f({r}) not zero");
+            }
+            let rays = invariant_rays(&p);
+            let reference = rays.as_slice();
+            // Near-tangencies (two roots closer than 1e-6) are left to the scan alone.
+            let close = reference
+                .windows(2)
+                .any(|w| (w[1].angle - w[0].angle).abs() < 1e-6);
+            if close {
+                continue;
+            }
+            assert_eq!(roots.len, reference.len(), "ray count for {p:?}");
+            for (r, x) in roots.phi[..roots.len].iter().zip(reference) {
+                let d = (r - x.angle).abs();
+                assert!(d.min(TAU - d) < 1e-12, "{r} vs {} for {p:?}", x.angle);
+            }
+            compared += 1;
+        }
+        assert!(compared > 4900);
+    }
+
+    /// `f` from its expansion about a ray equals `f` evaluated directly, to round-off of the
+    /// size of `f`'s coefficients, across the whole range it is used on (`|ε| ≤ 1`).
+    #[test]
+    fn the_expansion_about_a_ray_is_f() {
+        let mut g = Gen(0x2545_f491_4f6c_dd1d);
+        for _ in 0..500 {
+            let (_, field) = random_field(&mut g);
+            let roots = Roots::find(&field).expect("f is not identically zero");
+            let (a, b, c, d) = field.f_coefficients();
+            let scale = a.abs() + b.abs() + c.abs() + d.abs();
+            for &r in &roots.phi[..roots.len] {
+                let ray = Ray::new(&field, r);
+                for k in 0..40 {
+                    let eps = g.next(-1.0, 1.0) * 10f64.powi(-(k % 8));
+                    let (se, ce) = eps.sin_cos();
+                    let expanded = se
+                        * (ray.q + 2.0 * ray.s * ce - ray.r * se * (2.0 * ce + 1.0) / (1.0 + ce));
+                    let (s, co) = (r + eps).sin_cos();
+                    let direct = field.f_at(co, s);
+                    assert!(
+                        (expanded - direct).abs() <= 1e-14 * scale,
+                        "ε {eps}: {expanded} vs {direct}"
+                    );
+                }
+            }
+        }
+    }
+}
