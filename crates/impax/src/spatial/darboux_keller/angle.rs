@@ -44,7 +44,7 @@ use crate::math::{Mat2, Vec2, Vec3};
 use crate::planar::BreakdownReason;
 use crate::spatial::chebyshev::{dot, lobatto, M, N};
 use crate::spatial::outcome::Phase3Kind;
-use crate::spatial::ray_series::Field;
+use crate::spatial::ray_series::{polish_in_bracket, Field};
 use std::f64::consts::TAU;
 use std::sync::OnceLock;
 
@@ -185,13 +185,12 @@ impl Roots {
     }
 }
 
-/// The root of `f` between `a` and `b` (`f` of opposite signs there): Newton's method from the
-/// root of the cubic Hermite interpolant's secant, kept inside the bracket (bisection where it
-/// would leave), to the last bit.
+/// The root of `f` between `a` and `b` (`f` of opposite signs there): from a Newton step
+/// off the end with the smaller `|f|` (or the secant point), [`polish_in_bracket`].
 fn polish(
     k: (f64, f64, f64, f64),
-    (mut a, mut fa, da): (f64, f64, f64),
-    (mut b, fb, db): (f64, f64, f64),
+    (a, fa, da): (f64, f64, f64),
+    (b, fb, db): (f64, f64, f64),
 ) -> f64 {
     // Start: Newton from the end with the smaller |f|, or the secant point.
     let mut x = if fa.abs() < fb.abs() && da != 0.0 {
@@ -204,29 +203,16 @@ fn polish(
     if !(x > a.min(b) && x < a.max(b)) {
         x = a - fa * (b - a) / (fb - fa);
     }
-    for _ in 0..60 {
-        let (s, c) = x.sin_cos();
-        let (fx, dfx) = f_df_at(k, c, s);
-        if fx == 0.0 {
-            return x;
-        }
-        if (fx < 0.0) == (fa < 0.0) {
-            a = x;
-            fa = fx;
-        } else {
-            b = x;
-        }
-        let newton = x - fx / dfx;
-        if (newton - x).abs() <= 2.0 * f64::EPSILON * x.abs().max(1.0) {
-            return newton;
-        }
-        x = if newton > a.min(b) && newton < a.max(b) {
-            newton
-        } else {
-            0.5 * (a + b)
-        };
-    }
-    x
+    polish_in_bracket(
+        |x| {
+            let (s, c) = x.sin_cos();
+            f_df_at(k, c, s)
+        },
+        a,
+        fa,
+        b,
+        x,
+    )
 }
 
 /// One invariant ray with the coefficients of `f`'s expansion about it.
