@@ -11,6 +11,13 @@
 //!    of orders 5 and 3 (DOP853, Hairer, Nørsett & Wanner, *Solving ODEs I*, §II.5) in
 //!    `p_n`. The direction field is singular at `σ = |v_t| → 0`, and steps in `p_n` must
 //!    shrink with `σ`, so the independent variable changes:
+//!    * first choice wherever the slip turns or shrinks appreciably before the next normal
+//!      event: the angle variable `x = ln(δ_b/δ_a)` between the invariant rays behind and
+//!      ahead of the direction (module `angle`), in which the direction equation is solved
+//!      by the map and every other quantity is a quadrature on Chebyshev panels — smooth
+//!      through near-zero passes, halts, nearly frozen slips; it hands back to the
+//!      variables below only where it cannot apply (the slip on a ray to round-off, or the
+//!      direction barely turning before the next event);
 //!    * as soon as the slip shrinks steadily (`ŝ·g < −0.9 |g|`: near a centripetal
 //!      invariant ray, or on an inward spiral), whatever its size, it becomes `u = ln σ`
 //!      (decreasing), in which the system is smooth all the way (the direction is carried
