@@ -78,6 +78,23 @@ pub enum Error {
     },
 }
 
+impl Error {
+    /// The field the error names, as at the start of its message (`law` for an unknown law,
+    /// `integration` for a failed integration).
+    pub fn field(&self) -> &str {
+        match self {
+            Error::NotFinite { field, .. }
+            | Error::OutOfRange { field, .. }
+            | Error::NotSymmetric { field, .. }
+            | Error::NotPositiveDefinite { field, .. }
+            | Error::NotApproaching { field, .. }
+            | Error::Invalid { field, .. } => field,
+            Error::UnknownLaw { .. } => "law",
+            Error::Integration { .. } => "integration",
+        }
+    }
+}
+
 /// Result alias for this crate.
 pub type Result<T> = std::result::Result<T, Error>;
 

@@ -36,21 +36,9 @@ fn v0() -> Vec3 {
     Vec3::new(0.4, -0.3, -1.0)
 }
 
-fn field_of(e: &Error) -> &str {
-    match e {
-        Error::NotFinite { field, .. }
-        | Error::OutOfRange { field, .. }
-        | Error::NotSymmetric { field, .. }
-        | Error::NotPositiveDefinite { field, .. }
-        | Error::NotApproaching { field, .. }
-        | Error::Invalid { field, .. } => field,
-        other => panic!("unexpected variant {other:?}"),
-    }
-}
-
 /// The error names `field`, in the variant and at the start of its message.
 fn assert_field(e: &Error, field: &str) {
-    assert_eq!(field_of(e), field, "{e:?}");
+    assert_eq!(e.field(), field, "{e:?}");
     assert!(
         e.to_string().starts_with(field),
         "message `{e}` does not start with {field}"

@@ -21,20 +21,6 @@ use std::panic::{catch_unwind, AssertUnwindSafe};
 const NAN: f64 = f64::NAN;
 const INF: f64 = f64::INFINITY;
 
-/// The field an error names.
-fn field(e: &Error) -> &str {
-    match e {
-        Error::NotFinite { field, .. }
-        | Error::OutOfRange { field, .. }
-        | Error::NotSymmetric { field, .. }
-        | Error::NotPositiveDefinite { field, .. }
-        | Error::NotApproaching { field, .. }
-        | Error::Invalid { field, .. } => field,
-        Error::UnknownLaw { .. } => "law",
-        other => panic!("unexpected variant {other:?}"),
-    }
-}
-
 /// Assert that `r` is an error of the variant `kind` naming `name`, and that the message
 /// starts with the field.
 fn expect_err<T: std::fmt::Debug>(r: Result<T, Error>, kind: &str, name: &str) {
@@ -53,7 +39,7 @@ fn expect_err<T: std::fmt::Debug>(r: Result<T, Error>, kind: &str, name: &str) {
         _ => "other",
     };
     assert_eq!(got, kind, "wrong variant for `{name}`: {e:?}");
-    assert_eq!(field(&e), name, "wrong field: {e:?}");
+    assert_eq!(e.field(), name, "wrong field: {e:?}");
     let msg = e.to_string();
     assert!(
         msg.starts_with(&format!("{name}:")),
