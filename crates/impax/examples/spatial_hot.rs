@@ -1,6 +1,6 @@
 //! Tight loop over one spatial benchmark case for profiling (instruction counts under
-//! `valgrind --tool=callgrind`): `cargo run --release --example spatial_hot -- swirl-stick 1000`.
-use impax::spatial::{ContactProblem3, Detail3};
+//! `valgrind --tool=callgrind`): `cargo run --release --example spatial_hot -- swirl-stick 1000 [rtol]`.
+use impax::spatial::{ContactProblem3, Detail3, SpatialOptions};
 use impax::LawId;
 use std::hint::black_box;
 
@@ -20,8 +20,13 @@ fn main() {
     let mut args = std::env::args().skip(1);
     let name = args.next().unwrap_or_else(|| "swirl-stick".into());
     let n: usize = args.next().map_or(1000, |s| s.parse().expect("a count"));
+    let opts = SpatialOptions {
+        rtol: args.next().map_or(SpatialOptions::default().rtol, |s| {
+            s.parse().expect("a tolerance")
+        }),
+    };
     let p = case(&name);
-    let o = LawId::Energetic.resolve3(&p).expect("resolves");
+    let o = LawId::Energetic.resolve3_with(&p, &opts).expect("resolves");
     let steps = match o.detail {
         Detail3::DarbouxKeller { steps, .. } => steps,
         _ => 0,
@@ -29,7 +34,7 @@ fn main() {
     let t = std::time::Instant::now();
     let mut acc = 0.0;
     for _ in 0..n {
-        if let Ok(o) = LawId::Energetic.resolve3(black_box(&p)) {
+        if let Ok(o) = LawId::Energetic.resolve3_with(black_box(&p), &opts) {
             acc += o.energy_change;
         }
     }

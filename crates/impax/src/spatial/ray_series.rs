@@ -36,7 +36,7 @@
 use crate::math::{Mat2, Vec2};
 
 /// Number of series terms (`ξ⁰ … ξ^(TERMS−1)`).
-pub(crate) const TERMS: usize = 14;
+pub(crate) const TERMS: usize = 24;
 
 /// `E(a, s) = (e^{a s} − 1)/a` (`s` at `a = 0`), without cancellation.
 #[inline]
@@ -189,37 +189,72 @@ pub(crate) fn polish_in_bracket(
     x
 }
 
-/// Taylor coefficients of `cos(θ + kη)` or `sin(θ + kη)` in `η`.
-fn trig_series(theta: f64, k: f64, sine: bool) -> [f64; TERMS] {
-    let (s, c) = theta.sin_cos();
-    // d^n/dη^n: cycle (c, −s, −c, s) for cos, (s, c, −s, −c) for sin.
-    let cyc = if sine { [s, c, -s, -c] } else { [c, -s, -c, s] };
-    let mut out = [0.0; TERMS];
-    let mut fact = 1.0;
-    let mut kn = 1.0;
-    for (n, o) in out.iter_mut().enumerate() {
-        if n > 0 {
-            fact *= n as f64;
-            kn *= k;
-        }
-        *o = cyc[n % 4] * kn / fact;
-    }
-    out
+/// A power series kept also in reverse order (`rev[TERMS − 1 − n] = c[n]`), so that the
+/// sums over products of two series run forward through both.
+#[derive(Debug, Clone, Copy)]
+struct Coeffs {
+    c: [f64; TERMS],
+    rev: [f64; TERMS],
 }
 
-/// `x / y` for power series (`y₀ ≠ 0`).
-fn divide(x: &[f64; TERMS], y: &[f64; TERMS]) -> [f64; TERMS] {
-    let mut out = [0.0; TERMS];
-    let inv = 1.0 / y[0];
-    for n in 0..TERMS {
-        let acc: f64 = y[1..=n]
-            .iter()
-            .zip(out[..n].iter().rev())
-            .map(|(a, b)| a * b)
-            .sum();
-        out[n] = (x[n] - acc) * inv;
+impl Coeffs {
+    fn zero() -> Coeffs {
+        Coeffs {
+            c: [0.0; TERMS],
+            rev: [0.0; TERMS],
+        }
     }
-    out
+
+    #[inline]
+    fn set(&mut self, n: usize, v: f64) {
+        self.c[n] = v;
+        self.rev[TERMS - 1 - n] = v;
+    }
+}
+
+/// `Σ a_k b_k` with four partial sums (independent additions).
+#[inline]
+fn dot(a: &[f64], b: &[f64]) -> f64 {
+    let (ca, cb) = (a.chunks_exact(4), b.chunks_exact(4));
+    let tail: f64 = ca
+        .remainder()
+        .iter()
+        .zip(cb.remainder())
+        .map(|(x, y)| x * y)
+        .sum();
+    let mut acc = [0.0; 4];
+    for (x, y) in ca.zip(cb) {
+        for i in 0..4 {
+            acc[i] += x[i] * y[i];
+        }
+    }
+    (acc[0] + acc[2]) + (acc[1] + acc[3]) + tail
+}
+
+/// `Σ_{j=1}^{n−1} a_j b_{n−j}`: the coefficient of `ξⁿ` in a product of series, less the
+/// two terms that involve `a₀` or `b₀`.
+#[inline]
+fn inner(a: &[f64; TERMS], b: &Coeffs, n: usize) -> f64 {
+    if n < 2 {
+        return 0.0;
+    }
+    dot(&a[1..n], &b.rev[TERMS - n..TERMS - 1])
+}
+
+/// `Σ_{j=1}^{n−1} a_j b_{n−j}` for `K` series `b` at once, kept interleaved and in reverse
+/// order (`rev[TERMS − 1 − m] = (b¹_m, …, b^K_m)`).
+#[inline]
+fn inner_many<const K: usize>(a: &[f64; TERMS], rev: &[[f64; K]; TERMS], n: usize) -> [f64; K] {
+    let mut acc = [0.0; K];
+    if n < 2 {
+        return acc;
+    }
+    for (x, y) in a[1..n].iter().zip(&rev[TERMS - n..TERMS - 1]) {
+        for k in 0..K {
+            acc[k] += x * y[k];
+        }
+    }
+    acc
 }
 
 /// The closed-form slip about one invariant ray (see the module documentation).
@@ -238,6 +273,9 @@ pub(crate) struct RaySeries {
     rs: [f64; TERMS],
     kappa: [f64; TERMS],
     kr: [f64; TERMS],
+    /// `1/(1 + kλ)` and `1/(2 + kλ)`.
+    inv1: [f64; TERMS],
+    inv2: [f64; TERMS],
 }
 
 /// Increments along the series from its start (`s = 0`) to `s`.
@@ -259,98 +297,138 @@ impl RaySeries {
     /// The series about the ray `phi` of the field (`wnn`, `wtn` for the normal
     /// quantities). `None` if `q(φ*) = 0` or `λ` is not finite and nonzero.
     pub(crate) fn new(field: &Field, wnn: f64, phi: f64) -> Option<RaySeries> {
-        let co = trig_series(phi, 1.0, false);
-        let si = trig_series(phi, 1.0, true);
-        let co2 = trig_series(2.0 * phi, 2.0, false);
-        let si2 = trig_series(2.0 * phi, 2.0, true);
-        let mut f = [0.0; TERMS];
-        let mut q = [0.0; TERMS];
-        for n in 0..TERMS {
-            f[n] = field.a * co[n] + field.b * si[n] + field.c * co2[n] + field.d * si2[n];
-            q[n] = field.w1 * co[n] + field.w2 * si[n]
-                - field.mu * (field.p * co2[n] + field.q * si2[n]);
-        }
-        q[0] -= field.mu * field.m;
-        // φ* is a root of f: its value there is round-off.
-        f[0] = 0.0;
-        if q[0] == 0.0 || !q[0].is_finite() {
+        // Along the solution put C = cos(φ* + h), S = sin(φ* + h) and their double angles
+        // C₂, S₂: C' = −S h', S' = C h', C₂' = −2 S₂ h', S₂' = 2 C₂ h', so the coefficient
+        // of ξⁿ of each follows from those of lower order and b_n enters linearly
+        // (C_n = known − b_n S₀, …). Then f∘ and q∘ are linear in them, F∘ = f∘/q∘, and
+        // λ n b_n = [F∘]_n = known + λ b_n gives b_n. Everything is O(TERMS²).
+        let (s0, c0) = phi.sin_cos();
+        let (s20, c20) = (2.0 * phi).sin_cos();
+        let (fa, fb, fc, fd) = (field.a, field.b, field.c, field.d);
+        let mu = field.mu;
+        let f_of = |c: f64, s: f64, c2: f64, s2: f64| fa * c + fb * s + fc * c2 + fd * s2;
+        let q_of = |c: f64, s: f64, c2: f64, s2: f64| {
+            field.w1 * c + field.w2 * s - mu * (field.p * c2 + field.q * s2)
+        };
+        let q0 = q_of(c0, s0, c20, s20) - mu * field.m;
+        if q0 == 0.0 || !q0.is_finite() {
             return None;
         }
-        let big_f = divide(&f, &q);
-        let lambda = big_f[1];
+        let (df0, dq0) = (
+            f_of(-s0, c0, -2.0 * s20, 2.0 * c20),
+            q_of(-s0, c0, -2.0 * s20, 2.0 * c20),
+        );
+        let lambda = df0 / q0;
         if lambda == 0.0 || !lambda.is_finite() {
             return None;
         }
-        // pw[k][n] = [h^k]_n, built order by order with b.
-        let mut pw = [[0.0f64; TERMS]; TERMS];
         let mut b = [0.0; TERMS];
+        // n b_n, for the derivative recurrences.
+        let mut nb = [0.0; TERMS];
+        // (C, S, C₂, S₂) in reverse order; C and S also forward.
+        let mut trig = [[0.0; 4]; TERMS];
+        let (mut cs, mut sn) = ([0.0; TERMS], [0.0; TERMS]);
+        fn set_trig(
+            (trig, cs, sn): (&mut [[f64; 4]; TERMS], &mut [f64; TERMS], &mut [f64; TERMS]),
+            n: usize,
+            v: [f64; 4],
+        ) {
+            trig[TERMS - 1 - n] = v;
+            (cs[n], sn[n]) = (v[0], v[1]);
+        }
+        let (mut q, mut big_f) = ([0.0; TERMS], Coeffs::zero());
+        set_trig((&mut trig, &mut cs, &mut sn), 0, [c0, s0, c20, s20]);
+        q[0] = q0;
+        // φ* is a root of f: F∘₀ = 0 (its value there is round-off).
         b[1] = 1.0;
-        pw[1][1] = 1.0;
+        nb[1] = 1.0;
+        set_trig(
+            (&mut trig, &mut cs, &mut sn),
+            1,
+            [-s0, c0, -2.0 * s20, 2.0 * c20],
+        );
+        q[1] = dq0;
+        big_f.set(1, lambda);
         for n in 2..TERMS {
-            for k in 2..=n {
-                // [h^k]_n = Σ_{j=1}^{n−k+1} b_j [h^(k−1)]_(n−j)
-                let acc: f64 = b[1..=n - k + 1]
-                    .iter()
-                    .zip(pw[k - 1][k - 1..n].iter().rev())
-                    .map(|(x, y)| x * y)
-                    .sum();
-                pw[k][n] = acc;
-            }
-            let mut acc = 0.0;
-            for k in 2..=n {
-                acc += big_f[k] * pw[k][n];
-            }
-            b[n] = acc / (lambda * (n - 1) as f64);
-            pw[1][n] = b[n];
+            let inv_n = 1.0 / n as f64;
+            let [ic, is, ic2, is2] = inner_many(&nb, &trig, n);
+            // C' = −S h', S' = C h', C₂' = −2 S₂ h', S₂' = 2 C₂ h'.
+            let (ck, sk, c2k, s2k) = (
+                -is * inv_n,
+                ic * inv_n,
+                -2.0 * is2 * inv_n,
+                2.0 * ic2 * inv_n,
+            );
+            let fk = f_of(ck, sk, c2k, s2k);
+            let qk = q_of(ck, sk, c2k, s2k);
+            let big_fk = (fk - inner(&q, &big_f, n)) / q0;
+            let bn = big_fk / (lambda * (n - 1) as f64);
+            b[n] = bn;
+            nb[n] = n as f64 * bn;
+            set_trig(
+                (&mut trig, &mut cs, &mut sn),
+                n,
+                [
+                    ck - bn * s0,
+                    sk + bn * c0,
+                    c2k - 2.0 * bn * s20,
+                    s2k + 2.0 * bn * c20,
+                ],
+            );
+            q[n] = qk + bn * dq0;
+            big_f.set(n, big_fk + lambda * bn);
         }
-        let compose = |g: &[f64; TERMS]| -> [f64; TERMS] {
-            let mut out = [0.0; TERMS];
-            out[0] = g[0];
-            for n in 1..TERMS {
-                let mut acc = 0.0;
-                for k in 1..=n {
-                    acc += g[k] * pw[k][n];
-                }
-                out[n] = acc;
-            }
-            out
-        };
-        let mut one = [0.0; TERMS];
-        one[0] = 1.0;
-        let r = compose(&divide(&one, &q));
-        let rc = compose(&divide(&co, &q));
-        let rs = compose(&divide(&si, &q));
-        let mut kappa = [0.0; TERMS];
+        // (1, C, S)/q∘ at once, in reverse order too for the sums.
+        let inv_q0 = 1.0 / q0;
+        let mut quot = [[0.0; 3]; TERMS];
+        let (mut r, mut rc, mut rs) = (Coeffs::zero(), [0.0; TERMS], [0.0; TERMS]);
         for n in 0..TERMS {
-            kappa[n] = wnn * r[n] - field.mu * (field.w1 * rc[n] + field.w2 * rs[n]);
+            let acc = inner_many(&q, &quot, n);
+            let first = quot[TERMS - 1];
+            let num = [if n == 0 { 1.0 } else { 0.0 }, cs[n], sn[n]];
+            let v: [f64; 3] = std::array::from_fn(|k| {
+                let lead = if n > 0 { q[n] * first[k] } else { 0.0 };
+                (num[k] - lead - acc[k]) * inv_q0
+            });
+            quot[TERMS - 1 - n] = v;
+            r.set(n, v[0]);
+            (rc[n], rs[n]) = (v[1], v[2]);
         }
+        let mut kappa = [0.0; TERMS];
+        let (mut inv1, mut inv2) = ([0.0; TERMS], [0.0; TERMS]);
         let mut ka = [0.0; TERMS];
-        for (j, k) in ka.iter_mut().enumerate() {
-            *k = kappa[j] / (1.0 + j as f64 * lambda);
+        for k in 0..TERMS {
+            kappa[k] = wnn * r.c[k] - mu * (field.w1 * rc[k] + field.w2 * rs[k]);
+            let kl = k as f64 * lambda;
+            inv1[k] = 1.0 / (1.0 + kl);
+            inv2[k] = 1.0 / (2.0 + kl);
+            ka[k] = kappa[k] * inv1[k];
         }
         let mut kr = [0.0; TERMS];
         for n in 0..TERMS {
-            let mut acc = 0.0;
-            for j in 0..=n {
-                acc += ka[j] * r[n - j];
+            kr[n] = ka[0] * r.c[n] + inner(&ka, &r, n);
+            if n > 0 {
+                kr[n] += ka[n] * r.c[0];
             }
-            kr[n] = acc;
         }
+        let r = r.c;
         let all = b.iter().chain(&r).chain(&rc).chain(&rs).chain(&kr);
         if !all.clone().all(|x| x.is_finite()) {
             return None;
         }
         Some(RaySeries {
             phi,
-            dir: Vec2::new(phi.cos(), phi.sin()),
+            dir: Vec2::new(c0, s0),
             lambda,
-            mu: field.mu,
+            mu,
             b,
             r,
             rc,
             rs,
             kappa,
             kr,
+            inv1,
+            inv2,
         })
     }
 
@@ -418,27 +496,41 @@ impl RaySeries {
     /// The increments from `s = 0` (slip `σ₀`, normal coordinate `ξ₀`, normal velocity
     /// `vn0`) to `s` (`s = −∞` for the halt toward a centripetal ray).
     pub(crate) fn increment(&self, sigma0: f64, xi0: f64, vn0: f64, s: f64) -> Increment {
-        let e = |a: f64| {
-            if s == f64::NEG_INFINITY {
-                -1.0 / a
-            } else {
-                expm1_ratio(a, s)
-            }
+        // E(1 + kλ, s) and E(2 + kλ, s) from z_k = e^{(1+kλ)s} − 1 by
+        // z_{k+1} = z_k + (e^{λs} − 1)(1 + z_k) and e^{(2+kλ)s} − 1 = z_k + (e^s − 1)(1 + z_k):
+        // two exponentials in all, and no cancellation while λ > 0 (every term of one sign).
+        // Otherwise each factor has its own exponential.
+        let halt = s == f64::NEG_INFINITY;
+        let recur = self.lambda > 0.0 && !halt;
+        let (m1, ml) = if recur {
+            (s.exp_m1(), (self.lambda * s).exp_m1())
+        } else {
+            (0.0, 0.0)
         };
+        let mut z = m1;
         let (mut sp, mut sc, mut ss, mut sk, mut skr, mut sr2, mut ka) =
             (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
         let mut x = 1.0;
         for k in 0..TERMS {
-            let kl = k as f64 * self.lambda;
-            let e1 = e(1.0 + kl) * x;
-            let e2 = e(2.0 + kl) * x;
+            let (e1, e2) = if halt {
+                (-self.inv1[k], -self.inv2[k])
+            } else if recur {
+                let z2 = z + m1 * (1.0 + z);
+                let e = (z * self.inv1[k], z2 * self.inv2[k]);
+                z += ml * (1.0 + z);
+                e
+            } else {
+                let kl = k as f64 * self.lambda;
+                (expm1_ratio(1.0 + kl, s), expm1_ratio(2.0 + kl, s))
+            };
+            let (e1, e2) = (e1 * x, e2 * x);
             sp += self.r[k] * e1;
             sc += self.rc[k] * e1;
             ss += self.rs[k] * e1;
             sk += self.kappa[k] * e1;
             skr += self.kr[k] * e2;
             sr2 += self.r[k] * e2;
-            ka += self.kappa[k] * x / (1.0 + kl);
+            ka += self.kappa[k] * x * self.inv1[k];
             x *= xi0;
         }
         let dp = sigma0 * sp;
