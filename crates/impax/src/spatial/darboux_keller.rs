@@ -1193,8 +1193,6 @@ fn slip_stage(
             }
         };
     let max_steps = 200_000u32;
-    // The invariant rays, found when the angle variable is first tried.
-    let mut roots: Option<Option<angle::Roots>> = None;
     // The angle variable is tried first, and again a few steps after a start on a ray.
     let mut angle_retry = Some(0u32);
     let mut mode = Mode::P;
@@ -1223,34 +1221,29 @@ fn slip_stage(
                         *steps >= at && turns_before_event(pt, ev, vn_start, &field, wnn, wtn, mu)
                     });
                     if try_angle {
-                        if let Some(roots) = roots
-                            .get_or_insert_with(|| angle::Roots::find(&field))
-                            .as_ref()
-                        {
-                            let cx = angle::Context {
-                                wtt,
-                                wtn,
-                                wnn,
-                                mu,
-                                field: &field,
-                                roots,
-                                sc,
-                                max_steps,
-                                e: ev.e,
-                                vn0: vn_start,
-                            };
-                            let before = *steps;
-                            let mut straight = |pt: &mut Point, ev: &mut Events| {
-                                straight_tail(pt.vt).map(|(s, q)| run_tail(pt, ev, s, q))
-                            };
-                            match angle::run(&cx, pt, ev, steps, observe, &mut straight)? {
-                                angle::Exit::End(end) => return Ok(end),
-                                angle::Exit::Handoff => {
-                                    angle_retry = (*steps == before).then_some(*steps + 3);
-                                    y = to_y(pt);
-                                    k = fp(pt.p, &y);
-                                    continue;
-                                }
+                        let cx = angle::Context {
+                            wtt,
+                            wtn,
+                            wnn,
+                            mu,
+                            field: &field,
+                            sc,
+                            max_steps,
+                            e: ev.e,
+                            vn0: vn_start,
+                        };
+                        let before = *steps;
+                        let mut straight = |pt: &mut Point, ev: &mut Events| {
+                            straight_tail(pt.vt).map(|(s, q)| run_tail(pt, ev, s, q))
+                        };
+                        match angle::run(&cx, pt, ev, steps, observe, &mut straight)? {
+                            angle::Exit::End(end) => return Ok(end),
+                            angle::Exit::Unavailable => angle_retry = None,
+                            angle::Exit::Handoff => {
+                                angle_retry = (*steps == before).then_some(*steps + 3);
+                                y = to_y(pt);
+                                k = fp(pt.p, &y);
+                                continue;
                             }
                         }
                     }

@@ -46,31 +46,28 @@ use crate::spatial::chebyshev::{dot, lobatto, M, N};
 use crate::spatial::outcome::Phase3Kind;
 use crate::spatial::ray_series::{polish_in_bracket, Field};
 use std::f64::consts::TAU;
-use std::sync::OnceLock;
 
-/// The invariant rays as the roots of `f` in `[0, 2π)`, found by a scan that cannot miss a
-/// root (a bound on `|f''|` excludes roots between samples of `f` and `f'`).
+/// The two invariant rays around a direction `φ0` that is on none: the nearest roots of `f`
+/// below and above it (`below < φ0 < above`, unwrapped), found by scans outward from `φ0`
+/// that cannot miss a root (a bound on `|f''|` excludes roots between samples of `f` and
+/// `f'`).
 #[derive(Debug, Clone, Copy)]
-pub(super) struct Roots {
+pub(super) struct Sector {
+    pub below: f64,
+    pub above: f64,
+}
+
+/// The roots found by one scan.
+#[derive(Debug, Clone, Copy)]
+struct Roots {
     phi: [f64; 4],
     len: usize,
     /// Subdivisions left to the scan.
     budget: u32,
 }
 
-/// Samples of the scan.
+/// Samples of the scan per turn.
 const GRID: usize = 32;
-
-/// `(cos φ_k, sin φ_k)` on the scan's grid `φ_k = 2π k/GRID`.
-fn grid() -> &'static [(f64, f64); GRID] {
-    static GRID_TABLE: OnceLock<[(f64, f64); GRID]> = OnceLock::new();
-    GRID_TABLE.get_or_init(|| {
-        std::array::from_fn(|k| {
-            let (s, c) = (TAU * k as f64 / GRID as f64).sin_cos();
-            (c, s)
-        })
-    })
-}
 
 /// `f` and `f'` at the direction `(c, s)` (double angles by the product formulas).
 #[inline]
@@ -82,9 +79,10 @@ fn f_df_at((a, b, cc, d): (f64, f64, f64, f64), c: f64, s: f64) -> (f64, f64) {
     )
 }
 
-impl Roots {
-    /// The roots of `f`, or `None` if `f ≡ 0` (every direction invariant).
-    pub(super) fn find(field: &Field) -> Option<Roots> {
+impl Sector {
+    /// The sector of `phi0`, or `None` if `f ≡ 0` (every direction invariant), `f(φ0) = 0`
+    /// or a near-tangency of two roots is not resolved.
+    pub(super) fn find(field: &Field, phi0: f64) -> Option<Sector> {
         let (a, b, c, d) = field.f_coefficients();
         let scale = a.abs() + b.abs() + c.abs() + d.abs();
         if !(scale > 0.0) || !scale.is_finite() {
@@ -93,41 +91,69 @@ impl Roots {
         // f scaled to unit size (no underflow in the tests below).
         let k = (a / scale, b / scale, c / scale, d / scale);
         let (a, b, c, d) = k;
-        let scale = 1.0;
         // |f''| ≤ |A| + |B| + 4 (|C| + |D|).
         let bound = a.abs() + b.abs() + 4.0 * (c.abs() + d.abs());
+        let (s0, c0) = phi0.sin_cos();
+        let (f0, df0) = f_df_at(k, c0, s0);
+        if f0 == 0.0 {
+            return None;
+        }
+        let start = (phi0, f0, df0);
+        Some(Sector {
+            below: Self::nearest(k, bound, start, (c0, s0), -1.0)?,
+            above: Self::nearest(k, bound, start, (c0, s0), 1.0)?,
+        })
+    }
+
+    /// The nearest root from `start` in the sense `dir`, sampling every `2π/GRID` (the
+    /// samples by rotation, the subdivisions by `sin_cos`).
+    fn nearest(
+        k: (f64, f64, f64, f64),
+        bound: f64,
+        start: (f64, f64, f64),
+        (mut c, mut s): (f64, f64),
+        dir: f64,
+    ) -> Option<f64> {
+        let h = TAU / GRID as f64;
+        let (sh, ch) = (dir * h).sin_cos();
         let mut roots = Roots {
             phi: [0.0; 4],
             len: 0,
             budget: 64,
         };
-        let table = grid();
-        let h = TAU / GRID as f64;
-        let at = |j: usize| -> (f64, f64, f64) {
-            let (cj, sj) = table[j % GRID];
-            let (fx, dfx) = f_df_at(k, cj, sj);
-            (j as f64 * h, fx, dfx)
-        };
-        let mut prev = at(0);
+        let mut prev = start;
         for j in 1..=GRID {
-            let next = at(j);
-            roots.scan(k, prev, next, bound, scale, 0);
+            (c, s) = (c * ch - s * sh, s * ch + c * sh);
+            let (fx, dfx) = f_df_at(k, c, s);
+            let next = (start.0 + dir * j as f64 * h, fx, dfx);
+            if dir > 0.0 {
+                roots.scan(k, prev, next, bound, 1.0, 0);
+            } else {
+                roots.scan(k, next, prev, bound, 1.0, 0);
+            }
+            if roots.budget == 0 {
+                // An unresolved near-tangency: the sector is not known for certain.
+                return None;
+            }
+            if roots.len > 0 {
+                let found = roots.phi[..roots.len].iter();
+                return Some(if dir > 0.0 {
+                    found.fold(f64::INFINITY, |m, &r| m.min(r))
+                } else {
+                    found.fold(f64::NEG_INFINITY, |m, &r| m.max(r))
+                });
+            }
             prev = next;
         }
-        if roots.budget == 0 {
-            // Unresolved near-tangencies: the sector is not known for certain.
-            return None;
-        }
-        roots.phi[..roots.len].sort_by(f64::total_cmp);
-        Some(roots)
+        None
     }
+}
 
+impl Roots {
     fn push(&mut self, phi: f64) {
-        let phi = phi.rem_euclid(TAU);
-        let dup = self.phi[..self.len].iter().any(|&r| {
-            let d = (r - phi).abs();
-            d.min(TAU - d) < 1e-12
-        });
+        let dup = self.phi[..self.len]
+            .iter()
+            .any(|&r| (r - phi).abs() < 1e-12);
         if !dup && self.len < 4 {
             self.phi[self.len] = phi;
             self.len += 1;
@@ -309,6 +335,9 @@ pub(super) enum Exit {
     /// The variable does not apply here (the slip is on a ray to round-off, or `f` lost its
     /// sign): go on with the other variables from `pt`.
     Handoff,
+    /// The rays are not known for certain (an unresolved near-tangency of two, or `f ≡ 0`):
+    /// nothing was done, and the variable is not to be tried again.
+    Unavailable,
 }
 
 /// Everything the stage reads.
@@ -318,7 +347,6 @@ pub(super) struct Context<'a> {
     pub wnn: f64,
     pub mu: f64,
     pub field: &'a Field,
-    pub roots: &'a Roots,
     pub sc: Scales,
     pub max_steps: u32,
     /// The coefficient of restitution.
@@ -340,7 +368,7 @@ pub(super) fn run(
 ) -> Result<Exit, BreakdownReason> {
     let field = cx.field;
     let sigma0 = pt.vt.norm();
-    if !(sigma0 > 0.0 && sigma0.is_finite()) || cx.roots.len == 0 {
+    if !(sigma0 > 0.0 && sigma0.is_finite()) {
         return Ok(Exit::Handoff);
     }
     let phi0 = pt.vt.y.atan2(pt.vt.x);
@@ -349,21 +377,16 @@ pub(super) fn run(
     if !(f0.abs() > 1e-14 * (a.abs() + b.abs() + c.abs() + d.abs())) {
         return Ok(Exit::Handoff);
     }
+    let Some(sector) = Sector::find(field, phi0) else {
+        return Ok(Exit::Unavailable);
+    };
     let sgn = f0.signum();
-    let (mut da0, mut db0) = (f64::INFINITY, f64::INFINITY);
-    let (mut ra, mut rb) = (0.0, 0.0);
-    for &r in &cx.roots.phi[..cx.roots.len] {
-        let ahead = (sgn * (r - phi0)).rem_euclid(TAU);
-        let behind = (sgn * (phi0 - r)).rem_euclid(TAU);
-        if ahead < da0 {
-            da0 = ahead;
-            ra = r;
-        }
-        if behind < db0 {
-            db0 = behind;
-            rb = r;
-        }
-    }
+    let (ra, rb) = if sgn > 0.0 {
+        (sector.above, sector.below)
+    } else {
+        (sector.below, sector.above)
+    };
+    let (da0, db0) = (sgn * (ra - phi0), sgn * (phi0 - rb));
     if !(da0 > 1e-12 && db0 > 1e-12) {
         return Ok(Exit::Handoff);
     }
@@ -628,38 +651,56 @@ mod tests {
         (p, field)
     }
 
-    /// The scan finds the same rays as the companion matrix of the quartic in `tan(φ/2)`
-    /// (`invariant_rays`, an independent method), and each is a root of `f` to round-off.
+    /// The scans find the nearest rays below and above a direction, the same as the
+    /// companion matrix of the quartic in `tan(φ/2)` (`invariant_rays`, an independent
+    /// method) gives, and each is a root of `f` to round-off.
     #[test]
-    fn the_scan_finds_the_rays_of_the_companion_matrix() {
+    fn the_sector_scan_finds_the_rays_of_the_companion_matrix() {
         let mut g = Gen(0x9e37_79b9_7f4a_7c15);
         let mut compared = 0;
         for _ in 0..5000 {
             let (p, field) = random_field(&mut g);
-            let roots = Roots::find(&field).expect("f is not identically zero");
             let (a, b, c, d) = field.f_coefficients();
             let scale = a.abs() + b.abs() + c.abs() + d.abs();
-            for &r in &roots.phi[..roots.len] {
+            let phi0 = g.next(-10.0, 10.0);
+            let (s0, c0) = phi0.sin_cos();
+            if field.f_at(c0, s0).abs() < 1e-6 * scale {
+                continue;
+            }
+            let sector = Sector::find(&field, phi0).expect("f is not identically zero");
+            assert!(sector.below < phi0 && phi0 < sector.above);
+            assert!(sector.above - sector.below <= TAU + 1e-12);
+            for r in [sector.below, sector.above] {
                 let (s, co) = r.sin_cos();
                 assert!(field.f_at(co, s).abs() <= 1e-14 * scale, "f({r}) not zero");
             }
             let rays = invariant_rays(&p);
-            let reference = rays.as_slice();
+            let reference: Vec<f64> = rays.as_slice().iter().map(|x| x.angle).collect();
             // Near-tangencies (two roots closer than 1e-6) are left to the scan alone.
-            let close = reference
-                .windows(2)
-                .any(|w| (w[1].angle - w[0].angle).abs() < 1e-6);
+            let close = reference.windows(2).any(|w| (w[1] - w[0]).abs() < 1e-6);
             if close {
                 continue;
             }
-            assert_eq!(roots.len, reference.len(), "ray count for {p:?}");
-            for (r, x) in roots.phi[..roots.len].iter().zip(reference) {
-                let d = (r - x.angle).abs();
-                assert!(d.min(TAU - d) < 1e-12, "{r} vs {} for {p:?}", x.angle);
-            }
+            // The nearest reference rays above and below φ0.
+            let above = reference
+                .iter()
+                .map(|&r| phi0 + (r - phi0).rem_euclid(TAU))
+                .fold(f64::INFINITY, f64::min);
+            let below = reference
+                .iter()
+                .map(|&r| phi0 - (phi0 - r).rem_euclid(TAU))
+                .fold(f64::NEG_INFINITY, f64::max);
+            assert!(
+                (sector.above - above).abs() < 1e-12,
+                "{sector:?} vs {above} for {p:?}"
+            );
+            assert!(
+                (sector.below - below).abs() < 1e-12,
+                "{sector:?} vs {below} for {p:?}"
+            );
             compared += 1;
         }
-        assert!(compared > 4900);
+        assert!(compared > 4500, "{compared} compared");
     }
 
     /// `f` from its expansion about a ray equals `f` evaluated directly, to round-off of the
@@ -668,11 +709,10 @@ mod tests {
     fn the_expansion_about_a_ray_is_f() {
         let mut g = Gen(0x2545_f491_4f6c_dd1d);
         for _ in 0..500 {
-            let (_, field) = random_field(&mut g);
-            let roots = Roots::find(&field).expect("f is not identically zero");
+            let (p, field) = random_field(&mut g);
             let (a, b, c, d) = field.f_coefficients();
             let scale = a.abs() + b.abs() + c.abs() + d.abs();
-            for &r in &roots.phi[..roots.len] {
+            for r in invariant_rays(&p).as_slice().iter().map(|x| x.angle) {
                 let ray = Ray::new(&field, r);
                 for k in 0..40 {
                     let eps = g.next(-1.0, 1.0) * 10f64.powi(-(k % 8));
