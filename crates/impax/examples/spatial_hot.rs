@@ -8,10 +8,16 @@ fn case(name: &str) -> ContactProblem3 {
     let w = [2.0, 0.6, 0.3, 1.0, -0.2, 1.5];
     let (w, v, mu, e) = match name {
         "swirl-stick" => (w, [0.3, 0.8, -1.0], 0.8, 0.7),
-        "resumption" => ([1.0, 0.3, 0.8, 2.0, -0.5, 1.5], [-0.4, 0.3, -1.0], 0.3, 0.7),
+        "halt-resume" => (
+            [1.64, -0.82, -0.35, 1.62, -0.41, 0.87],
+            [0.38, 0.96, -1.0],
+            0.53,
+            0.7,
+        ),
+        "near-zero-swirl" => ([1.0, 0.3, 0.8, 2.0, -0.5, 1.5], [-0.4, 0.3, -1.0], 0.3, 0.7),
         "swirl-slip" => (w, [2.0, -1.5, -1.0], 0.3, 0.7),
         "sphere" => ([3.5, 0.0, 0.0, 3.5, 0.0, 1.0], [0.5, 0.2, -0.866], 0.4, 0.7),
-        _ => panic!("cases: swirl-stick, resumption, swirl-slip, sphere"),
+        _ => panic!("cases: swirl-stick, halt-resume, near-zero-swirl, swirl-slip, sphere"),
     };
     ContactProblem3::from_upper(w, v, mu, e).expect("valid")
 }

@@ -41,11 +41,16 @@ impl ContactProblem3 {
     /// energy `½ v⁻ᵀ W⁻¹ v⁻` overflows.
     pub fn new(w: Mat3, v: Vec3, friction: f64, restitution: f64) -> Result<Self> {
         const NAMES: [&str; 3] = ["t1", "t2", "n"];
+        // (The field's name is formatted only for the error.)
         for i in 0..3 {
             for j in 0..3 {
-                finite(&format!("w[{},{}]", NAMES[i], NAMES[j]), w[(i, j)])?;
+                if !w[(i, j)].is_finite() {
+                    finite(&format!("w[{},{}]", NAMES[i], NAMES[j]), w[(i, j)])?;
+                }
             }
-            finite(&format!("v[{}]", NAMES[i]), v[i])?;
+            if !v[i].is_finite() {
+                finite(&format!("v[{}]", NAMES[i]), v[i])?;
+            }
         }
         finite("friction", friction)?;
         finite("restitution", restitution)?;

@@ -266,10 +266,12 @@ impl Ray {
     }
 }
 
-/// The sector between the ray behind and the ray ahead.
+/// The sector between the ray behind and the ray ahead, and its map onto the real line.
 struct Fan {
     sgn: f64,
-    d: f64,
+    /// `cos(D/2)`, `sin(D/2)`.
+    cd: f64,
+    sd: f64,
     ahead: Ray,
     behind: Ray,
 }
@@ -282,36 +284,52 @@ struct Node {
     rho: f64,
 }
 
+/// The half-angle vector `h = (h_x, h_y)` of the map at `x`, with the sine and cosine of
+/// `δ_a/2` times `|h|` and `e^{−|x|}`: `(cos(δ_b/2), sin(δ_b/2)) = h/|h|`.
+#[inline]
+fn half_vectors(cd: f64, sd: f64, x: f64) -> (f64, f64, f64, f64, f64) {
+    if x <= 0.0 {
+        let z = x.exp();
+        (1.0 + z * cd, z * sd, sd, cd + z, z)
+    } else {
+        let w = (-x).exp();
+        (w + cd, sd, w * sd, 1.0 + w * cd, w)
+    }
+}
+
 impl Fan {
     /// `δ_a` at `x`.
     fn delta_ahead(&self, x: f64) -> f64 {
-        if x > 0.0 {
-            let e = (-x).exp();
-            self.d * e / (1.0 + e)
-        } else {
-            self.d / (1.0 + x.exp())
-        }
+        let (_, _, sa, ca, _) = half_vectors(self.cd, self.sd, x);
+        2.0 * sa.atan2(ca)
     }
 
     /// The direction, `q` and `ρ` at `x`; `None` where `f` does not have the sign of the
     /// sector (round-off at the very ends).
     #[inline]
     fn node(&self, field: &Field, x: f64) -> Option<Node> {
-        let (da, db, eps, ray) = if x > 0.0 {
-            let e = (-x).exp();
-            let da = self.d * e / (1.0 + e);
-            (da, self.d / (1.0 + e), -self.sgn * da, &self.ahead)
+        let (hx, hy, sa, ca, t) = half_vectors(self.cd, self.sd, x);
+        let inv = 1.0 / (hx * hx + hy * hy);
+        // The offset ε from the nearer ray, by its sine and cosine (double half-angles).
+        let (se, ce, ray) = if x <= 0.0 {
+            (
+                self.sgn * 2.0 * hx * hy * inv,
+                1.0 - 2.0 * hy * hy * inv,
+                &self.behind,
+            )
         } else {
-            let e = x.exp();
-            let db = self.d * e / (1.0 + e);
-            (self.d / (1.0 + e), db, self.sgn * db, &self.behind)
+            (
+                -self.sgn * 2.0 * sa * ca * inv,
+                1.0 - 2.0 * sa * sa * inv,
+                &self.ahead,
+            )
         };
-        let (se, ce) = eps.sin_cos();
         let s = Vec2::new(
             ray.dir.x * ce - ray.dir.y * se,
             ray.dir.y * ce + ray.dir.x * se,
         );
-        let f = if eps.abs() <= 1.0 {
+        // |ε| ≤ 1: the expansion about the ray.
+        let f = if ce >= 0.5403 {
             se * (ray.q + 2.0 * ray.s * ce - ray.r * se * (2.0 * ce + 1.0) / (1.0 + ce))
         } else {
             field.f_at(s.x, s.y)
@@ -323,7 +341,8 @@ impl Fan {
         Some(Node {
             s,
             q: field.q_at(s.x, s.y),
-            rho: (da * db / self.d) / fa,
+            // dθ/dx = 2 e^{−|x|} sin(D/2)/|h|².
+            rho: 2.0 * t * self.sd * inv / fa,
         })
     }
 }
@@ -390,16 +409,22 @@ pub(super) fn run(
     if !(da0 > 1e-12 && db0 > 1e-12) {
         return Ok(Exit::Handoff);
     }
+    let (sd, cd) = (0.5 * (da0 + db0)).sin_cos();
+    if !(sd > 1e-3) {
+        // The sector is the whole circle but for a double root.
+        return Ok(Exit::Handoff);
+    }
     let fan = Fan {
         sgn,
-        d: da0 + db0,
+        cd,
+        sd,
         ahead: Ray::new(field, ra),
         behind: Ray::new(field, rb),
     };
     let qa = field.q_at(fan.ahead.dir.x, fan.ahead.dir.y);
     let lb = lobatto();
     let rtol = cx.sc.rtol;
-    let mut x = (db0 / da0).ln();
+    let mut x = (0.5 * db0).sin().ln() - (0.5 * da0).sin().ln();
     let Some(mut n0) = fan.node(field, x) else {
         return Ok(Exit::Handoff);
     };
@@ -459,6 +484,9 @@ pub(super) fn run(
         let d1: [f64; M] = std::array::from_fn(|j| nodes[j].s.x * dp[j]);
         let d2: [f64; M] = std::array::from_fn(|j| nodes[j].s.y * dp[j]);
         let dw: [f64; M] = std::array::from_fn(|j| sig[j] * dp[j]);
+        // dv_n = (w_nn − μ w_tn·ŝ) dp_n.
+        let dv: [f64; M] =
+            std::array::from_fn(|j| (cx.wnn - cx.mu * cx.wtn.dot(&nodes[j].s)) * dp[j]);
         // The error test: the last Chebyshev coefficients of each integrand against the
         // tolerance on `u` (absolute: relative on σ) and relative on every other quantity
         // (its value at the start plus the size of its increment over the panel).
@@ -468,18 +496,13 @@ pub(super) fn run(
             k * half * lb.tail(v) / (rtol * (at.abs() + k * h * size))
         };
         let cp = lb.cumulative(&dp);
-        let c1 = lb.cumulative(&d1);
-        let c2 = lb.cumulative(&d2);
+        let cv = lb.cumulative(&dv);
         let pn: [f64; M] = std::array::from_fn(|j| base.p + half * cp[j]);
-        let ptv: [Vec2; M] =
-            std::array::from_fn(|j| base.pt - cx.mu * half * Vec2::new(c1[j], c2[j]));
-        let vn_at =
-            |p: f64, ptj: Vec2| base.vn + cx.wtn.dot(&(ptj - base.pt)) + cx.wnn * (p - base.p);
         let vn: [f64; M] = std::array::from_fn(|j| {
             if j == 0 {
                 base.vn
             } else {
-                vn_at(pn[j], ptv[j])
+                base.vn + half * cv[j]
             }
         });
         let dn: [f64; M] = std::array::from_fn(|j| vn[j] * dp[j]);
@@ -502,14 +525,17 @@ pub(super) fn run(
         }
         // The works at every node only where an event can read them (the energetic
         // termination once compression has ended, or an event inside the panel); else at
-        // the panel's end only.
+        // the panel's end only. The tangential impulse inside the panel only at an event.
         let all_works = || (lb.cumulative(&dn), lb.cumulative(&dw));
         let mut works =
             (ev.pc.is_some() && matches!(ev.term, Termination::Energetic)).then(all_works);
+        let end_pt = base.pt - cx.mu * half * Vec2::new(lb.integral(&d1), lb.integral(&d2));
         let (end_n, end_w) = (
             base.wn + half * lb.integral(&dn),
             base.wt - cx.mu * half * lb.integral(&dw),
         );
+        // The state at node `j` (the tangential impulse and the works only at the end, or
+        // where the works are known).
         let point = |j: usize, works: &Option<([f64; M], [f64; M])>| {
             let (wn, wt) = match works {
                 Some((cn, cw)) => (base.wn + half * cn[j], base.wt - cx.mu * half * cw[j]),
@@ -520,27 +546,30 @@ pub(super) fn run(
                 p: pn[j],
                 vt: sig[j] * nodes[j].s,
                 vn: vn[j],
-                pt: ptv[j],
+                pt: if j == N {
+                    end_pt
+                } else {
+                    Vec2::new(f64::NAN, f64::NAN)
+                },
                 wn,
                 wt,
+            }
+        };
+        // What the event functions read at `t` (p_n, v_n, W_n) on the interpolants.
+        let light = |t: f64, cn: &[f64; M]| -> Point {
+            let l = lb.basis(t);
+            Point {
+                p: base.p + half * dot(&l, &cp),
+                vt: Vec2::zeros(),
+                vn: base.vn + half * dot(&l, &cv),
+                pt: base.pt,
+                wn: base.wn + half * dot(&l, cn),
+                wt: f64::NAN,
             }
         };
         // The events on the panel's interpolants, node interval by node interval; the slip
         // itself does not change at an event, so the panel goes on past any that does not
         // end the law.
-        let light = |t: f64, (cn, cw): &([f64; M], [f64; M])| -> Point {
-            let l = lb.basis(t);
-            let p = base.p + half * dot(&l, &cp);
-            let ptt = base.pt - cx.mu * half * Vec2::new(dot(&l, &c1), dot(&l, &c2));
-            Point {
-                p,
-                vt: Vec2::zeros(),
-                vn: vn_at(p, ptt),
-                pt: ptt,
-                wn: base.wn + half * dot(&l, cn),
-                wt: base.wt - cx.mu * half * dot(&l, cw),
-            }
-        };
         let mut prev = base;
         #[allow(clippy::needless_range_loop)] // j indexes the node arrays and the nodes t_j
         for j in 1..M {
@@ -550,14 +579,19 @@ pub(super) fn run(
                 let w = *works.get_or_insert_with(all_works);
                 bj = point(j, &works);
                 let t = illinois(
-                    |t| event_value(ev, kind, &light(t, &w)),
+                    |t| event_value(ev, kind, &light(t, &w.0)),
                     lo,
                     ga,
                     lb.t[j],
                     gb,
                 );
-                let mut e = if t == lb.t[j] { bj } else { light(t, &w) };
-                let ue = u0 + half * dot(&lb.basis(t), &cu);
+                // The whole state at the event.
+                let l = lb.basis(t);
+                let (c1, c2) = (lb.cumulative(&d1), lb.cumulative(&d2));
+                let mut e = light(t, &w.0);
+                e.pt = base.pt - cx.mu * half * Vec2::new(dot(&l, &c1), dot(&l, &c2));
+                e.wt = base.wt - cx.mu * half * dot(&l, &w.1);
+                let ue = u0 + half * dot(&l, &cu);
                 let ne = fan.node(field, x + half * (1.0 + t)).unwrap_or(nodes[j]);
                 e.vt = ue.exp() * ne.s;
                 *pt = e;
