@@ -12,9 +12,10 @@
 //!    `p_n`. The direction field is singular at `σ = |v_t| → 0`, and steps in `p_n` must
 //!    shrink with `σ`, so the independent variable changes:
 //!    * first choice wherever the slip turns or shrinks appreciably before the next normal
-//!      event: the angle variable `x = ln(δ_b/δ_a)` between the invariant rays behind and
-//!      ahead of the direction (module `angle`), in which the direction equation is solved
-//!      by the map and every other quantity is a quadrature on Chebyshev panels — smooth
+//!      event: the angle variable `x = ln(sin(δ_b/2)/sin(δ_a/2))` between the invariant
+//!      rays behind and ahead of the direction (module `angle`), in which the direction
+//!      equation is solved by the map and every other quantity is a quadrature on
+//!      Chebyshev panels — smooth
 //!      through near-zero passes, halts, nearly frozen slips; it hands back to the
 //!      variables below only where it cannot apply (the slip on a ray to round-off, or the
 //!      direction barely turning before the next event);

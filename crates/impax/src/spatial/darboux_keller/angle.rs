@@ -6,22 +6,29 @@
 //! (the roots of `f`, which has zero mean over the circle and so at least two) and reaches
 //! neither at a finite impulse unless the slip halts there. With `θ` the angle turned in the
 //! sense of `f`, `δ_b = θ − θ_b` and `δ_a = θ_a − θ` the distances to the two rays and
-//! `D = δ_a + δ_b`, the variable
+//! `D = δ_a + δ_b < 2π`, the variable
 //!
 //! ```text
-//! x = ln(δ_b/δ_a),   dθ/dx = δ_a δ_b / D,   ρ = (dθ/dx)/|f|,
-//! du/dx = q ρ,  dp_n/dx = σ ρ,  dp_t/dx = −μ ŝ σ ρ,  dW_t/dx = −μ σ² ρ,  dW_n/dx = v_n σ ρ
+//! x = ln(sin(δ_b/2)/sin(δ_a/2)),   dθ/dx = 2 sin(δ_a/2) sin(δ_b/2)/sin(D/2),
+//! ρ = (dθ/dx)/|f|,
+//! du/dx = q ρ,  dp_n/dx = σ ρ,  dp_t/dx = −μ ŝ σ ρ,  dv_n/dx = (w_nn − μ w_tn·ŝ) σ ρ,
+//! dW_t/dx = −μ σ² ρ,  dW_n/dx = v_n σ ρ
 //! ```
 //!
-//! (`u = ln σ`, `q = ŝ·g`) maps the sector onto the whole real line. Near either ray
-//! `|f| ≈ |f'| δ`, so `ρ` stays bounded and `σ ∝ e^{κ x}`: every integrand is smooth on the
-//! scale of one unit of `x` — a swing of the direction through a near-zero pass, the approach
-//! to a halt, a slip leaving a ray or growing along one, a nearly frozen slip alike. The
-//! only nonlinear equation (the direction's) is solved by the map itself; `u`, then `p_n`,
-//! `p_t`, `W_t`, then `v_n` (algebraic) and `W_n` are cumulative integrals on 17-node
-//! Chebyshev–Lobatto panels ([`crate::spatial::chebyshev`]), whose length follows the size of
-//! the last Chebyshev coefficients of `du/dx` and `dp_n/dx`. Events are located on the
-//! panel's interpolants.
+//! (`u = ln σ`, `q = ŝ·g`) maps the sector onto the whole real line. It is rational in
+//! `e^x`: the half-angle vector `h = e_b' + e^x e_a'` (`e'` the unit vectors at half the
+//! rays' angles) points at `θ/2`, so `ŝ = (h_x² − h_y², 2 h_x h_y)/|h|²` and
+//! `dθ/dx = 2 e^x sin(D/2)/|h|²` (`e^{−x}` and `h e^{−x}` for `x > 0`): one exponential per
+//! node and no sine or cosine. Near either ray `|f| ≈ |f'| δ`, so `ρ` stays bounded and
+//! `σ ∝ e^{κ x}`: every integrand is smooth on the scale of one unit of `x` — a swing of
+//! the direction through a near-zero pass, the approach to a halt, a slip leaving a ray or
+//! growing along one, a nearly frozen slip alike. The only nonlinear equation (the
+//! direction's) is solved by the map itself; `u`, then `p_n`, `v_n`, `p_t`, `W_t` and `W_n`
+//! are integrals on 17-node Chebyshev–Lobatto panels ([`crate::spatial::chebyshev`]), whose
+//! length follows the size of the last Chebyshev coefficients of the integrands; the
+//! cumulative ones (at every node) only where an event can read them. Events are located on
+//! the panel's interpolants. The two rays are found by scans outward from the slip's
+//! direction ([`Sector`]).
 //!
 //! Near a ray `r`, `f` is evaluated from its expansion about the ray with `f(r) = 0` imposed
 //! (a change of the data by the round-off of the root, ~1e-16):
