@@ -1,6 +1,8 @@
-//! Spatial Darboux–Keller impacts (energetic): one with swirl then stick, one with slip
-//! resumed along the centrifugal ray, one slipping throughout with swirl, and the sphere
-//! (no swirl; straight run in closed form); and the engine rule `lcp` on the same problems.
+//! Spatial Darboux–Keller impacts (energetic): one with swirl then stick, one whose slip
+//! halts and resumes at once along the centrifugal ray, one whose slip swings through a
+//! near-zero and leaves along a centrifugal ray, one slipping throughout with swirl, and the
+//! sphere (no swirl; straight run in closed form); and the engine rule `lcp` on the same
+//! problems.
 //! Run: `cargo bench -p impax --bench spatial_laws`.
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
@@ -16,7 +18,17 @@ pub fn cases() -> Vec<(&'static str, ContactProblem3)> {
             ContactProblem3::from_upper(w, [0.3, 0.8, -1.0], 0.8, 0.7).unwrap(),
         ),
         (
-            "resumption",
+            "halt-resume",
+            ContactProblem3::from_upper(
+                [1.64, -0.82, -0.35, 1.62, -0.41, 0.87],
+                [0.38, 0.96, -1.0],
+                0.53,
+                0.7,
+            )
+            .unwrap(),
+        ),
+        (
+            "near-zero-swirl",
             ContactProblem3::from_upper(
                 [1.0, 0.3, 0.8, 2.0, -0.5, 1.5],
                 [-0.4, 0.3, -1.0],

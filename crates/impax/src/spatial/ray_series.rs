@@ -246,10 +246,13 @@ fn inner(a: &[f64; TERMS], b: &Coeffs, n: usize) -> f64 {
 #[inline]
 fn inner_many<const K: usize>(a: &[f64; TERMS], rev: &[[f64; K]; TERMS], n: usize) -> [f64; K] {
     let mut acc = [0.0; K];
-    if n < 2 {
+    if !(2..=TERMS).contains(&n) {
         return acc;
     }
-    for (x, y) in a[1..n].iter().zip(&rev[TERMS - n..TERMS - 1]) {
+    let (a, rev) = (&a[1..n], &rev[TERMS - n..TERMS - 1]);
+    for j in 0..a.len() {
+        let x = a[j];
+        let y = rev[j];
         for k in 0..K {
             acc[k] += x * y[k];
         }

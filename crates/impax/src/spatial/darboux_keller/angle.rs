@@ -436,7 +436,7 @@ pub(super) fn run(
         return Ok(Exit::Handoff);
     };
     let mut u0 = sigma0.ln();
-    let mut h = 1.4f64;
+    let mut h = 1.2f64;
     let mut series = TailSeries::with_ray(fan.ahead.phi, fan.ahead.dir);
     loop {
         if *steps >= cx.max_steps {
