@@ -30,7 +30,7 @@
 //!      integrated until the series about the centripetal ray ahead
 //!      (module `ray_series`: the normal form of the direction flow, every quadrature in
 //!      closed form term by term) gives the whole rest of the slip, the halt at the ray's
-//!      angle and any event before it to the last bits; where that series does not converge
+//!      angle and any event before it to the tolerance; where that series does not converge
 //!      (a weakly attracting ray), until `σ` has shrunk by `e⁻⁴⁰`, the remaining impulse
 //!      `σ/|ŝ·g|` then added in closed form;
 //!    * once the slip is small (below `σ⁻/20`) and not shrinking steadily, or on leaving
@@ -811,8 +811,10 @@ impl TailSeries {
 
 /// The rest of a slip running into the centripetal ray of `ser`, in closed form
 /// ([`RaySeries`]), with the events in it located on the series: the end of the slip stage,
-/// or `None` (nothing changed) while the series does not yet give the rest to the last bits
-/// of the result, or an event could hide inside it (`v_n` not monotone on the rest).
+/// or `None` (nothing changed) while the series does not yet give the rest to the
+/// tolerance (its truncation, relative to the rest's impulse, below `rtol` times the impulse
+/// scale over that impulse), or an event could hide inside it (`v_n` not monotone on the
+/// rest).
 #[allow(clippy::too_many_arguments)]
 fn series_tail(
     ser: &RaySeries,
@@ -834,7 +836,7 @@ fn series_tail(
         return None;
     }
     let xi0 = ser.normal_coordinate(eta0)?;
-    let tol = (1e-15 * sc.p / (sigma0 * ser.impulse_per_slip())).min(1e-6);
+    let tol = (sc.rtol * sc.p / (sigma0 * ser.impulse_per_slip())).min(1e-6);
     let trunc = ser.truncation(xi0);
     if trunc.is_nan() || trunc > tol {
         return None;

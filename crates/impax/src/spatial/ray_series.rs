@@ -36,7 +36,7 @@
 use crate::math::{Mat2, Vec2};
 
 /// Number of series terms (`ξ⁰ … ξ^(TERMS−1)`).
-pub(crate) const TERMS: usize = 24;
+pub(crate) const TERMS: usize = 20;
 
 /// `E(a, s) = (e^{a s} − 1)/a` (`s` at `a = 0`), without cancellation.
 #[inline]
