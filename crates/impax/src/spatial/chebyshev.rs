@@ -158,8 +158,9 @@ impl Lobatto {
             *o = w / (t - tj);
             sum += *o;
         }
+        let inv = 1.0 / sum;
         for o in out.iter_mut() {
-            *o /= sum;
+            *o *= inv;
         }
         out
     }

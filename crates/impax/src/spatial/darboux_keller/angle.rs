@@ -44,8 +44,8 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 use super::{
-    after_event, event_value, first_event, illinois, linear_piece, series_tail, Events, Linear,
-    Point, Scales, SlipEnd, TailSeries, Termination,
+    after_event, event_value, first_event, linear_piece, series_tail, Events, Linear, Point,
+    Scales, SlipEnd, TailSeries, Termination,
 };
 use crate::math::{Mat2, Vec2, Vec3};
 use crate::planar::BreakdownReason;
@@ -246,6 +246,43 @@ fn polish(
         b,
         x,
     )
+}
+
+/// The crossing of an event function `g` (with its rate `g'`, from `g_dg`) through zero in
+/// `(a, b]`, given `g(a) < 0 ≤ g(b)`: Newton's method from the secant point, kept inside the
+/// shrinking bracket (bisection where a step would leave it). Returns a point where `g ≥ 0`
+/// within `4ε` of the crossing (the end of the final bracket; `t ∈ [−1, 1]`).
+fn crossing(g_dg: impl Fn(f64) -> (f64, f64), a: f64, ga: f64, b: f64, gb: f64) -> f64 {
+    let (mut a, mut b) = (a, b);
+    let mut t = a - ga * (b - a) / (gb - ga);
+    for _ in 0..60 {
+        if !(t > a && t < b) {
+            t = 0.5 * (a + b);
+        }
+        let (g, dg) = g_dg(t);
+        if g >= 0.0 {
+            b = t;
+        } else {
+            a = t;
+        }
+        // (The panel's variable is in [−1, 1].)
+        let tol = 4.0 * f64::EPSILON;
+        if b - a <= tol {
+            return b;
+        }
+        let step = g / dg;
+        t = if (step.abs() <= tol) || !step.is_finite() {
+            // At the crossing to round-off: close the bracket from the side still open.
+            if g >= 0.0 {
+                t - tol
+            } else {
+                t + tol
+            }
+        } else {
+            t - step
+        };
+    }
+    b
 }
 
 /// One invariant ray with the coefficients of `f`'s expansion about it.
@@ -563,14 +600,13 @@ pub(super) fn run(
             }
         };
         // What the event functions read at `t` (p_n, v_n, W_n) on the interpolants.
-        let light = |t: f64, cn: &[f64; M]| -> Point {
-            let l = lb.basis(t);
+        let light = |l: &[f64; M], cn: &[f64; M]| -> Point {
             Point {
-                p: base.p + half * dot(&l, &cp),
+                p: base.p + half * dot(l, &cp),
                 vt: Vec2::zeros(),
-                vn: base.vn + half * dot(&l, &cv),
+                vn: base.vn + half * dot(l, &cv),
                 pt: base.pt,
-                wn: base.wn + half * dot(&l, cn),
+                wn: base.wn + half * dot(l, cn),
                 wt: f64::NAN,
             }
         };
@@ -585,8 +621,22 @@ pub(super) fn run(
             while let Some((kind, ga, gb)) = first_event(ev, &prev, &bj) {
                 let w = *works.get_or_insert_with(all_works);
                 bj = point(j, &works);
-                let t = illinois(
-                    |t| event_value(ev, kind, &light(t, &w.0)),
+                // The event function's rate: its integrand's interpolant (v_n for the end
+                // of compression, a second compression and Newton's termination).
+                let (rate, sign) = match (kind, ev.term) {
+                    (1, Termination::Energetic) => (&dn, 1.0),
+                    (1, Termination::Poisson) => (&dp, 1.0),
+                    (2, _) => (&dv, -1.0),
+                    _ => (&dv, 1.0),
+                };
+                let t = crossing(
+                    |t| {
+                        let l = lb.basis(t);
+                        (
+                            event_value(ev, kind, &light(&l, &w.0)),
+                            sign * half * dot(&l, rate),
+                        )
+                    },
                     lo,
                     ga,
                     lb.t[j],
@@ -595,7 +645,7 @@ pub(super) fn run(
                 // The whole state at the event.
                 let l = lb.basis(t);
                 let (c1, c2) = (lb.cumulative(&d1), lb.cumulative(&d2));
-                let mut e = light(t, &w.0);
+                let mut e = light(&l, &w.0);
                 e.pt = base.pt - cx.mu * half * Vec2::new(dot(&l, &c1), dot(&l, &c2));
                 e.wt = base.wt - cx.mu * half * dot(&l, &w.1);
                 let ue = u0 + half * dot(&l, &cu);
