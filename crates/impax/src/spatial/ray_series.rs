@@ -640,4 +640,57 @@ mod tests {
             }
         }
     }
+
+    /// The increments by the exponential recurrences agree with the factor-by-factor
+    /// `E(a, s) = (e^{as} − 1)/a` to round-off for every `s ≤ 0`, and tend to the halt.
+    #[test]
+    fn increments_by_recurrence_match_direct_exponentials() {
+        let wtt = Mat2::new(2.0, 0.6, 0.6, 1.0);
+        let wtn = Vec2::new(0.3, -0.2);
+        let (wnn, mu) = (1.5, 0.8);
+        let field = Field::new(&wtt, wtn, mu);
+        let phi = field.ray_ahead(1.8).expect("a ray ahead of 1.8");
+        let ser = RaySeries::new(&field, wnn, phi).expect("series");
+        assert!(ser.lambda > 0.0);
+        let xi = 0.05;
+        for s in [-1e-9, -1e-4, -0.3, -2.0, -15.0, -80.0] {
+            let inc = ser.increment(0.2, xi, 0.1, s);
+            // Factor by factor.
+            let (mut sp, mut sc, mut ss, mut sk, mut skr, mut sr2, mut ka) =
+                (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+            let mut x = 1.0;
+            for k in 0..TERMS {
+                let kl = k as f64 * ser.lambda;
+                let (e1, e2) = (expm1_ratio(1.0 + kl, s) * x, expm1_ratio(2.0 + kl, s) * x);
+                sp += ser.r[k] * e1;
+                sc += ser.rc[k] * e1;
+                ss += ser.rs[k] * e1;
+                sk += ser.kappa[k] * e1;
+                skr += ser.kr[k] * e2;
+                sr2 += ser.r[k] * e2;
+                ka += ser.kappa[k] * x / (1.0 + kl);
+                x *= xi;
+            }
+            let dp = 0.2 * sp;
+            let direct = [
+                dp,
+                -mu * 0.2 * sc,
+                -mu * 0.2 * ss,
+                0.2 * sk,
+                0.1 * dp + 0.04 * (skr - sp * ka),
+                -mu * 0.04 * sr2,
+            ];
+            let got = [inc.dp, inc.dpt.x, inc.dpt.y, inc.dvn, inc.dwn, inc.dwt];
+            for (a, b) in got.iter().zip(&direct) {
+                assert!(
+                    (a - b).abs() <= 1e-14 * b.abs().max(1e-300) + 1e-300,
+                    "s {s}: {a} vs {b}"
+                );
+            }
+        }
+        let halt = ser.increment(0.2, xi, 0.1, f64::NEG_INFINITY);
+        let far = ser.increment(0.2, xi, 0.1, -800.0);
+        assert!((halt.dp - far.dp).abs() <= 1e-15 * halt.dp.abs());
+        assert!((halt.dwn - far.dwn).abs() <= 1e-14 * halt.dwn.abs());
+    }
 }

@@ -820,4 +820,93 @@ mod tests {
             }
         }
     }
+
+    /// The half-angle map against the angle it stands for: `ŝ(x)` is the direction at
+    /// `θ_b + sgn·2 atan2(e^x sin(D/2), 1 + e^x cos(D/2))`, `δ_a` is `D` less the angle
+    /// turned, and `ρ |f| = dθ/dx` agrees with a central difference of that angle.
+    #[test]
+    fn the_half_angle_map_is_the_angle_it_stands_for() {
+        let mut g = Gen(0x6a09_e667_f3bc_c909);
+        let mut checked = 0;
+        for _ in 0..300 {
+            let (_, field) = random_field(&mut g);
+            let phi0 = g.next(-3.0, 3.0);
+            let (s0, c0) = phi0.sin_cos();
+            let f0 = field.f_at(c0, s0);
+            let (a, b, c, d) = field.f_coefficients();
+            if f0.abs() < 1e-3 * (a.abs() + b.abs() + c.abs() + d.abs()) {
+                continue;
+            }
+            let Some(sector) = Sector::find(&field, phi0) else {
+                continue;
+            };
+            let sgn = f0.signum();
+            let (ra, rb) = if sgn > 0.0 {
+                (sector.above, sector.below)
+            } else {
+                (sector.below, sector.above)
+            };
+            let big_d = sector.above - sector.below;
+            if big_d > 6.0 {
+                continue;
+            }
+            let (sd, cd) = (0.5 * big_d).sin_cos();
+            let fan = Fan {
+                sgn,
+                cd,
+                sd,
+                ahead: Ray::new(&field, ra),
+                behind: Ray::new(&field, rb),
+            };
+            let turned = |x: f64| 2.0 * (x.exp() * sd).atan2(1.0 + x.exp() * cd);
+            for x in [-30.0, -4.0, -0.7, 0.0, 0.3, 2.5, 9.0] {
+                let Some(n) = fan.node(&field, x) else {
+                    continue;
+                };
+                let theta = rb + sgn * turned(x);
+                assert!((n.s.x - theta.cos()).abs() < 1e-14 && (n.s.y - theta.sin()).abs() < 1e-14);
+                assert!((n.s.norm() - 1.0).abs() < 1e-15);
+                let da = fan.delta_ahead(x);
+                assert!((da - (big_d - turned(x))).abs() < 1e-13 * big_d.max(1.0) + 1e-15);
+                if x.abs() < 5.0 {
+                    let e = 1e-5;
+                    let rate = (turned(x + e) - turned(x - e)) / (2.0 * e);
+                    let f = field.f_at(n.s.x, n.s.y).abs();
+                    assert!(((n.rho * f) - rate).abs() < 1e-8 * rate, "x {x}");
+                }
+                checked += 1;
+            }
+        }
+        assert!(checked > 1000, "{checked} checked");
+    }
+
+    /// Events: the crossing is found within 4ε of the root of an increasing function, and of
+    /// one that is not monotone in the bracket, always on the side where `g ≥ 0`.
+    #[test]
+    fn the_crossing_is_located_to_round_off_on_its_far_side() {
+        let mut g = Gen(0xbb67_ae85_84ca_a73b);
+        for _ in 0..2000 {
+            let root = g.next(-0.9, 0.9);
+            let k = g.next(0.1, 10.0);
+            // (|wiggle (t − root)| < 1: one root, and g' changes sign for the larger ones.)
+            let wiggle = g.next(0.0, 0.5);
+            let f = |t: f64| {
+                (
+                    k * (t - root) + wiggle * k * (t - root) * (t - root) * (3.0 * t).cos(),
+                    k + wiggle
+                        * k
+                        * (2.0 * (t - root) * (3.0 * t).cos()
+                            - 3.0 * (t - root) * (t - root) * (3.0 * t).sin()),
+                )
+            };
+            let (a, b) = (-1.0, 1.0);
+            let (fa, fb) = (f(a).0, f(b).0);
+            if !(fa < 0.0 && fb >= 0.0) {
+                continue;
+            }
+            let t = crossing(f, a, fa, b, fb);
+            assert!(f(t).0 >= 0.0, "g({t}) < 0");
+            assert!((t - root).abs() <= 8.0 * f64::EPSILON, "{t} vs {root}");
+        }
+    }
 }
