@@ -15,10 +15,9 @@
 //!      event: the angle variable `x = ln(sin(δ_b/2)/sin(δ_a/2))` between the invariant
 //!      rays behind and ahead of the direction (module `angle`), in which the direction
 //!      equation is solved by the map and every other quantity is a quadrature on
-//!      Chebyshev panels — smooth
-//!      through near-zero passes, halts, nearly frozen slips; it hands back to the
-//!      variables below only where it cannot apply (the slip on a ray to round-off, or the
-//!      direction barely turning before the next event);
+//!      Chebyshev panels — smooth through near-zero passes, halts, nearly frozen slips; it
+//!      hands back to the variables below only where it cannot apply (the slip on a ray to
+//!      round-off, or the direction barely turning before the next event);
 //!    * as soon as the slip shrinks steadily (`ŝ·g < −0.9 |g|`: near a centripetal
 //!      invariant ray, or on an inward spiral), whatever its size, it becomes `u = ln σ`
 //!      (decreasing), in which the system is smooth all the way (the direction is carried

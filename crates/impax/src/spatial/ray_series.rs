@@ -14,8 +14,11 @@
 //! At an invariant ray `φ*` (`f(φ*) = 0`, `q(φ*) ≠ 0`) put `η = φ − φ*` and
 //! `λ = F'(φ*) = f'(φ*)/q(φ*)`. The flow is conjugate to its linear part: there is an
 //! analytic `h` with `h(ξ) = ξ + b₂ ξ² + …` and `λ ξ h'(ξ) = F(φ* + h(ξ))`, so that
-//! `η(u) = h(ξ₀ e^{λ(u−u₀)})` exactly (`b_n = Σ_{k≥2} F_k [h^k]_n / (λ (n − 1))`, order by
-//! order: no resonance in one dimension). Along that solution every integrand is `σ` or `σ²`
+//! `η(u) = h(ξ₀ e^{λ(u−u₀)})` exactly (`λ n b_n = [F∘(φ* + h)]_n = λ b_n + terms of lower
+//! order`, so `b_n` follows order by order: no resonance in one dimension; the composition is
+//! carried by `C = cos(φ* + h)`, `S = sin(φ* + h)` and their double angles, whose
+//! coefficients follow from `C' = −S h'`, `S' = C h'`, so the whole construction is
+//! O(terms²)). Along that solution every integrand is `σ` or `σ²`
 //! times a power series in `ξ`, and each term integrates in closed form with
 //! `E(a, s) = (e^{a s} − 1)/a`:
 //!

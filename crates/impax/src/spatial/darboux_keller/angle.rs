@@ -271,7 +271,10 @@ fn crossing(g_dg: impl Fn(f64) -> (f64, f64), a: f64, ga: f64, b: f64, gb: f64) 
             return b;
         }
         let step = g / dg;
-        t = if (step.abs() <= tol) || !step.is_finite() {
+        t = if !step.is_finite() {
+            // No usable rate: bisect (at the top of the loop).
+            f64::NAN
+        } else if step.abs() <= tol {
             // At the crossing to round-off: close the bracket from the side still open.
             if g >= 0.0 {
                 t - tol
