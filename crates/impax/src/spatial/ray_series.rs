@@ -605,14 +605,22 @@ mod tests {
         y
     }
 
-    #[test]
-    fn series_agrees_with_a_fine_integration() {
+    /// The example field (`W_tt`, `w_tn`, `w_nn`, `μ`) and its series about the centripetal
+    /// ray ahead of 1.8 rad.
+    fn example() -> (Mat2, Vec2, f64, f64, RaySeries) {
         let wtt = Mat2::new(2.0, 0.6, 0.6, 1.0);
         let wtn = Vec2::new(0.3, -0.2);
         let (wnn, mu) = (1.5, 0.8);
         let field = Field::new(&wtt, wtn, mu);
         let phi = field.ray_ahead(1.8).expect("a ray ahead of 1.8");
         let ser = RaySeries::new(&field, wnn, phi).expect("series");
+        (wtt, wtn, wnn, mu, ser)
+    }
+
+    #[test]
+    fn series_agrees_with_a_fine_integration() {
+        let (wtt, wtn, wnn, mu, ser) = example();
+        let phi = ser.phi;
         assert!(ser.attracts_to_halt(), "λ = {}", ser.lambda);
         for eta in [0.02, -0.05, 0.1] {
             let xi = ser.normal_coordinate(eta).expect("inverse");
@@ -648,12 +656,7 @@ mod tests {
     /// `E(a, s) = (e^{as} − 1)/a` to round-off for every `s ≤ 0`, and tend to the halt.
     #[test]
     fn increments_by_recurrence_match_direct_exponentials() {
-        let wtt = Mat2::new(2.0, 0.6, 0.6, 1.0);
-        let wtn = Vec2::new(0.3, -0.2);
-        let (wnn, mu) = (1.5, 0.8);
-        let field = Field::new(&wtt, wtn, mu);
-        let phi = field.ray_ahead(1.8).expect("a ray ahead of 1.8");
-        let ser = RaySeries::new(&field, wnn, phi).expect("series");
+        let (_, _, _, mu, ser) = example();
         assert!(ser.lambda > 0.0);
         let xi = 0.05;
         for s in [-1e-9, -1e-4, -0.3, -2.0, -15.0, -80.0] {
