@@ -106,6 +106,7 @@ impl BodyImpact {
                 t0: self.t0,
                 energy_before: self.impact.energy_before().total(),
             },
+            problem3: None,
         }
     }
 }
@@ -202,6 +203,7 @@ impl MechanismImpact {
                 energy_before: impact.energy_before(),
                 energy_change_from_velocities: r.energy_change_from_velocities,
             },
+            problem3: None,
         })
     }
 }

@@ -7,10 +7,12 @@
 use impax::bodies::{BodyState2, EnergyParts};
 use impax::math::{Vec2, Vec3};
 use impax::planar::{Breakdown, Inconsistency, LawDetail, Outcome as Planar, SmithReading};
-use impax::spatial::{Detail3, Outcome3, Phase3Kind};
+use impax::spatial::{
+    invariant_rays, ContactProblem3, Detail3, InvariantRays, Outcome3, Phase3Kind,
+};
 use impax::LawId;
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyList, PyTuple};
+use pyo3::types::{PyDict, PyList, PyString, PyTuple};
 
 /// The library's result: planar or spatial, an outcome or a breakdown.
 pub enum Raw {
@@ -60,6 +62,9 @@ pub struct Outcome {
     pub raw: Raw,
     pub approach_energy: f64,
     pub context: Context,
+    /// The spatial contact-space problem (`impax.resolve` with a 3×3 `W`), for what is
+    /// computed only when read: the hodograph, the invariant rays, the LCP's solutions.
+    pub problem3: Option<ContactProblem3>,
 }
 
 /// The common numbers of a planar or spatial outcome.
@@ -97,6 +102,16 @@ fn num(x: f64) -> f64 {
 }
 
 impl Outcome {
+    /// The hodograph of a Darboux–Keller law on a spatial contact problem that resolved.
+    fn hodograph_points(&self) -> Option<Vec<[f64; 4]>> {
+        match (&self.problem3, &self.raw) {
+            (Some(p), Raw::Spatial(Ok(_))) if self.law.is_darboux_keller() => {
+                impax::spatial::laws::hodograph(p, self.law).ok()
+            }
+            _ => None,
+        }
+    }
+
     fn common(&self) -> Option<Common<'_>> {
         match &self.raw {
             Raw::Planar(Ok(o)) => Some(Common {
@@ -489,9 +504,75 @@ impl Outcome {
         }
     }
 
+    /// The slip's hodograph `(p_n, v_t1, v_t2, v_n)` at every accepted point of the
+    /// integration (`newton`, `poisson`, `energetic` on a spatial contact problem; `None`
+    /// otherwise or on a breakdown). Computed when read (it integrates the impact again).
+    #[getter]
+    fn hodograph<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyList>>> {
+        match self.hodograph_points() {
+            Some(pts) => Ok(Some(PyList::new(
+                py,
+                pts.iter()
+                    .map(|q| PyTuple::new(py, q.iter().map(|&x| num(x))))
+                    .collect::<PyResult<Vec<_>>>()?,
+            )?)),
+            None => Ok(None),
+        }
+    }
+
+    /// The spatial problem's invariant rays: a list of `{"angle_deg", "kind", "rate"}`
+    /// (`kind` `centripetal` or `centrifugal`, `rate = ŝ·g`), or `"all"` when every
+    /// direction is invariant (isotropic `W_tt`, `w_tn = 0`); `None` for other records.
+    #[getter]
+    fn invariant_rays<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyAny>>> {
+        let Some(p) = &self.problem3 else {
+            return Ok(None);
+        };
+        let rays = invariant_rays(p);
+        if let InvariantRays::All = rays {
+            return Ok(Some(PyString::new(py, "all").into_any()));
+        }
+        let list = PyList::empty(py);
+        for r in rays.as_slice() {
+            let d = PyDict::new(py);
+            d.set_item("angle_deg", r.angle.to_degrees())?;
+            d.set_item("kind", r.kind.id())?;
+            d.set_item("rate", r.rate)?;
+            list.append(d)?;
+        }
+        Ok(Some(list.into_any()))
+    }
+
+    /// Every solution of the spatial LCP, least kinetic energy after first (`lcp` on a
+    /// spatial contact problem; `None` otherwise): `kind` (`stick` or `slip`),
+    /// `slip_angle_deg` (slip only), `impulse`, `velocity_after`, `energy_change`.
+    #[getter]
+    fn all_solutions<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyList>>> {
+        let Some(p) = self.problem3.filter(|_| self.law == LawId::Lcp) else {
+            return Ok(None);
+        };
+        let list = PyList::empty(py);
+        for sol in impax::spatial::lcp::solutions(&p) {
+            let d = PyDict::new(py);
+            d.set_item("kind", sol.kind.label())?;
+            d.set_item("impulse", self.frame_dict(py, v3(sol.impulse))?)?;
+            d.set_item(
+                "velocity_after",
+                self.frame_dict(py, v3(sol.velocity_after))?,
+            )?;
+            d.set_item("energy_change", num(sol.energy_change))?;
+            if let Phase3Kind::Slip { to, .. } = sol.kind {
+                d.set_item("slip_angle_deg", to.to_degrees())?;
+            }
+            list.append(d)?;
+        }
+        Ok(Some(list))
+    }
+
     /// The record as the CLI's JSON entry: `impax resolve --json` for a contact-space
-    /// problem, an entry of `results` of `impax compare --json` for a body or a mechanism
-    /// (the spatial entry without `hodograph` and `invariant_rays`).
+    /// problem (a spatial one with `hodograph`, `invariant_rays` and, for `lcp`,
+    /// `all_solutions`), an entry of `results` of `impax compare --json` for a body or a
+    /// mechanism.
     pub fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         let d = PyDict::new(py);
         let velocity_key = match self.context {
@@ -527,6 +608,18 @@ impl Outcome {
                 }
                 d.set_item("phases", PyList::empty(py))?;
             }
+        }
+        if self.problem3.is_some() {
+            let pts = self
+                .hodograph_points()
+                .map(|pts| PyList::new(py, pts.iter().map(|q| q.map(num).to_vec())));
+            d.set_item("hodograph", pts.transpose()?)?;
+            if self.common().is_some() {
+                if let Some(all) = self.all_solutions(py)? {
+                    d.set_item("all_solutions", all)?;
+                }
+            }
+            d.set_item("invariant_rays", self.invariant_rays(py)?)?;
         }
         match &self.context {
             Context::Contact => {}

@@ -37,6 +37,7 @@ pub fn resolve(
                 raw: Raw::Planar(law.resolve(&p)),
                 approach_energy: p.approach_energy(),
                 context: Context::Contact,
+                problem3: None,
             })
         }
         Matrix::Spatial(m) => {
@@ -53,6 +54,7 @@ pub fn resolve(
                 raw: Raw::Spatial(law.resolve3(&p)),
                 approach_energy: p.approach_energy(),
                 context: Context::Contact,
+                problem3: Some(p),
             })
         }
     }

@@ -100,9 +100,26 @@ def test_random_spatial_problems_equal_cli(cli):
         ref = cli.json(*resolve_args(w[i], v[i], mu[i], e[i]))
         for r in ref["results"]:
             law = r["law"]
-            r = {k: x for k, x in r.items() if k not in ("hodograph", "invariant_rays", "all_solutions")}
+            # The whole entry: hodograph, invariant rays and the LCP's solutions too.
             assert_close(impax.resolve(w[i], v[i], mu[i], e[i], law).to_dict(), r, f"row {i} {law}")
+            r = {k: x for k, x in r.items() if k not in ("hodograph", "invariant_rays", "all_solutions")}
             check_batch_row(batches[law], i, r, 3)
+
+
+def test_spatial_hodograph_and_rays_as_attributes(cli):
+    w, v, mu, e = [2.0, 0.6, 0.3, 1.0, -0.2, 1.5], [0.3, 0.8, -1.0], 0.8, 0.7
+    ref = cli.json(*resolve_args(w, v, mu, e), "--law=energetic")
+    o = impax.resolve(w, v, mu, e, "energetic")
+    assert_close([list(q) for q in o.hodograph], ref["hodograph"], "hodograph")
+    assert_close(o.invariant_rays, ref["invariant_rays"], "invariant_rays")
+    # The hodograph starts at v⁻ and ends at the velocity after.
+    assert o.hodograph[0][0] == 0.0 and list(o.hodograph[0][1:]) == v
+    assert_close(list(o.hodograph[-1][1:]), list(o.velocity_after), "end")
+    assert impax.resolve(w, v, mu, e, "whittaker").hodograph is None
+    lcp = impax.resolve(w, v, mu, e, "lcp")
+    assert len(lcp.all_solutions) >= 1 and o.all_solutions is None
+    planar = impax.resolve(SEED_W, SEED_V, 0.4, 0.7, "energetic")
+    assert planar.hodograph is None and planar.invariant_rays is None
 
 
 def test_double_pendulum_equals_cli(cli, tmp_path):

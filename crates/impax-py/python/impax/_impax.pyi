@@ -63,6 +63,20 @@ class Outcome:
     def approach_energy(self) -> float:
         """``½ v⁻ᵀ W⁻¹ v⁻``: the most energy any impulse can remove."""
     @property
+    def hodograph(self) -> list[tuple[float, float, float, float]] | None:
+        """``(p_n, v_t1, v_t2, v_n)`` at every accepted point of the Darboux–Keller
+        integration (``newton``, ``poisson``, ``energetic`` on a spatial contact problem;
+        ``None`` otherwise or on a breakdown). Computed when read."""
+    @property
+    def invariant_rays(self) -> list[dict[str, Any]] | Literal["all"] | None:
+        """The spatial problem's invariant rays, ``{"angle_deg", "kind", "rate"}`` each
+        (``kind`` ``centripetal`` or ``centrifugal``), or ``"all"`` (isotropic ``W_tt``,
+        ``w_tn = 0``); ``None`` for other records."""
+    @property
+    def all_solutions(self) -> list[dict[str, Any]] | None:
+        """Every solution of the spatial LCP, least kinetic energy after first (``lcp`` on
+        a spatial contact problem; ``None`` otherwise)."""
+    @property
     def compression_impulse(self) -> float | None:
         """Normal impulse ``p_c`` at the end of compression (``v_n = 0``), if reached."""
     @property
