@@ -192,60 +192,10 @@ pub(crate) fn polish_in_bracket(
     x
 }
 
-/// A power series kept also in reverse order (`rev[TERMS − 1 − n] = c[n]`), so that the
-/// sums over products of two series run forward through both.
-#[derive(Debug, Clone, Copy)]
-struct Coeffs {
-    c: [f64; TERMS],
-    rev: [f64; TERMS],
-}
-
-impl Coeffs {
-    fn zero() -> Coeffs {
-        Coeffs {
-            c: [0.0; TERMS],
-            rev: [0.0; TERMS],
-        }
-    }
-
-    #[inline]
-    fn set(&mut self, n: usize, v: f64) {
-        self.c[n] = v;
-        self.rev[TERMS - 1 - n] = v;
-    }
-}
-
-/// `Σ a_k b_k` with four partial sums (independent additions).
-#[inline]
-fn dot(a: &[f64], b: &[f64]) -> f64 {
-    let (ca, cb) = (a.chunks_exact(4), b.chunks_exact(4));
-    let tail: f64 = ca
-        .remainder()
-        .iter()
-        .zip(cb.remainder())
-        .map(|(x, y)| x * y)
-        .sum();
-    let mut acc = [0.0; 4];
-    for (x, y) in ca.zip(cb) {
-        for i in 0..4 {
-            acc[i] += x[i] * y[i];
-        }
-    }
-    (acc[0] + acc[2]) + (acc[1] + acc[3]) + tail
-}
-
-/// `Σ_{j=1}^{n−1} a_j b_{n−j}`: the coefficient of `ξⁿ` in a product of series, less the
-/// two terms that involve `a₀` or `b₀`.
-#[inline]
-fn inner(a: &[f64; TERMS], b: &Coeffs, n: usize) -> f64 {
-    if n < 2 {
-        return 0.0;
-    }
-    dot(&a[1..n], &b.rev[TERMS - n..TERMS - 1])
-}
-
-/// `Σ_{j=1}^{n−1} a_j b_{n−j}` for `K` series `b` at once, kept interleaved and in reverse
-/// order (`rev[TERMS − 1 − m] = (b¹_m, …, b^K_m)`).
+/// `Σ_{j=1}^{n−1} a_j b_{n−j}` (the coefficient of `ξⁿ` in a product of series, less the
+/// two terms that involve `a₀` or `b₀`) for `K` series `b` at once, kept interleaved and in
+/// reverse order (`rev[TERMS − 1 − m] = (b¹_m, …, b^K_m)`), so that the sums run forward
+/// through both.
 #[inline]
 fn inner_many<const K: usize>(a: &[f64; TERMS], rev: &[[f64; K]; TERMS], n: usize) -> [f64; K] {
     let mut acc = [0.0; K];
@@ -342,7 +292,8 @@ impl RaySeries {
             trig[TERMS - 1 - n] = v;
             (cs[n], sn[n]) = (v[0], v[1]);
         }
-        let (mut q, mut big_f) = ([0.0; TERMS], Coeffs::zero());
+        // q∘, and F∘ in reverse order.
+        let (mut q, mut big_f) = ([0.0; TERMS], [[0.0; 1]; TERMS]);
         set_trig((&mut trig, &mut cs, &mut sn), 0, [c0, s0, c20, s20]);
         q[0] = q0;
         // φ* is a root of f: F∘₀ = 0 (its value there is round-off).
@@ -354,7 +305,7 @@ impl RaySeries {
             [-s0, c0, -2.0 * s20, 2.0 * c20],
         );
         q[1] = dq0;
-        big_f.set(1, lambda);
+        big_f[TERMS - 2] = [lambda];
         for n in 2..TERMS {
             let inv_n = 1.0 / n as f64;
             let [ic, is, ic2, is2] = inner_many(&nb, &trig, n);
@@ -367,7 +318,8 @@ impl RaySeries {
             );
             let fk = f_of(ck, sk, c2k, s2k);
             let qk = q_of(ck, sk, c2k, s2k);
-            let big_fk = (fk - inner(&q, &big_f, n)) / q0;
+            let [qf] = inner_many(&q, &big_f, n);
+            let big_fk = (fk - qf) / q0;
             let bn = big_fk / (lambda * (n - 1) as f64);
             b[n] = bn;
             nb[n] = n as f64 * bn;
@@ -382,12 +334,12 @@ impl RaySeries {
                 ],
             );
             q[n] = qk + bn * dq0;
-            big_f.set(n, big_fk + lambda * bn);
+            big_f[TERMS - 1 - n] = [big_fk + lambda * bn];
         }
         // (1, C, S)/q∘ at once, in reverse order too for the sums.
         let inv_q0 = 1.0 / q0;
         let mut quot = [[0.0; 3]; TERMS];
-        let (mut r, mut rc, mut rs) = (Coeffs::zero(), [0.0; TERMS], [0.0; TERMS]);
+        let (mut r, mut rc, mut rs) = ([0.0; TERMS], [0.0; TERMS], [0.0; TERMS]);
         for n in 0..TERMS {
             let acc = inner_many(&q, &quot, n);
             let first = quot[TERMS - 1];
@@ -397,14 +349,13 @@ impl RaySeries {
                 (num[k] - lead - acc[k]) * inv_q0
             });
             quot[TERMS - 1 - n] = v;
-            r.set(n, v[0]);
-            (rc[n], rs[n]) = (v[1], v[2]);
+            (r[n], rc[n], rs[n]) = (v[0], v[1], v[2]);
         }
         let mut kappa = [0.0; TERMS];
         let (mut inv1, mut inv2) = ([0.0; TERMS], [0.0; TERMS]);
         let mut ka = [0.0; TERMS];
         for k in 0..TERMS {
-            kappa[k] = wnn * r.c[k] - mu * (field.w1 * rc[k] + field.w2 * rs[k]);
+            kappa[k] = wnn * r[k] - mu * (field.w1 * rc[k] + field.w2 * rs[k]);
             let kl = k as f64 * lambda;
             inv1[k] = 1.0 / (1.0 + kl);
             inv2[k] = 1.0 / (2.0 + kl);
@@ -412,12 +363,12 @@ impl RaySeries {
         }
         let mut kr = [0.0; TERMS];
         for n in 0..TERMS {
-            kr[n] = ka[0] * r.c[n] + inner(&ka, &r, n);
+            // (1/q∘ is the first lane of the quotients.)
+            kr[n] = ka[0] * r[n] + inner_many(&ka, &quot, n)[0];
             if n > 0 {
-                kr[n] += ka[n] * r.c[0];
+                kr[n] += ka[n] * r[0];
             }
         }
-        let r = r.c;
         let all = b.iter().chain(&r).chain(&rc).chain(&rs).chain(&kr);
         if !all.clone().all(|x| x.is_finite()) {
             return None;
