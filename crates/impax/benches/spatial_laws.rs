@@ -1,8 +1,8 @@
 //! Spatial Darboux–Keller impacts (energetic): one with swirl then stick, one whose slip
 //! halts and resumes at once along the centrifugal ray, one whose slip swings through a
-//! near-zero and leaves along a centrifugal ray, one slipping throughout with swirl, and the
-//! sphere (no swirl; straight run in closed form); and the engine rule `lcp` on the same
-//! problems.
+//! near-zero and leaves along a centrifugal ray, one whose slip turns 120° throughout, one
+//! slipping throughout with a mild swirl (4°), and the sphere (no swirl; straight run in
+//! closed form); and the engine rule `lcp` on the same problems.
 //! Run: `cargo bench -p impax --bench spatial_laws`.
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
@@ -33,6 +33,16 @@ pub fn cases() -> Vec<(&'static str, ContactProblem3)> {
                 [1.0, 0.3, 0.8, 2.0, -0.5, 1.5],
                 [-0.4, 0.3, -1.0],
                 0.3,
+                0.7,
+            )
+            .unwrap(),
+        ),
+        (
+            "strong-swirl",
+            ContactProblem3::from_upper(
+                [1.16, 0.18, -0.23, 0.75, 0.47, 0.91],
+                [0.6, -0.25, -1.0],
+                0.17,
                 0.7,
             )
             .unwrap(),

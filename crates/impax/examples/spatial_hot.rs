@@ -15,9 +15,17 @@ fn case(name: &str) -> ContactProblem3 {
             0.7,
         ),
         "near-zero-swirl" => ([1.0, 0.3, 0.8, 2.0, -0.5, 1.5], [-0.4, 0.3, -1.0], 0.3, 0.7),
+        "strong-swirl" => (
+            [1.16, 0.18, -0.23, 0.75, 0.47, 0.91],
+            [0.6, -0.25, -1.0],
+            0.17,
+            0.7,
+        ),
         "swirl-slip" => (w, [2.0, -1.5, -1.0], 0.3, 0.7),
         "sphere" => ([3.5, 0.0, 0.0, 3.5, 0.0, 1.0], [0.5, 0.2, -0.866], 0.4, 0.7),
-        _ => panic!("cases: swirl-stick, halt-resume, near-zero-swirl, swirl-slip, sphere"),
+        _ => panic!(
+            "cases: swirl-stick, halt-resume, near-zero-swirl, strong-swirl, swirl-slip, sphere"
+        ),
     };
     ContactProblem3::from_upper(w, v, mu, e).expect("valid")
 }
