@@ -424,6 +424,16 @@ pub(super) struct Context<'a> {
 /// Run the slip from `pt` in the angle variable to its end, or hand it back.
 /// `straight` ends the slip in closed form once its direction is on a centripetal ray to the
 /// last bit of the result (`None` while it is not).
+/// The factor on a rejected panel's width for its error estimate `err > 1` (the tail falls
+/// as `h^N`), within `[0.2, 0.9]`; `0.25` if the estimate is not finite.
+fn reject_factor(err: f64) -> f64 {
+    if err.is_finite() {
+        (0.9 * err.powf(-1.0 / N as f64)).clamp(0.2, 0.9)
+    } else {
+        0.25
+    }
+}
+
 pub(super) fn run(
     cx: &Context,
     pt: &mut Point,
@@ -522,6 +532,16 @@ pub(super) fn run(
             continue;
         }
         let du: [f64; M] = std::array::from_fn(|j| nodes[j].q * nodes[j].rho);
+        // The error test on `u` first (part of the test below): a panel that fails it is
+        // rejected before `σ` and the quadratures are formed.
+        let err_u = half * lb.tail(&du) / rtol;
+        if !(err_u <= 1.0) {
+            h *= reject_factor(err_u);
+            if h < 1e-6 {
+                return Ok(Exit::Handoff);
+            }
+            continue;
+        }
         let cu = lb.cumulative(&du);
         let sig: [f64; M] = std::array::from_fn(|j| {
             if j == 0 {
@@ -556,18 +576,14 @@ pub(super) fn run(
             }
         });
         let dn: [f64; M] = std::array::from_fn(|j| vn[j] * dp[j]);
-        let err = (half * lb.tail(&du) / rtol)
+        let err = err_u
             .max(rel(&dp, base.p, 1.0))
             .max(rel(&d1, base.pt.x, cx.mu))
             .max(rel(&d2, base.pt.y, cx.mu))
             .max(rel(&dw, base.wt, cx.mu))
             .max(rel(&dn, base.wn, 1.0));
         if !(err <= 1.0) {
-            h *= if err.is_finite() {
-                (0.9 * err.powf(-1.0 / N as f64)).clamp(0.2, 0.9)
-            } else {
-                0.25
-            };
+            h *= reject_factor(err);
             if h < 1e-6 {
                 return Ok(Exit::Handoff);
             }
