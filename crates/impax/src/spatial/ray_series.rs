@@ -281,31 +281,32 @@ impl RaySeries {
         let mut b = [0.0; TERMS];
         // n b_n, for the derivative recurrences.
         let mut nb = [0.0; TERMS];
-        // (C, S, C₂, S₂) in reverse order; C and S also forward.
+        // (C, S, C₂, S₂) in reverse order.
         let mut trig = [[0.0; 4]; TERMS];
-        let (mut cs, mut sn) = ([0.0; TERMS], [0.0; TERMS]);
-        fn set_trig(
-            (trig, cs, sn): (&mut [[f64; 4]; TERMS], &mut [f64; TERMS], &mut [f64; TERMS]),
-            n: usize,
-            v: [f64; 4],
-        ) {
-            trig[TERMS - 1 - n] = v;
-            (cs[n], sn[n]) = (v[0], v[1]);
-        }
-        // q∘, and F∘ in reverse order.
-        let (mut q, mut big_f) = ([0.0; TERMS], [[0.0; 1]; TERMS]);
-        set_trig((&mut trig, &mut cs, &mut sn), 0, [c0, s0, c20, s20]);
+        // q∘; and F∘ with the quotients (1, C, S)/q∘, which are all sums against q∘, in one
+        // reverse-order array of four lanes.
+        let inv_q0 = 1.0 / q0;
+        let mut q = [0.0; TERMS];
+        let mut fq = [[0.0; 4]; TERMS];
+        let (mut r, mut rc, mut rs) = ([0.0; TERMS], [0.0; TERMS], [0.0; TERMS]);
+        // The quotients' coefficient n from the sum `acc` of its middle terms:
+        // (num_n − q_n quot_0 − acc)/q_0 (`first` = quot_0, zero for n = 0 itself).
+        let quotient = |qn: f64, first: [f64; 3], num: [f64; 3], acc: [f64; 3]| -> [f64; 3] {
+            std::array::from_fn(|k| (num[k] - qn * first[k] - acc[k]) * inv_q0)
+        };
+        trig[TERMS - 1] = [c0, s0, c20, s20];
         q[0] = q0;
+        let first = quotient(q0, [0.0; 3], [1.0, c0, s0], [0.0; 3]);
         // φ* is a root of f: F∘₀ = 0 (its value there is round-off).
+        fq[TERMS - 1] = [0.0, first[0], first[1], first[2]];
+        (r[0], rc[0], rs[0]) = (first[0], first[1], first[2]);
         b[1] = 1.0;
         nb[1] = 1.0;
-        set_trig(
-            (&mut trig, &mut cs, &mut sn),
-            1,
-            [-s0, c0, -2.0 * s20, 2.0 * c20],
-        );
+        trig[TERMS - 2] = [-s0, c0, -2.0 * s20, 2.0 * c20];
         q[1] = dq0;
-        big_f[TERMS - 2] = [lambda];
+        let v = quotient(dq0, first, [0.0, -s0, c0], [0.0; 3]);
+        fq[TERMS - 2] = [lambda, v[0], v[1], v[2]];
+        (r[1], rc[1], rs[1]) = (v[0], v[1], v[2]);
         for n in 2..TERMS {
             let inv_n = 1.0 / n as f64;
             let [ic, is, ic2, is2] = inner_many(&nb, &trig, n);
@@ -318,37 +319,16 @@ impl RaySeries {
             );
             let fk = f_of(ck, sk, c2k, s2k);
             let qk = q_of(ck, sk, c2k, s2k);
-            let [qf] = inner_many(&q, &big_f, n);
-            let big_fk = (fk - qf) / q0;
+            let [qf, a1, a2, a3] = inner_many(&q, &fq, n);
+            let big_fk = (fk - qf) * inv_q0;
             let bn = big_fk / (lambda * (n - 1) as f64);
             b[n] = bn;
             nb[n] = n as f64 * bn;
-            set_trig(
-                (&mut trig, &mut cs, &mut sn),
-                n,
-                [
-                    ck - bn * s0,
-                    sk + bn * c0,
-                    c2k - 2.0 * bn * s20,
-                    s2k + 2.0 * bn * c20,
-                ],
-            );
+            let (cn, sn) = (ck - bn * s0, sk + bn * c0);
+            trig[TERMS - 1 - n] = [cn, sn, c2k - 2.0 * bn * s20, s2k + 2.0 * bn * c20];
             q[n] = qk + bn * dq0;
-            big_f[TERMS - 1 - n] = [big_fk + lambda * bn];
-        }
-        // (1, C, S)/q∘ at once, in reverse order too for the sums.
-        let inv_q0 = 1.0 / q0;
-        let mut quot = [[0.0; 3]; TERMS];
-        let (mut r, mut rc, mut rs) = ([0.0; TERMS], [0.0; TERMS], [0.0; TERMS]);
-        for n in 0..TERMS {
-            let acc = inner_many(&q, &quot, n);
-            let first = quot[TERMS - 1];
-            let num = [if n == 0 { 1.0 } else { 0.0 }, cs[n], sn[n]];
-            let v: [f64; 3] = std::array::from_fn(|k| {
-                let lead = if n > 0 { q[n] * first[k] } else { 0.0 };
-                (num[k] - lead - acc[k]) * inv_q0
-            });
-            quot[TERMS - 1 - n] = v;
+            let v = quotient(q[n], first, [0.0, cn, sn], [a1, a2, a3]);
+            fq[TERMS - 1 - n] = [big_fk + lambda * bn, v[0], v[1], v[2]];
             (r[n], rc[n], rs[n]) = (v[0], v[1], v[2]);
         }
         let mut kappa = [0.0; TERMS];
@@ -361,16 +341,18 @@ impl RaySeries {
             inv2[k] = 1.0 / (2.0 + kl);
             ka[k] = kappa[k] * inv1[k];
         }
+        // κ/(1 + jλ) ∗ r, row by row (contiguous multiply-adds that vectorise).
         let mut kr = [0.0; TERMS];
-        for n in 0..TERMS {
-            // (1/q∘ is the first lane of the quotients.)
-            kr[n] = ka[0] * r[n] + inner_many(&ka, &quot, n)[0];
-            if n > 0 {
-                kr[n] += ka[n] * r[0];
+        for (j, &kj) in ka.iter().enumerate() {
+            for (o, &rm) in kr[j..].iter_mut().zip(&r) {
+                *o += kj * rm;
             }
         }
-        let all = b.iter().chain(&r).chain(&rc).chain(&rs).chain(&kr);
-        if !all.clone().all(|x| x.is_finite()) {
+        // Every coefficient finite (a NaN or an infinity anywhere makes the sum one).
+        let total: f64 = (0..TERMS)
+            .map(|k| b[k] + r[k] + rc[k] + rs[k] + kr[k])
+            .sum();
+        if !total.is_finite() {
             return None;
         }
         Some(RaySeries {
