@@ -18,8 +18,9 @@
 //! (`u = ln σ`, `q = ŝ·g`) maps the sector onto the whole real line. It is rational in
 //! `e^x`: the half-angle vector `h = e_b' + e^x e_a'` (`e'` the unit vectors at half the
 //! rays' angles) points at `θ/2`, so `ŝ = (h_x² − h_y², 2 h_x h_y)/|h|²` and
-//! `dθ/dx = 2 e^x sin(D/2)/|h|²` (`e^{−x}` and `h e^{−x}` for `x > 0`): one exponential per
-//! node and no sine or cosine. Near either ray `|f| ≈ |f'| δ`, so `ρ` stays bounded and
+//! `dθ/dx = 2 e^x sin(D/2)/|h|²` (`e^{−x}` and `h e^{−x}` for `x > 0`): no sine or cosine,
+//! and nine exponentials for a panel's seventeen nodes (they are symmetric about its
+//! middle). Near either ray `|f| ≈ |f'| δ`, so `ρ` stays bounded and
 //! `σ ∝ e^{κ x}`: every integrand is smooth on the scale of one unit of `x` — a swing of
 //! the direction through a near-zero pass, the approach to a halt, a slip leaving a ray or
 //! growing along one, a nearly frozen slip alike. The only nonlinear equation (the
@@ -335,12 +336,47 @@ struct Node {
 /// `δ_a/2` times `|h|` and `e^{−|x|}`: `(cos(δ_b/2), sin(δ_b/2)) = h/|h|`.
 #[inline]
 fn half_vectors(cd: f64, sd: f64, x: f64) -> (f64, f64, f64, f64, f64) {
+    half_vectors_with(cd, sd, x, (-x.abs()).exp())
+}
+
+/// [`half_vectors`] given `t = e^{−|x|}`.
+#[inline]
+fn half_vectors_with(cd: f64, sd: f64, x: f64, t: f64) -> (f64, f64, f64, f64, f64) {
     if x <= 0.0 {
-        let z = x.exp();
-        (1.0 + z * cd, z * sd, sd, cd + z, z)
+        (1.0 + t * cd, t * sd, sd, cd + t, t)
     } else {
-        let w = (-x).exp();
-        (w + cd, sd, w * sd, 1.0 + w * cd, w)
+        (t + cd, sd, t * sd, 1.0 + t * cd, t)
+    }
+}
+
+/// `e^{s x_j}` at the panel's nodes `x_j = x_c + L t_j` (`x_c` its middle, `L` half its
+/// width, `s` the sign that makes `e^{s x_c} = e^{−|x_c|}`) from nine exponentials instead
+/// of seventeen: the nodes are symmetric about the middle (`t_{N−j} = −t_j`), so with
+/// `a_j = e^{L t_j}` (`j < N/2`), `e^{s x_j} = e^{−|x_c|} a_j^{±1}`. That is `e^{−|x_j|}` where
+/// `x_j` is on the side of `x_c`, its reciprocal where it is not ([`e_abs`]). (Entry 0 is
+/// not filled: the first node is the last panel's end.)
+fn node_exponentials(xc: f64, l: f64, t: &[f64; M]) -> [f64; M] {
+    let ec = (-xc.abs()).exp();
+    let mut out = [0.0; M];
+    for j in 0..N / 2 {
+        let a = (l * t[j]).exp();
+        (out[j], out[N - j]) = if xc <= 0.0 {
+            (ec * a, ec / a)
+        } else {
+            (ec / a, ec * a)
+        };
+    }
+    out[N / 2] = ec;
+    out
+}
+
+/// `e^{−|x|}` from `p = e^{s x}` of [`node_exponentials`] (`x_c` the panel's middle).
+#[inline]
+fn e_abs(x: f64, xc: f64, p: f64) -> f64 {
+    if (x <= 0.0) == (xc <= 0.0) {
+        p
+    } else {
+        1.0 / p
     }
 }
 
@@ -355,7 +391,13 @@ impl Fan {
     /// sector (round-off at the very ends).
     #[inline]
     fn node(&self, field: &Field, x: f64) -> Option<Node> {
-        let (hx, hy, sa, ca, t) = half_vectors(self.cd, self.sd, x);
+        self.node_with(field, x, (-x.abs()).exp())
+    }
+
+    /// [`Fan::node`] given `e^{−|x|}`.
+    #[inline]
+    fn node_with(&self, field: &Field, x: f64, e: f64) -> Option<Node> {
+        let (hx, hy, sa, ca, t) = half_vectors_with(self.cd, self.sd, x, e);
         let inv = 1.0 / (hx * hx + hy * hy);
         // The offset ε from the nearer ray, by its sine and cosine (double half-angles).
         let (se, ce, ray) = if x <= 0.0 {
@@ -515,8 +557,11 @@ pub(super) fn run(
         let half = 0.5 * h;
         let mut nodes = [n0; M];
         let mut ok = true;
+        let xc = x + half;
+        let ex = node_exponentials(xc, half, &lb.t);
         for (j, nd) in nodes.iter_mut().enumerate().skip(1) {
-            match fan.node(field, x + half * (1.0 + lb.t[j])) {
+            let xj = x + half * (1.0 + lb.t[j]);
+            match fan.node_with(field, xj, e_abs(xj, xc, ex[j])) {
                 Some(n) => *nd = n,
                 None => {
                     ok = false;
@@ -839,6 +884,34 @@ mod tests {
                         "ε {eps}: {expanded} vs {direct}"
                     );
                 }
+            }
+        }
+    }
+
+    /// The nodes' exponentials from the symmetric products are `e^{−|x_j|}` to a few ulp, on
+    /// panels left of, right of and across `x = 0`.
+    #[test]
+    fn node_exponentials_are_the_exponentials_of_the_nodes() {
+        let lb = lobatto();
+        for &(x, h) in &[
+            (-7.3, 1.1),
+            (-0.4, 0.9),
+            (-0.6, 0.6),
+            (0.0, 1.2),
+            (2.5, 4.0),
+            (-3.0, 5.5),
+        ] {
+            let half = 0.5 * h;
+            let xc = x + half;
+            let ex = node_exponentials(xc, half, &lb.t);
+            for j in 1..M {
+                let xj = x + half * (1.0 + lb.t[j]);
+                let got = e_abs(xj, xc, ex[j]);
+                let want = (-xj.abs()).exp();
+                assert!(
+                    (got - want).abs() <= 4.0 * f64::EPSILON * want,
+                    "x {x} h {h} node {j}: {got} vs {want}"
+                );
             }
         }
     }
