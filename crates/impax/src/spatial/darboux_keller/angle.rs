@@ -904,9 +904,9 @@ mod tests {
             let half = 0.5 * h;
             let xc = x + half;
             let ex = node_exponentials(xc, half, &lb.t);
-            for j in 1..M {
-                let xj = x + half * (1.0 + lb.t[j]);
-                let got = e_abs(xj, xc, ex[j]);
+            for (j, (&tj, &p)) in lb.t.iter().zip(&ex).enumerate().skip(1) {
+                let xj = x + half * (1.0 + tj);
+                let got = e_abs(xj, xc, p);
                 let want = (-xj.abs()).exp();
                 assert!(
                     (got - want).abs() <= 4.0 * f64::EPSILON * want,
