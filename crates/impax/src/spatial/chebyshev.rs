@@ -144,6 +144,26 @@ impl Lobatto {
         dot(&self.tail[0]).abs() + dot(&self.tail[1]).abs()
     }
 
+    /// [`Lobatto::tail`] and the largest `|v_j|` of `K` integrands in one pass.
+    #[inline]
+    pub(crate) fn tails_and_sizes<const K: usize>(
+        &self,
+        vs: [&[f64; M]; K],
+    ) -> ([f64; K], [f64; K]) {
+        let (mut a, mut b, mut size) = ([0.0; K], [0.0; K], [0.0f64; K]);
+        #[allow(clippy::needless_range_loop)] // j indexes the two rows and every integrand
+        for j in 0..M {
+            let (ra, rb) = (self.tail[0][j], self.tail[1][j]);
+            for k in 0..K {
+                let x = vs[k][j];
+                a[k] += ra * x;
+                b[k] += rb * x;
+                size[k] = size[k].max(x.abs());
+            }
+        }
+        (std::array::from_fn(|k| a[k].abs() + b[k].abs()), size)
+    }
+
     /// The Lagrange basis at `t`: `ℓ_k(t)`, so that the interpolant of `v` at `t` is
     /// `Σ ℓ_k(t) v_k` (barycentric formula; exact at the nodes).
     #[inline]
@@ -214,6 +234,18 @@ mod tests {
         // A function with a nearby singularity has a visible tail.
         let w: [f64; M] = std::array::from_fn(|j| 1.0 / (1.05 - l.t[j]));
         assert!(l.tail(&w) > 1e-3);
+    }
+
+    #[test]
+    fn tails_in_one_pass_are_the_tails_one_by_one() {
+        let l = lobatto();
+        let a: [f64; M] = std::array::from_fn(|j| 1.0 / (1.05 - l.t[j]));
+        let b: [f64; M] = std::array::from_fn(|j| -(3.0 * l.t[j]).cos());
+        let (tails, sizes) = l.tails_and_sizes([&a, &b]);
+        for (k, v) in [a, b].iter().enumerate() {
+            assert_eq!(tails[k], l.tail(v));
+            assert_eq!(sizes[k], v.iter().fold(0.0f64, |m, x| m.max(x.abs())));
+        }
     }
 
     #[test]

@@ -602,14 +602,6 @@ pub(super) fn run(
         // dv_n = (w_nn − μ w_tn·ŝ) dp_n.
         let dv: [f64; M] =
             std::array::from_fn(|j| (cx.wnn - cx.mu * cx.wtn.dot(&nodes[j].s)) * dp[j]);
-        // The error test: the last Chebyshev coefficients of each integrand against the
-        // tolerance on `u` (absolute: relative on σ) and relative on every other quantity
-        // (its value at the start plus the size of its increment over the panel).
-        // (`k` is the factor of the integral in the quantity.)
-        let rel = |v: &[f64; M], at: f64, k: f64| {
-            let size = v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
-            k * half * lb.tail(v) / (rtol * (at.abs() + k * h * size))
-        };
         let cp = lb.cumulative(&dp);
         let cv = lb.cumulative(&dv);
         let pn: [f64; M] = std::array::from_fn(|j| base.p + half * cp[j]);
@@ -621,12 +613,20 @@ pub(super) fn run(
             }
         });
         let dn: [f64; M] = std::array::from_fn(|j| vn[j] * dp[j]);
+        // The error test: the last Chebyshev coefficients of each integrand against the
+        // tolerance on `u` (absolute: relative on σ; tested above) and relative on every
+        // other quantity (its value at the start plus the size of its increment over the
+        // panel). (`k` is the factor of the integral in the quantity.)
+        let (tails, sizes) = lb.tails_and_sizes([&dp, &d1, &d2, &dw, &dn]);
+        let rel = |i: usize, at: f64, k: f64| {
+            k * half * tails[i] / (rtol * (at.abs() + k * h * sizes[i]))
+        };
         let err = err_u
-            .max(rel(&dp, base.p, 1.0))
-            .max(rel(&d1, base.pt.x, cx.mu))
-            .max(rel(&d2, base.pt.y, cx.mu))
-            .max(rel(&dw, base.wt, cx.mu))
-            .max(rel(&dn, base.wn, 1.0));
+            .max(rel(0, base.p, 1.0))
+            .max(rel(1, base.pt.x, cx.mu))
+            .max(rel(2, base.pt.y, cx.mu))
+            .max(rel(3, base.wt, cx.mu))
+            .max(rel(4, base.wn, 1.0));
         if !(err <= 1.0) {
             h *= reject_factor(err);
             if h < 1e-6 {
