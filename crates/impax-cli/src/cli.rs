@@ -17,7 +17,8 @@ pub enum Command {
     /// sphere of Liu 2012: α = 30°, e = 0.7, μ = 0.4, γ = 0; or a built-in mechanism such as
     /// `double-pendulum`).
     Compare(CompareArgs),
-    /// Resolve a planar contact-space problem (W, v⁻, μ, e) directly.
+    /// Resolve a contact-space problem (W, v⁻, μ, e) directly: planar (W of 3 numbers, v⁻
+    /// of 2) or spatial (W of 6, v⁻ of 3).
     Resolve(ResolveArgs),
     /// Reproduce a source paper's numbered results beside impax's values.
     Paper(PaperArgs),
@@ -366,11 +367,18 @@ pub struct AuditArgs {
 
 #[derive(Debug, Args)]
 pub struct ResolveArgs {
-    /// Contact-space inverse inertia W as WTT,WTN,WNN (symmetric positive definite).
-    #[arg(long, allow_hyphen_values = true, value_name = "WTT,WTN,WNN")]
+    /// Contact-space inverse inertia W (symmetric positive definite): planar WTT,WTN,WNN, or
+    /// spatial W11,W12,W13,W22,W23,W33 (the upper triangle row by row; tangents first,
+    /// normal last).
+    #[arg(
+        long,
+        allow_hyphen_values = true,
+        value_name = "WTT,WTN,WNN | W11,...,W33"
+    )]
     pub w: String,
-    /// Pre-impact contact velocity as VT,VN (VN < 0: approach).
-    #[arg(long, allow_hyphen_values = true, value_name = "VT,VN")]
+    /// Pre-impact contact velocity (normal component < 0: approach): planar VT,VN, or
+    /// spatial V1,V2,VN.
+    #[arg(long, allow_hyphen_values = true, value_name = "VT,VN | V1,V2,VN")]
     pub v: String,
     /// Coulomb friction coefficient μ ≥ 0.
     #[arg(long, allow_hyphen_values = true)]
