@@ -466,6 +466,13 @@ pub(super) struct Context<'a> {
 /// Run the slip from `pt` in the angle variable to its end, or hand it back.
 /// `straight` ends the slip in closed form once its direction is on a centripetal ray to the
 /// last bit of the result (`None` while it is not).
+/// The order in `h` assumed when an accepted panel's successor is sized: lower than the
+/// panel's `N`, because the singularities that limit a panel (complex roots of `f`, the
+/// map's poles at `Im x = ±(π − D/2)`) lie behind it as the panels move on, so the tail grows
+/// more slowly than `h^N` (over 4,000 random problems, 11 is best among 9–16: 1.8 % fewer
+/// instructions than 16, the 120° swirl and a near-zero swing 0.5 % and 2.3 % fewer).
+const GROWTH_ORDER: f64 = 11.0;
+
 /// The factor on a rejected panel's width for its error estimate `err > 1` (the tail falls
 /// as `h^N`), within `[0.2, 0.9]`; `0.25` if the estimate is not finite.
 fn reject_factor(err: f64) -> f64 {
@@ -735,7 +742,7 @@ pub(super) fn run(
         x += h;
         u0 += half * cu[N];
         n0 = nodes[N];
-        h *= (0.9 * err.max(1e-30).powf(-1.0 / N as f64)).min(4.0);
+        h *= (0.9 * err.max(1e-30).powf(-1.0 / GROWTH_ORDER)).min(4.0);
         let da = fan.delta_ahead(x);
         if qa < 0.0 {
             if let Some(end) = straight(pt, ev) {
