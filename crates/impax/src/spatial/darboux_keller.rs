@@ -294,12 +294,25 @@ pub fn integrate(
     opts: &SpatialOptions,
     observe: &mut impl FnMut(f64, Vec3),
 ) -> Result<PathEnd, BreakdownReason> {
+    integrate_with(problem, term, opts, true, observe)
+}
+
+/// [`integrate`], told whether `observe` does anything: when it does not (`observing`
+/// false), the points inside a panel of the angle variable carry `p_n` only where an event
+/// reads it, and the cumulative integral for it is formed only there.
+pub(crate) fn integrate_with(
+    problem: &ContactProblem3,
+    term: Termination,
+    opts: &SpatialOptions,
+    observing: bool,
+    observe: &mut impl FnMut(f64, Vec3),
+) -> Result<PathEnd, BreakdownReason> {
     let v = problem.velocity();
     let w = problem.w();
     let a = rescale_factor(v.amax());
     let b = rescale_factor(w.amax());
     if a == 1.0 && b == 1.0 {
-        return integrate_scaled(problem, term, opts, observe);
+        return integrate_scaled(problem, term, opts, observing, observe);
     }
     let upper = [
         w[(0, 0)],
@@ -318,7 +331,9 @@ pub fn integrate(
     )
     .map_err(|_| BreakdownReason::NoSeparation)?;
     let (kp, kv, kw) = (b / a, 1.0 / a, b / (a * a));
-    let mut end = integrate_scaled(&scaled, term, opts, &mut |p, v| observe(p * kp, v * kv))?;
+    let mut end = integrate_scaled(&scaled, term, opts, observing, &mut |p, v| {
+        observe(p * kp, v * kv)
+    })?;
     end.impulse *= kp;
     end.velocity *= kv;
     end.compression_impulse = end.compression_impulse.map(|x| x * kp);
@@ -335,6 +350,7 @@ fn integrate_scaled(
     problem: &ContactProblem3,
     term: Termination,
     opts: &SpatialOptions,
+    observing: bool,
     observe: &mut impl FnMut(f64, Vec3),
 ) -> Result<PathEnd, BreakdownReason> {
     let wtt: Mat2 = problem.wtt();
@@ -424,7 +440,7 @@ fn integrate_scaled(
     // ---- Stage 1: initial slip ----
     if pt.vt.x != 0.0 || pt.vt.y != 0.0 {
         let stage = slip_stage(
-            &wtt, wtn, wnn, mu, scales, &mut pt, &mut ev, &mut steps, observe,
+            &wtt, wtn, wnn, mu, scales, &mut pt, &mut ev, &mut steps, observing, observe,
         )?;
         match stage {
             SlipEnd::Terminated { phi } => {
@@ -1022,6 +1038,7 @@ fn slip_stage(
     pt: &mut Point,
     ev: &mut Events,
     steps: &mut u32,
+    observing: bool,
     observe: &mut impl FnMut(f64, Vec3),
 ) -> Result<SlipEnd, BreakdownReason> {
     // State in p-mode: [vt1, vt2, vn, pt1, pt2, wn, wt].
@@ -1233,6 +1250,7 @@ fn slip_stage(
                             max_steps,
                             e: ev.e,
                             vn0: vn_start,
+                            observing,
                         };
                         let before = *steps;
                         let mut straight = |pt: &mut Point, ev: &mut Events| {

@@ -2,7 +2,7 @@
 //! `energetic` by the Darboux–Keller integration ([`super::darboux_keller`]), `lcp` by
 //! [`super::lcp`].
 
-use super::darboux_keller::{integrate, PathEnd, SpatialOptions, Termination};
+use super::darboux_keller::{integrate_with, PathEnd, SpatialOptions, Termination};
 use super::outcome::{Detail3, Outcome3, Phase3Kind, Phases3, Resolution3};
 use super::ContactProblem3;
 use crate::law::LawId;
@@ -222,6 +222,17 @@ pub fn darboux_keller_observed_with(
     opts: &SpatialOptions,
     observe: &mut impl FnMut(f64, Vec3),
 ) -> Resolution3 {
+    darboux_keller(problem, law, opts, true, observe)
+}
+
+/// The Darboux–Keller laws, told whether `observe` does anything.
+fn darboux_keller(
+    problem: &ContactProblem3,
+    law: LawId,
+    opts: &SpatialOptions,
+    observing: bool,
+    observe: &mut impl FnMut(f64, Vec3),
+) -> Resolution3 {
     let term = match law {
         LawId::Newton => Termination::Newton,
         LawId::Poisson => Termination::Poisson,
@@ -233,8 +244,8 @@ pub fn darboux_keller_observed_with(
             })
         }
     };
-    let end =
-        integrate(problem, term, opts, observe).map_err(|reason| Breakdown { law, reason })?;
+    let end = integrate_with(problem, term, opts, observing, observe)
+        .map_err(|reason| Breakdown { law, reason })?;
     let detail = Detail3::DarbouxKeller {
         slip_halt: end.slip_halt,
         second_compression: end.second_compression,
@@ -256,7 +267,7 @@ pub fn resolve_with(law: LawId, problem: &ContactProblem3, opts: &SpatialOptions
         LawId::Whittaker => whittaker(problem),
         LawId::Brach => brach(problem),
         LawId::Newton | LawId::Poisson | LawId::Energetic => {
-            darboux_keller_observed_with(problem, law, opts, &mut |_, _| {})
+            darboux_keller(problem, law, opts, false, &mut |_, _| {})
         }
         LawId::Lcp => super::lcp::resolve(problem),
         LawId::TwoPhase | LawId::Smith | LawId::SmithCentre => Err(Breakdown {

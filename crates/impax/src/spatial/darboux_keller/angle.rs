@@ -436,6 +436,9 @@ impl Fan {
     }
 }
 
+/// The cumulative integrals of `dp_n`, `dW_n` and `dW_t/(−μ)` at a panel's nodes.
+type Dense = ([f64; M], [f64; M], [f64; M]);
+
 /// How the stage in the angle variable ended.
 pub(super) enum Exit {
     /// The slip stage ended (terminated or halted).
@@ -461,6 +464,9 @@ pub(super) struct Context<'a> {
     pub e: f64,
     /// The normal velocity before the impact.
     pub vn0: f64,
+    /// Whether the observer does anything (else `p_n` inside a panel only where an event
+    /// reads it).
+    pub observing: bool,
 }
 
 /// Run the slip from `pt` in the angle variable to its end, or hand it back.
@@ -609,9 +615,7 @@ pub(super) fn run(
         // dv_n = (w_nn − μ w_tn·ŝ) dp_n.
         let dv: [f64; M] =
             std::array::from_fn(|j| (cx.wnn - cx.mu * cx.wtn.dot(&nodes[j].s)) * dp[j]);
-        let cp = lb.cumulative(&dp);
         let cv = lb.cumulative(&dv);
-        let pn: [f64; M] = std::array::from_fn(|j| base.p + half * cp[j]);
         let vn: [f64; M] = std::array::from_fn(|j| {
             if j == 0 {
                 base.vn
@@ -641,27 +645,34 @@ pub(super) fn run(
             }
             continue;
         }
-        // The works at every node only where an event can read them (the energetic
-        // termination once compression has ended, or an event inside the panel); else at
-        // the panel's end only. The tangential impulse inside the panel only at an event.
-        let all_works = || (lb.cumulative(&dn), lb.cumulative(&dw));
-        let mut works =
-            (ev.pc.is_some() && matches!(ev.term, Termination::Energetic)).then(all_works);
+        // `p_n` and the works at every node (`dense`) only where something reads them: the
+        // observer, the termination once compression has ended (Poisson's reads `p_n`, the
+        // energetic one `W_n`), or an event inside the panel; else at the panel's end only.
+        // The tangential impulse inside the panel only at an event.
+        let all_dense = || (lb.cumulative(&dp), lb.cumulative(&dn), lb.cumulative(&dw));
+        let mut dense = (cx.observing
+            || (ev.pc.is_some() && !matches!(ev.term, Termination::Newton)))
+        .then(all_dense);
+        let end_p = base.p + half * lb.integral(&dp);
         let end_pt = base.pt - cx.mu * half * Vec2::new(lb.integral(&d1), lb.integral(&d2));
         let (end_n, end_w) = (
             base.wn + half * lb.integral(&dn),
             base.wt - cx.mu * half * lb.integral(&dw),
         );
-        // The state at node `j` (the tangential impulse and the works only at the end, or
-        // where the works are known).
-        let point = |j: usize, works: &Option<([f64; M], [f64; M])>| {
-            let (wn, wt) = match works {
-                Some((cn, cw)) => (base.wn + half * cn[j], base.wt - cx.mu * half * cw[j]),
-                None if j == N => (end_n, end_w),
-                None => (f64::NAN, f64::NAN),
+        // The state at node `j` (the tangential impulse only at the end; `p_n` and the works
+        // at the end, or where they are known).
+        let point = |j: usize, dense: &Option<Dense>| {
+            let (p, wn, wt) = match dense {
+                Some((cp, cn, cw)) => (
+                    base.p + half * cp[j],
+                    base.wn + half * cn[j],
+                    base.wt - cx.mu * half * cw[j],
+                ),
+                None if j == N => (end_p, end_n, end_w),
+                None => (f64::NAN, f64::NAN, f64::NAN),
             };
             Point {
-                p: pn[j],
+                p,
                 vt: sig[j] * nodes[j].s,
                 vn: vn[j],
                 pt: if j == N {
@@ -674,9 +685,9 @@ pub(super) fn run(
             }
         };
         // What the event functions read at `t` (p_n, v_n, W_n) on the interpolants.
-        let light = |l: &[f64; M], cn: &[f64; M]| -> Point {
+        let light = |l: &[f64; M], (cp, cn, _): &Dense| -> Point {
             Point {
-                p: base.p + half * dot(l, &cp),
+                p: base.p + half * dot(l, cp),
                 vt: Vec2::zeros(),
                 vn: base.vn + half * dot(l, &cv),
                 pt: base.pt,
@@ -690,11 +701,11 @@ pub(super) fn run(
         let mut prev = base;
         #[allow(clippy::needless_range_loop)] // j indexes the node arrays and the nodes t_j
         for j in 1..M {
-            let mut bj = point(j, &works);
+            let mut bj = point(j, &dense);
             let mut lo = lb.t[j - 1];
             while let Some((kind, ga, gb)) = first_event(ev, &prev, &bj) {
-                let w = *works.get_or_insert_with(all_works);
-                bj = point(j, &works);
+                let w = *dense.get_or_insert_with(all_dense);
+                bj = point(j, &dense);
                 // The event function's rate: its integrand's interpolant (v_n for the end
                 // of compression, a second compression and Newton's termination).
                 let (rate, sign) = match (kind, ev.term) {
@@ -707,7 +718,7 @@ pub(super) fn run(
                     |t| {
                         let l = lb.basis(t);
                         (
-                            event_value(ev, kind, &light(&l, &w.0)),
+                            event_value(ev, kind, &light(&l, &w)),
                             sign * half * dot(&l, rate),
                         )
                     },
@@ -719,9 +730,9 @@ pub(super) fn run(
                 // The whole state at the event.
                 let l = lb.basis(t);
                 let (c1, c2) = (lb.cumulative(&d1), lb.cumulative(&d2));
-                let mut e = light(&l, &w.0);
+                let mut e = light(&l, &w);
                 e.pt = base.pt - cx.mu * half * Vec2::new(dot(&l, &c1), dot(&l, &c2));
-                e.wt = base.wt - cx.mu * half * dot(&l, &w.1);
+                e.wt = base.wt - cx.mu * half * dot(&l, &w.2);
                 let ue = u0 + half * dot(&l, &cu);
                 let ne = fan.node(field, x + half * (1.0 + t)).unwrap_or(nodes[j]);
                 e.vt = ue.exp() * ne.s;
