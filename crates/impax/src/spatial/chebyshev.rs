@@ -30,8 +30,9 @@ pub(crate) const M: usize = N + 1;
 pub(crate) struct Lobatto {
     /// The nodes `t_j = −cos(π j/N)`, ascending from −1 to 1.
     pub t: [f64; M],
-    /// `integ_t[k][j] = ∫_{−1}^{t_j} ℓ_k(t) dt` (`ℓ_k` the Lagrange basis), by columns.
-    integ_t: [[f64; M]; M],
+    /// `integ_t[k][j − 1] = ∫_{−1}^{t_j} ℓ_k(t) dt` (`ℓ_k` the Lagrange basis), by columns,
+    /// for `j = 1 … N` (the integral to `t_0 = −1` is zero): sixteen entries, eight pairs.
+    integ_t: [[f64; N]; M],
     /// Rows giving `c_{N−1}` and `c_N` from the values.
     tail: [[f64; M]; 2],
     /// Barycentric weights.
@@ -104,7 +105,7 @@ impl Lobatto {
                 s
             }
         });
-        let integ_t = std::array::from_fn(|k| std::array::from_fn(|j| integ[j][k]));
+        let integ_t = std::array::from_fn(|k| std::array::from_fn(|j| integ[j + 1][k]));
         Lobatto {
             t,
             integ_t,
@@ -116,13 +117,16 @@ impl Lobatto {
     /// The cumulative integral `∫_{−1}^{t_j}` of the interpolant of `v`, at every node.
     #[inline]
     pub(crate) fn cumulative(&self, v: &[f64; M]) -> [f64; M] {
-        // Column by column (`integ_t[k][j] = integ[j][k]`): independent lanes that vectorise.
-        let mut out = [0.0; M];
+        // Column by column (`integ_t[k][j − 1] = integ[j][k]`): independent lanes that
+        // vectorise; the first node's integral is zero.
+        let mut acc = [0.0; N];
         for (col, &vk) in self.integ_t.iter().zip(v.iter()) {
-            for (o, &c) in out.iter_mut().zip(col.iter()) {
+            for (o, &c) in acc.iter_mut().zip(col.iter()) {
                 *o += c * vk;
             }
         }
+        let mut out = [0.0; M];
+        out[1..].copy_from_slice(&acc);
         out
     }
 
@@ -133,7 +137,7 @@ impl Lobatto {
         self.integ_t
             .iter()
             .zip(v.iter())
-            .map(|(col, x)| col[N] * x)
+            .map(|(col, x)| col[N - 1] * x)
             .sum()
     }
 
