@@ -8,19 +8,14 @@ use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criteri
 use impax::analysis::{
     resolve_columns, resolve_problems, run_ordered, ImpactSummary, ProblemColumns, Tally,
 };
+use impax::math::SplitMix64;
 use impax::planar::ContactProblem;
 use impax::LawId;
 
 /// Deterministic random problems (splitmix64), as in `planar_laws`.
 fn random_problems(n: usize) -> Vec<ContactProblem> {
-    let mut state = 0x1234_5678_9abc_def0u64;
-    let mut next = move || {
-        state = state.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = state;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut rng = SplitMix64(0x1234_5678_9abc_def0u64);
+    let mut next = move || rng.unit();
     let mut out = Vec::with_capacity(n);
     while out.len() < n {
         let (l11, l21, l22) = (0.2 + 2.0 * next(), 2.0 * next() - 1.0, 0.2 + 2.0 * next());

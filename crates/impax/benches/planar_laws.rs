@@ -4,6 +4,7 @@
 //! Run: `cargo bench -p impax --bench planar_laws`.
 
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use impax::math::SplitMix64;
 use impax::planar::ContactProblem;
 use impax::LawId;
 
@@ -14,14 +15,8 @@ fn seed() -> ContactProblem {
 
 /// Deterministic random problems (splitmix64).
 fn random_problems(n: usize) -> Vec<ContactProblem> {
-    let mut state = 0x1234_5678_9abc_def0u64;
-    let mut next = move || {
-        state = state.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = state;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut rng = SplitMix64(0x1234_5678_9abc_def0u64);
+    let mut next = move || rng.unit();
     let mut out = Vec::with_capacity(n);
     while out.len() < n {
         let (l11, l21, l22) = (0.2 + 2.0 * next(), 2.0 * next() - 1.0, 0.2 + 2.0 * next());

@@ -1,15 +1,10 @@
 //! Quick check: planar problems embedded in 3D against the planar closed form.
+use impax::math::SplitMix64;
 use impax::{planar::ContactProblem, spatial::ContactProblem3, LawId};
 
 fn main() {
-    let mut state = 12345u64;
-    let mut next = move || {
-        state = state.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = state;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut rng = SplitMix64(12345u64);
+    let mut next = move || rng.unit();
     let mut worst = 0.0f64;
     let mut steps = 0u64;
     let n = 2000;

@@ -11,6 +11,7 @@
 //! `cargo run --release -p impax --example spatial_survey -- [N] [K]` (defaults 4000 and 100;
 //! `K = 0` skips the second part). For instruction counts, run it under
 //! `valgrind --tool=callgrind` with `K = 0` and two values of `N`, and divide the difference.
+use impax::math::SplitMix64;
 use impax::spatial::{laws::hodograph, ContactProblem3, Phase3Kind};
 use impax::LawId;
 use std::f64::consts::{PI, TAU};
@@ -60,14 +61,8 @@ fn main() {
     let mut args = std::env::args().skip(1);
     let n: usize = args.next().map_or(4000, |s| s.parse().expect("N, a count"));
     let k: usize = args.next().map_or(100, |s| s.parse().expect("K, a count"));
-    let mut state = 987_654_321u64;
-    let mut next = move || {
-        state = state.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = state;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut rng = SplitMix64(987_654_321u64);
+    let mut next = move || rng.unit();
     let mut problems = Vec::with_capacity(n);
     while problems.len() < n {
         if let Some(p) = draw(&mut next) {

@@ -7,19 +7,14 @@ use impax::analysis::{
     run_ordered_waves, whittaker_sphere_energy_ratio, whittaker_sphere_thresholds, Axis, Grid,
     ImpactSummary, ProblemColumns, RandomSamples, SampleRange, Sequence, Space, Status, Tally,
 };
+use impax::math::SplitMix64;
 use impax::paper::liu2012::Seed;
 use impax::planar::{ContactProblem, OutcomeBrief, Verdict};
 use impax::LawId;
 
 fn random_problems(n: usize, seed: u64) -> Vec<ContactProblem> {
-    let mut state = seed;
-    let mut next = move || {
-        state = state.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = state;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut rng = SplitMix64(seed);
+    let mut next = move || rng.unit();
     let mut out = Vec::new();
     while out.len() < n {
         let (l11, l21, l22) = (0.2 + 2.0 * next(), 2.0 * next() - 1.0, 0.2 + 2.0 * next());

@@ -25,6 +25,7 @@
 //! the round-off of any evaluation. The largest deviation is printed
 //! (`cargo test --test brute_force -- --nocapture`).
 
+use impax::math::SplitMix64;
 use impax::planar::{ContactProblem, LawDetail, Outcome};
 use impax::LawId;
 
@@ -32,31 +33,6 @@ use impax::LawId;
 const TOL: f64 = 1e-9;
 /// Number of random problems.
 const PROBLEMS: usize = 10_000;
-
-/// SplitMix64 (Steele, Lea & Flood 2014): a small deterministic generator.
-struct SplitMix64(u64);
-
-impl SplitMix64 {
-    fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-    /// Uniform in `[0, 1)`.
-    fn unit(&mut self) -> f64 {
-        (self.next_u64() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
-    }
-    /// Uniform in `[lo, hi)`.
-    fn range(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * self.unit()
-    }
-    /// `10^u` with `u` uniform in `[lo, hi)`.
-    fn decades(&mut self, lo: f64, hi: f64) -> f64 {
-        10f64.powf(self.range(lo, hi))
-    }
-}
 
 /// A random valid problem. `W = L Lᵀ + δ I` with `L` lower triangular, its entries spread
 /// over two decades and the off-diagonal of both signs (zero 15 % of the time).

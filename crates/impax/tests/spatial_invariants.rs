@@ -21,6 +21,7 @@
 //!   `|W_tt⁻¹ w_tn| < μ` it returns `None` and there is no centrifugal ray (cases within
 //!   1e-9 of the boundary are skipped).
 
+use impax::math::SplitMix64;
 use impax::spatial::{
     invariant_rays, resumption_direction, sticking_ratio, ContactProblem3, InvariantRays, RayKind,
 };
@@ -28,28 +29,6 @@ use std::f64::consts::{PI, TAU};
 
 const PROBLEMS: usize = 3_000;
 const SCAN: usize = 4_096;
-
-/// SplitMix64 (Steele, Lea & Flood 2014).
-struct SplitMix64(u64);
-
-impl SplitMix64 {
-    fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-    fn unit(&mut self) -> f64 {
-        (self.next_u64() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
-    }
-    fn range(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * self.unit()
-    }
-    fn decades(&mut self, lo: f64, hi: f64) -> f64 {
-        10f64.powf(self.range(lo, hi))
-    }
-}
 
 /// The tangential data of a problem: `W_tt`, `w_tn`, `μ`.
 #[derive(Debug, Clone, Copy)]

@@ -7,24 +7,9 @@
 //! * a loose tolerance (1e-7) takes no more steps than the default and still agrees to 1e-5;
 //! * `rtol = NaN` gives the default result bit for bit.
 
+use impax::math::SplitMix64;
 use impax::spatial::{ContactProblem3, Detail3, SpatialOptions};
 use impax::LawId;
-
-/// SplitMix64 (Steele, Lea & Flood 2014).
-struct SplitMix64(u64);
-
-impl SplitMix64 {
-    fn unit(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        ((z ^ (z >> 31)) >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
-    }
-    fn range(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * self.unit()
-    }
-}
 
 fn problems(n: usize) -> Vec<ContactProblem3> {
     let mut rng = SplitMix64(0x5EED_0003);

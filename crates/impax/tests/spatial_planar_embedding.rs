@@ -20,6 +20,7 @@
 //!     the halt ↔ 3D resumed slip), ending at the same impulse (same scale as impulses);
 //! * the largest deviation is printed (`-- --nocapture`).
 
+use impax::math::SplitMix64;
 use impax::planar::{ContactProblem, Outcome, PhaseKind, SlipDirection};
 use impax::spatial::{ContactProblem3, Outcome3, Phase3Kind};
 use impax::LawId;
@@ -36,28 +37,6 @@ const LAWS: [LawId; 5] = [
     LawId::Poisson,
     LawId::Energetic,
 ];
-
-/// SplitMix64 (Steele, Lea & Flood 2014).
-struct SplitMix64(u64);
-
-impl SplitMix64 {
-    fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-    fn unit(&mut self) -> f64 {
-        (self.next_u64() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
-    }
-    fn range(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * self.unit()
-    }
-    fn decades(&mut self, lo: f64, hi: f64) -> f64 {
-        10f64.powf(self.range(lo, hi))
-    }
-}
 
 fn random_planar(rng: &mut SplitMix64) -> ContactProblem {
     let l11 = rng.decades(-1.0, 1.0);

@@ -335,7 +335,7 @@ impl RandomSamples {
             let z = splitmix64(
                 self.seed
                     .wrapping_add(index.wrapping_mul(d).wrapping_add(j as u64))
-                    .wrapping_mul(0x9E37_79B9_7F4A_7C15),
+                    .wrapping_mul(crate::math::GOLDEN_GAMMA),
             );
             let u = (z >> 11) as f64 / (1u64 << 53) as f64;
             let x = r.lo + (r.hi - r.lo) * u;
@@ -345,12 +345,10 @@ impl RandomSamples {
     }
 }
 
+/// SplitMix64 of one word: its output for the state `z` (a hash of `z`).
 #[inline]
-fn splitmix64(mut z: u64) -> u64 {
-    z = z.wrapping_add(0x9E37_79B9_7F4A_7C15);
-    z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-    z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-    z ^ (z >> 31)
+fn splitmix64(z: u64) -> u64 {
+    crate::math::mix64(z.wrapping_add(crate::math::GOLDEN_GAMMA))
 }
 
 fn check_unique<'a>(names: impl Iterator<Item = &'a str>) -> Result<()> {

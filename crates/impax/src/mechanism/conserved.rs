@@ -18,7 +18,7 @@
 use super::dynamics::{self, check_state, potential_of};
 use super::{Dual64, HyperDual64, Mechanism, Pose};
 use crate::error::{Error, Result};
-use crate::math::Vec2;
+use crate::math::{SplitMix64, Vec2};
 use crate::ode::{Dopri5, Tolerances};
 
 /// An infinitesimal transformation `q → q + ε ξ(q, t)` with gauge term `F(q, t)`.
@@ -151,7 +151,7 @@ pub fn cyclic_coordinates<M: Mechanism + ?Sized>(
 ) -> Result<Vec<usize>> {
     check_state(m, q0, Some(u0))?;
     let n = m.dof();
-    let mut rng = SplitMix(0x5eed_1234_abcd_ef01);
+    let mut rng = SplitMix64(0x5eed_1234_abcd_ef01);
     let mut cyclic = vec![true; n];
     let zeros = vec![0.0; n];
     for s in 0..samples.max(1) {
@@ -159,9 +159,9 @@ pub fn cyclic_coordinates<M: Mechanism + ?Sized>(
             (q0.to_vec(), u0.to_vec())
         } else {
             (
-                q0.iter().map(|&x| x + rng.symmetric()).collect(),
+                q0.iter().map(|&x| x + symmetric(&mut rng)).collect(),
                 u0.iter()
-                    .map(|&x| (1.0 + x.abs()) * rng.symmetric())
+                    .map(|&x| (1.0 + x.abs()) * symmetric(&mut rng))
                     .collect(),
             )
         };
@@ -236,18 +236,18 @@ pub fn verify_symmetry<M: Mechanism + ?Sized>(
     samples: usize,
 ) -> Result<SymmetryCheck> {
     check_state(m, q0, Some(u0))?;
-    let mut rng = SplitMix(0x0b5e_55ed_c0ff_ee00);
+    let mut rng = SplitMix64(0x0b5e_55ed_c0ff_ee00);
     let mut worst: Option<(f64, SymmetryCheck)> = None;
     for s in 0..samples.max(1) {
         let (q, u, t): (Vec<f64>, Vec<f64>, f64) = if s == 0 {
             (q0.to_vec(), u0.to_vec(), t0)
         } else {
             (
-                q0.iter().map(|&x| x + rng.symmetric()).collect(),
+                q0.iter().map(|&x| x + symmetric(&mut rng)).collect(),
                 u0.iter()
-                    .map(|&x| (1.0 + x.abs()) * rng.symmetric())
+                    .map(|&x| (1.0 + x.abs()) * symmetric(&mut rng))
                     .collect(),
-                t0 + 5.0 * rng.symmetric(),
+                t0 + 5.0 * symmetric(&mut rng),
             )
         };
         let c = check_symmetry(m, sym, &q, &u, t);
@@ -590,19 +590,7 @@ pub fn track<M: Mechanism + ?Sized>(
     })
 }
 
-/// A small deterministic generator (SplitMix64) for the sampled checks.
-struct SplitMix(u64);
-
-impl SplitMix {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-        z ^ (z >> 31)
-    }
-    /// Uniform in [−1, 1).
-    fn symmetric(&mut self) -> f64 {
-        (self.next() >> 11) as f64 / (1u64 << 52) as f64 - 1.0
-    }
+/// Uniform in `[−1, 1)` from the sampled checks' generator.
+fn symmetric(rng: &mut SplitMix64) -> f64 {
+    (rng.next_u64() >> 11) as f64 / (1u64 << 52) as f64 - 1.0
 }
