@@ -863,39 +863,48 @@ fn series_tail(
     if d0 * d1 < 0.0 || (d0 == 0.0) != (d1 == 0.0) {
         return None;
     }
+    // ±w_tn strictly inside the arc from the ray to the direction (|η₀| ≤ 0.6 < π, so the
+    // short arc): on the side of η₀ seen from the ray, the other side seen from `dir0`.
     if wtn.x != 0.0 || wtn.y != 0.0 {
-        let psi = wtn.y.atan2(wtn.x);
-        let (lo, hi) = (eta0.min(0.0), eta0.max(0.0));
-        for cand in [psi, psi + std::f64::consts::PI] {
-            let off = wrap_angle(cand - ser.phi);
-            if off > lo && off < hi {
+        let cross = |a: Vec2, b: Vec2| a.x * b.y - a.y * b.x;
+        for cand in [wtn, -wtn] {
+            let inside = cross(ser.dir, cand) * eta0 > 0.0
+                && cross(cand, dir0) * eta0 > 0.0
+                && ser.dir.dot(&cand) > 0.0;
+            if inside {
                 return None;
             }
         }
     }
     let base = *pt;
-    let at = |s: f64| -> Point {
+    // The state at `s` without the slip velocity (what the event functions read), and
+    // with it.
+    let light = |s: f64| -> Point {
         let inc = ser.increment(sigma0, xi0, base.vn, s);
-        let vt = if s == f64::NEG_INFINITY {
-            Vec2::zeros()
-        } else {
-            let phi = ser.phi + ser.angle_offset(xi0 * (ser.lambda * s).exp());
-            sigma0 * s.exp() * Vec2::new(phi.cos(), phi.sin())
-        };
         Point {
             p: base.p + inc.dp,
-            vt,
+            vt: Vec2::new(f64::NAN, f64::NAN),
             vn: base.vn + inc.dvn,
             pt: base.pt + inc.dpt,
             wn: base.wn + inc.dwn,
             wt: base.wt + inc.dwt,
         }
     };
+    let at = |s: f64| -> Point {
+        let mut pt = light(s);
+        pt.vt = if s == f64::NEG_INFINITY {
+            Vec2::zeros()
+        } else {
+            let phi = ser.phi + ser.angle_offset(xi0 * (ser.lambda * s).exp());
+            sigma0 * s.exp() * Vec2::new(phi.cos(), phi.sin())
+        };
+        pt
+    };
     let end = at(f64::NEG_INFINITY);
     if !(end.p.is_finite() && end.vn.is_finite() && end.wn.is_finite() && end.wt.is_finite()) {
         return None;
     }
-    let halt_phi = wrap_angle(ser.phi);
+    let halt_phi = ser.dir.y.atan2(ser.dir.x);
     // At most three events lie ahead (compression end and a second compression once each,
     // then the termination, which ends the loop).
     loop {
@@ -918,7 +927,13 @@ fn series_tail(
                 s_from + (-th).ln_1p()
             }
         };
-        let th = illinois(|th| event_value(ev, kind, &at(s_of(th))), 0.0, ga, 1.0, gb);
+        let th = illinois(
+            |th| event_value(ev, kind, &light(s_of(th))),
+            0.0,
+            ga,
+            1.0,
+            gb,
+        );
         *pt = if th >= 1.0 { end } else { at(s_of(th)) };
         observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
         let phi = if th >= 1.0 {
