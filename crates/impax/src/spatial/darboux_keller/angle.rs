@@ -332,14 +332,14 @@ struct Node {
     rho: f64,
 }
 
-/// The half-angle vector `h = (h_x, h_y)` of the map at `x`, with the sine and cosine of
-/// `δ_a/2` times `|h|` and `e^{−|x|}`: `(cos(δ_b/2), sin(δ_b/2)) = h/|h|`.
-#[inline]
+/// [`half_vectors_with`] with its own exponential.
+#[cfg(test)]
 fn half_vectors(cd: f64, sd: f64, x: f64) -> (f64, f64, f64, f64, f64) {
     half_vectors_with(cd, sd, x, (-x.abs()).exp())
 }
 
-/// [`half_vectors`] given `t = e^{−|x|}`.
+/// The half-angle vector `h = (h_x, h_y)` of the map at `x` given `t = e^{−|x|}`, with the
+/// sine and cosine of `δ_a/2` times `|h|` and `t`: `(cos(δ_b/2), sin(δ_b/2)) = h/|h|`.
 #[inline]
 fn half_vectors_with(cd: f64, sd: f64, x: f64, t: f64) -> (f64, f64, f64, f64, f64) {
     if x <= 0.0 {
@@ -382,9 +382,18 @@ fn e_abs(x: f64, xc: f64, p: f64) -> f64 {
 
 impl Fan {
     /// `δ_a` at `x`.
+    #[cfg(test)]
     fn delta_ahead(&self, x: f64) -> f64 {
         let (_, _, sa, ca, _) = half_vectors(self.cd, self.sd, x);
         2.0 * sa.atan2(ca)
+    }
+
+    /// Whether `δ_a ≤ δ` at `x` (given `e = e^{−|x|}`), from `t = tan(δ/2)`: the half-angle
+    /// vector of `δ_a/2` is in the first quadrant with `sin ≤ t cos` (no arctangent).
+    #[inline]
+    fn ahead_within(&self, x: f64, e: f64, t: f64) -> bool {
+        let (_, _, sa, ca, _) = half_vectors_with(self.cd, self.sd, x, e);
+        ca > 0.0 && sa <= t * ca
     }
 
     /// The direction, `q` and `ρ` at `x`; `None` where `f` does not have the sign of the
@@ -472,6 +481,9 @@ pub(super) struct Context<'a> {
 /// Run the slip from `pt` in the angle variable to its end, or hand it back.
 /// `straight` ends the slip in closed form once its direction is on a centripetal ray to the
 /// last bit of the result (`None` while it is not).
+/// `tan(0.15)`: the series about the ray ahead is tried within 0.3 rad of it.
+const TAN_0_15: f64 = 0.151_135_218_058_295_08;
+
 /// The order in `h` assumed when an accepted panel's successor is sized: lower than the
 /// panel's `N`, because the singularities that limit a panel (complex roots of `f`, the
 /// map's poles at `Im x = ±(π − D/2)`) lie behind it as the panels move on, so the tail grows
@@ -754,14 +766,17 @@ pub(super) fn run(
         u0 += half * cu[N];
         n0 = nodes[N];
         h *= (0.9 * err.max(1e-30).powf(-1.0 / GROWTH_ORDER)).min(4.0);
-        let da = fan.delta_ahead(x);
+        // δ_a at the panel's end against the series' reach (0.3 rad, tan 0.15) and, on a
+        // centrifugal ray, against the last bit (δ with tan(δ/2) = δ/2).
+        let e_end = e_abs(x, xc, ex[N]);
+        let within = |t: f64| fan.ahead_within(x, e_end, t);
         if qa < 0.0 {
             if let Some(end) = straight(pt, ev) {
                 let end = end?;
                 observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
                 return Ok(Exit::End(end));
             }
-            if da <= 0.3 {
+            if within(TAN_0_15) {
                 let g = cx.wtn - cx.mu * (cx.wtt * (pt.vt / pt.vt.norm()));
                 if let Some(ser) = series.get(field, cx.wnn, g, pt.vt) {
                     let sc = cx.sc;
@@ -771,7 +786,7 @@ pub(super) fn run(
                     }
                 }
             }
-        } else if da * (1.0 + cx.mu) <= f64::EPSILON * f64::EPSILON / 64.0 {
+        } else if within(0.5 * f64::EPSILON * f64::EPSILON / (64.0 * (1.0 + cx.mu))) {
             // On the ray ahead to the last bit of the result: the rest is a straight run
             // along it.
             let s = fan.ahead.dir;
