@@ -109,7 +109,7 @@ impl Field {
     #[inline]
     pub(crate) fn f_df(&self, phi: f64) -> (f64, f64) {
         let (s, c) = phi.sin_cos();
-        let (s2, c2) = (2.0 * phi).sin_cos();
+        let (s2, c2) = (2.0 * s * c, c * c - s * s);
         (
             self.a * c + self.b * s + self.c * c2 + self.d * s2,
             -self.a * s + self.b * c - 2.0 * self.c * s2 + 2.0 * self.d * c2,
@@ -259,7 +259,7 @@ impl RaySeries {
         // (C_n = known − b_n S₀, …). Then f∘ and q∘ are linear in them, F∘ = f∘/q∘, and
         // λ n b_n = [F∘]_n = known + λ b_n gives b_n. Everything is O(TERMS²).
         let (s0, c0) = phi.sin_cos();
-        let (s20, c20) = (2.0 * phi).sin_cos();
+        let (s20, c20) = (2.0 * s0 * c0, c0 * c0 - s0 * s0);
         let (fa, fb, fc, fd) = (field.a, field.b, field.c, field.d);
         let mu = field.mu;
         let f_of = |c: f64, s: f64, c2: f64, s2: f64| fa * c + fb * s + fc * c2 + fd * s2;

@@ -303,7 +303,7 @@ impl Ray {
     fn new(field: &Field, phi: f64) -> Ray {
         let (a, b, c, d) = field.f_coefficients();
         let (sr, cr) = phi.sin_cos();
-        let (s2, c2) = (2.0 * phi).sin_cos();
+        let (s2, c2) = (2.0 * sr * cr, cr * cr - sr * sr);
         Ray {
             phi,
             dir: Vec2::new(cr, sr),
