@@ -478,9 +478,6 @@ pub(super) struct Context<'a> {
     pub observing: bool,
 }
 
-/// Run the slip from `pt` in the angle variable to its end, or hand it back.
-/// `straight` ends the slip in closed form once its direction is on a centripetal ray to the
-/// last bit of the result (`None` while it is not).
 /// `tan(0.15)`: the series about the ray ahead is tried within 0.3 rad of it.
 const TAN_0_15: f64 = 0.151_135_218_058_295_08;
 
@@ -501,6 +498,9 @@ fn reject_factor(err: f64) -> f64 {
     }
 }
 
+/// Run the slip from `pt` in the angle variable to its end, or hand it back.
+/// `straight` ends the slip in closed form once its direction is on a centripetal ray to the
+/// last bit of the result (`None` while it is not).
 pub(super) fn run(
     cx: &Context,
     pt: &mut Point,
