@@ -66,22 +66,6 @@ pub fn quadratic_roots(q2: f64, q1: f64, q0: f64) -> [f64; 2] {
     }
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn quadratic_roots_are_accurate_without_cancellation() {
-        // (x − 1e-9)(x − 1e9) = x² − (1e9 + 1e-9) x + 1
-        let [a, b] = quadratic_roots(1.0, -(1e9 + 1e-9), 1.0);
-        assert!((a - 1e-9).abs() < 1e-24);
-        assert!((b - 1e9).abs() < 1e-6);
-        let [c, d] = quadratic_roots(1.0, 0.0, 1.0);
-        assert!(c.is_nan() && d.is_nan());
-        assert_eq!(sign(-0.0), 0.0);
-    }
-}
-
 /// The increment of [`SplitMix64`]'s state: `2⁶⁴/φ`, odd.
 pub const GOLDEN_GAMMA: u64 = 0x9E37_79B9_7F4A_7C15;
 
@@ -134,5 +118,31 @@ impl SplitMix64 {
     #[inline]
     pub fn decades(&mut self, lo: f64, hi: f64) -> f64 {
         10f64.powf(self.range(lo, hi))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn quadratic_roots_are_accurate_without_cancellation() {
+        // (x − 1e-9)(x − 1e9) = x² − (1e9 + 1e-9) x + 1
+        let [a, b] = quadratic_roots(1.0, -(1e9 + 1e-9), 1.0);
+        assert!((a - 1e-9).abs() < 1e-24);
+        assert!((b - 1e9).abs() < 1e-6);
+        let [c, d] = quadratic_roots(1.0, 0.0, 1.0);
+        assert!(c.is_nan() && d.is_nan());
+        assert_eq!(sign(-0.0), 0.0);
+    }
+
+    /// The reference implementation's first outputs for the seed 0 (Vigna, `splitmix64.c`).
+    #[test]
+    fn splitmix64_matches_the_reference_sequence() {
+        let mut rng = SplitMix64(0);
+        assert_eq!(rng.next_u64(), 0xE220_A839_7B1D_CDAF);
+        assert_eq!(rng.next_u64(), 0x6E78_9E6A_A1B9_65F4);
+        let u = SplitMix64(7).unit();
+        assert!((0.0..1.0).contains(&u));
     }
 }
