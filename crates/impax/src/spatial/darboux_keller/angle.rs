@@ -816,24 +816,14 @@ pub(super) fn run(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::math::SplitMix64;
     use crate::spatial::{invariant_rays, ContactProblem3};
 
-    /// A small deterministic generator (xorshift), uniform in `[lo, hi)`.
-    struct Gen(u64);
-    impl Gen {
-        fn next(&mut self, lo: f64, hi: f64) -> f64 {
-            self.0 ^= self.0 << 13;
-            self.0 ^= self.0 >> 7;
-            self.0 ^= self.0 << 17;
-            lo + (hi - lo) * (self.0 >> 11) as f64 / (1u64 << 53) as f64
-        }
-    }
-
-    fn random_field(g: &mut Gen) -> (ContactProblem3, Field) {
-        let (a, c) = (10f64.powf(g.next(-1.0, 1.0)), 10f64.powf(g.next(-1.0, 1.0)));
-        let b = g.next(-0.9, 0.9) * (a * c).sqrt();
-        let (w1, w2) = (g.next(-1.0, 1.0), g.next(-1.0, 1.0));
-        let mu = 10f64.powf(g.next(-1.5, 0.5));
+    fn random_field(g: &mut SplitMix64) -> (ContactProblem3, Field) {
+        let (a, c) = (g.decades(-1.0, 1.0), g.decades(-1.0, 1.0));
+        let b = g.range(-0.9, 0.9) * (a * c).sqrt();
+        let (w1, w2) = (g.range(-1.0, 1.0), g.range(-1.0, 1.0));
+        let mu = g.decades(-1.5, 0.5);
         // w_nn above the Schur complement's bound w_tᵀ W_tt⁻¹ w_t.
         let wnn = 1.0 + (c * w1 * w1 - 2.0 * b * w1 * w2 + a * w2 * w2) / (a * c - b * b);
         let p = ContactProblem3::from_upper([a, b, w1, c, w2, wnn], [0.1, 0.2, -1.0], mu, 0.5)
@@ -847,13 +837,13 @@ mod tests {
     /// method) gives, and each is a root of `f` to round-off.
     #[test]
     fn the_sector_scan_finds_the_rays_of_the_companion_matrix() {
-        let mut g = Gen(0x9e37_79b9_7f4a_7c15);
+        let mut g = SplitMix64(0x9e37_79b9_7f4a_7c15);
         let mut compared = 0;
         for _ in 0..5000 {
             let (p, field) = random_field(&mut g);
             let (a, b, c, d) = field.f_coefficients();
             let scale = a.abs() + b.abs() + c.abs() + d.abs();
-            let phi0 = g.next(-10.0, 10.0);
+            let phi0 = g.range(-10.0, 10.0);
             let (s0, c0) = phi0.sin_cos();
             if field.f_at(c0, s0).abs() < 1e-6 * scale {
                 continue;
@@ -898,7 +888,7 @@ mod tests {
     /// size of `f`'s coefficients, across the whole range it is used on (`|ε| ≤ 1`).
     #[test]
     fn the_expansion_about_a_ray_is_f() {
-        let mut g = Gen(0x2545_f491_4f6c_dd1d);
+        let mut g = SplitMix64(0x2545_f491_4f6c_dd1d);
         for _ in 0..500 {
             let (p, field) = random_field(&mut g);
             let (a, b, c, d) = field.f_coefficients();
@@ -906,7 +896,7 @@ mod tests {
             for r in invariant_rays(&p).as_slice().iter().map(|x| x.angle) {
                 let ray = Ray::new(&field, r);
                 for k in 0..40 {
-                    let eps = g.next(-1.0, 1.0) * 10f64.powi(-(k % 8));
+                    let eps = g.range(-1.0, 1.0) * 10f64.powi(-(k % 8));
                     let (se, ce) = eps.sin_cos();
                     let expanded = se
                         * (ray.q + 2.0 * ray.s * ce - ray.r * se * (2.0 * ce + 1.0) / (1.0 + ce));
@@ -954,11 +944,11 @@ mod tests {
     /// turned, and `ρ |f| = dθ/dx` agrees with a central difference of that angle.
     #[test]
     fn the_half_angle_map_is_the_angle_it_stands_for() {
-        let mut g = Gen(0x6a09_e667_f3bc_c909);
+        let mut g = SplitMix64(0x6a09_e667_f3bc_c909);
         let mut checked = 0;
         for _ in 0..300 {
             let (_, field) = random_field(&mut g);
-            let phi0 = g.next(-3.0, 3.0);
+            let phi0 = g.range(-3.0, 3.0);
             let (s0, c0) = phi0.sin_cos();
             let f0 = field.f_at(c0, s0);
             let (a, b, c, d) = field.f_coefficients();
@@ -1012,12 +1002,12 @@ mod tests {
     /// one that is not monotone in the bracket, always on the side where `g ≥ 0`.
     #[test]
     fn the_crossing_is_located_to_round_off_on_its_far_side() {
-        let mut g = Gen(0xbb67_ae85_84ca_a73b);
+        let mut g = SplitMix64(0xbb67_ae85_84ca_a73b);
         for _ in 0..2000 {
-            let root = g.next(-0.9, 0.9);
-            let k = g.next(0.1, 10.0);
+            let root = g.range(-0.9, 0.9);
+            let k = g.range(0.1, 10.0);
             // (|wiggle (t − root)| < 1: one root, and g' changes sign for the larger ones.)
-            let wiggle = g.next(0.0, 0.5);
+            let wiggle = g.range(0.0, 0.5);
             let f = |t: f64| {
                 (
                     k * (t - root) + wiggle * k * (t - root) * (t - root) * (3.0 * t).cos(),
