@@ -186,7 +186,7 @@ fn mechanism_audit(source: &str, flags: &MechanismSpec) -> CliResult<Audit> {
     }
     let friction = spec.friction.unwrap_or(0.5);
     let restitution = spec.restitution.unwrap_or(0.5);
-    let impact = MechanismImpact::new(&case.mechanism, &case.q, &case.u, 0)?;
+    let impact = MechanismImpact::striking(&case.mechanism, &case.q, &case.u)?;
     let problem = impact.problem(friction, restitution)?;
     let mut rows = Vec::new();
     for law in LAWS {

@@ -58,7 +58,7 @@ pub fn run(args: &CompareArgs, source: &str, out: &mut Vec<u8>) -> CliResult<()>
             spec.mechanism, spec.mechanism
         )));
     }
-    let impact = MechanismImpact::new(&case.mechanism, &case.q, &case.u, 0)?;
+    let impact = MechanismImpact::striking(&case.mechanism, &case.q, &case.u)?;
     let problem = impact.problem(friction, restitution)?;
     let results = laws
         .iter()
@@ -122,7 +122,7 @@ fn document(
         "coordinates": m.coordinates(),
         "q": case.q,
         "u_before": case.u,
-        "contact": m.contacts()[0].name,
+        "contact": m.contacts()[impact.contact()].name,
         "gap": num(impact.gap()),
         "problem": json::problem(problem),
         "energy_before": t0,
@@ -200,7 +200,7 @@ fn table(
         case.description,
         problem.friction(),
         problem.restitution(),
-        m.contacts()[0].name,
+        m.contacts()[impact.contact()].name,
         w[(0, 0)],
         w[(0, 1)],
         w[(1, 0)],

@@ -354,6 +354,10 @@ fn stop_json(stop: &StopReason, time: f64) -> Value {
     match stop {
         StopReason::PersistentContact { contact } => v["contact"] = json!(contact),
         StopReason::Breakdown { reason } => v["reason"] = json!(reason),
+        StopReason::UnsupportedContact { contact, touching } => {
+            v["contact"] = json!(contact);
+            v["touching"] = json!(touching);
+        }
         _ => {}
     }
     v
@@ -362,6 +366,15 @@ fn stop_json(stop: &StopReason, time: f64) -> Value {
 fn stop_text(stop: &StopReason, case: &Case) -> String {
     let m = &case.initial.mechanism;
     match stop {
+        StopReason::UnsupportedContact { contact, touching } => format!(
+            "the {} met its surface while the {} was in contact: contact at several points at once, which this simulator does not model yet",
+            m.contacts()[*contact].name,
+            touching
+                .iter()
+                .map(|&j| m.contacts()[j].name)
+                .collect::<Vec<_>>()
+                .join(" and the ")
+        ),
         StopReason::TimeLimit => "the end time was reached".into(),
         StopReason::Rest => "the body came to rest on the floor".into(),
         StopReason::PersistentContact { contact } => format!(

@@ -182,11 +182,10 @@ pub struct MechanismImpact {
 
 impl MechanismImpact {
     fn impact(&self) -> PyResult<LibMechanismImpact<'_, BuiltIn>> {
-        lib(LibMechanismImpact::new(
+        lib(LibMechanismImpact::striking(
             &self.mechanism,
             &self.q,
             &self.u,
-            0,
         ))
     }
 

@@ -251,6 +251,34 @@ pub fn gap<M: Mechanism + ?Sized>(m: &M, k: usize, q: &[f64]) -> f64 {
     (c[0] - s.point.x) * s.normal.x + (c[1] - s.point.y) * s.normal.y
 }
 
+/// The normal velocity of contact `k`, `φ̇ = ∇φ(q)·u` (one dual-number pass seeded `q + εu`;
+/// negative: approaching its surface).
+pub fn gap_rate<M: Mechanism + ?Sized>(m: &M, k: usize, q: &[f64], u: &[f64]) -> f64 {
+    let s = m.contacts()[k].surface;
+    let qd: Vec<Dual64> = q.iter().zip(u).map(|(&x, &v)| Dual64::new(x, v)).collect();
+    let c = m.contact_point(k, &qd);
+    c[0].eps * s.normal.x + c[1].eps * s.normal.y
+}
+
+/// Relative size, on the contact's own length scale, of a gap that counts as touching.
+const TOUCHING: f64 = 1e-12;
+
+/// The gap below which contact `k` counts as touching its surface at `q`:
+/// `10⁻¹² |c − r_b| + 64 ε (|c| + |s|)`, with `|c − r_b|` the distance of the contact point
+/// from its body's centre of mass (the lever of the contact: a rod's half-length, a ball's
+/// radius) and the second term the round-off of the gap's evaluation far from the origin.
+/// Two contacts whose gaps are both within it touch at once.
+pub fn touching_tolerance<M: Mechanism + ?Sized>(m: &M, k: usize, q: &[f64]) -> f64 {
+    let contact = m.contacts()[k];
+    let c = m.contact_point(k, q);
+    let mut poses = vec![Pose::new(0.0, 0.0, 0.0); m.bodies().len()];
+    m.poses(q, &mut poses);
+    let b = poses[contact.body];
+    let lever = (c[0] - b.x).hypot(c[1] - b.y);
+    let far = c[0].hypot(c[1]) + contact.surface.point.norm();
+    TOUCHING * lever + 64.0 * f64::EPSILON * far
+}
+
 /// The gap of contact `k` and its first two time derivatives along the motion
 /// `(q, u, u̇)`: `φ`, `φ̇ = ∇φ·u`, `φ̈ = ∇φ·u̇ + uᵀ ∇²φ u` (a dual pass seeded `q + εu̇`
 /// and a hyper-dual pass seeded `q + ε₁u + ε₂u`).

@@ -87,6 +87,55 @@ impl<'a, M: Mechanism + ?Sized> MechanismImpact<'a, M> {
         })
     }
 
+    /// The impact of the contact that strikes at `(q, u)`: the one nearest its surface, with
+    /// the smallest `|gap|` (the first of equals). A mechanism with several contact
+    /// candidates (a rod's two ends, a double pendulum's tip and elbow) strikes with one of
+    /// them at a time.
+    ///
+    /// # Errors
+    /// As [`MechanismImpact::new`]; and, naming `q`, another contact below its surface (the
+    /// state cannot be reached), or another contact touching at once (its gap within
+    /// [`dynamics::touching_tolerance`] of the striking one's): an impact at several contacts
+    /// at once is not a one-contact problem.
+    pub fn striking(mechanism: &'a M, q: &[f64], u: &[f64]) -> Result<Self> {
+        check_state(mechanism, q, Some(u))?;
+        let contacts = mechanism.contacts();
+        let gaps: Vec<f64> = (0..contacts.len())
+            .map(|k| dynamics::gap(mechanism, k, q))
+            .collect();
+        let Some(k) = (0..gaps.len()).min_by(|&i, &j| gaps[i].abs().total_cmp(&gaps[j].abs()))
+        else {
+            return Self::new(mechanism, q, u, 0); // no contact: the error of `new`
+        };
+        let tol_k = dynamics::touching_tolerance(mechanism, k, q);
+        for j in (0..gaps.len()).filter(|&j| j != k) {
+            let tol_j = dynamics::touching_tolerance(mechanism, j, q);
+            if gaps[j] < -tol_j {
+                return Err(Error::Invalid {
+                    field: "q".into(),
+                    reason: format!(
+                        "the {} is below its surface (gap {:e}) while the {} strikes",
+                        contacts[j].name, gaps[j], contacts[k].name
+                    ),
+                });
+            }
+            if (gaps[j] - gaps[k]).abs() <= tol_j + tol_k {
+                return Err(Error::Invalid {
+                    field: "q".into(),
+                    reason: format!(
+                        "the {} and the {} strike at once (gaps {:e} and {:e}): an impact at several \
+                         contacts at once is not supported yet",
+                        contacts[k].name,
+                        contacts[j].name,
+                        gaps[k],
+                        gaps[j]
+                    ),
+                });
+            }
+        }
+        Self::new(mechanism, q, u, k)
+    }
+
     /// The contact-space inverse inertia `W = J M⁻¹ Jᵀ`.
     pub fn inverse_inertia(&self) -> Mat2 {
         self.w

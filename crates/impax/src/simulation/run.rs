@@ -96,12 +96,25 @@ pub enum StopReason {
         /// Why.
         reason: String,
     },
+    /// A contact struck, or was pressed into its surface, while other contacts touched theirs
+    /// (a rod landing on both ends, rocking onto its second end, a pendulum's elbow meeting
+    /// the floor where its tip rests): an impact or a resting contact at several points at
+    /// once, which this simulator does not model. The run ends at that instant, before the
+    /// impact.
+    UnsupportedContact {
+        /// The contact that struck or was pressed.
+        contact: usize,
+        /// The contacts touching their surfaces at that time.
+        touching: Vec<usize>,
+    },
 }
 
 impl StopReason {
-    /// Stable id: `time-limit`, `rest`, `persistent-contact`, `impact-limit`, `breakdown`.
+    /// Stable id: `time-limit`, `rest`, `persistent-contact`, `impact-limit`, `breakdown`,
+    /// `unsupported-contact`.
     pub fn id(&self) -> &'static str {
         match self {
+            StopReason::UnsupportedContact { .. } => "unsupported-contact",
             StopReason::TimeLimit => "time-limit",
             StopReason::Rest => "rest",
             StopReason::PersistentContact { .. } => "persistent-contact",
@@ -255,7 +268,44 @@ fn gap_of<M: Mechanism + ?Sized>(m: &M, k: usize, y: &[f64]) -> f64 {
     dynamics::gap(m, k, &y[..m.dof()])
 }
 
+/// The contacts other than `except` that touch their surfaces at `q` (gap within
+/// [`dynamics::touching_tolerance`]).
+fn touching<M: Mechanism + ?Sized>(m: &M, q: &[f64], except: usize) -> Vec<usize> {
+    (0..m.contacts().len())
+        .filter(|&j| j != except && dynamics::gap(m, j, q) <= dynamics::touching_tolerance(m, j, q))
+        .collect()
+}
+
+/// Contact `k` at `(q, u)` touches its surface without approaching it and is accelerated into
+/// it (`φ̇ = 0`, `φ̈ < 0`): it would stay closed, pressed against the surface.
+fn pressed<M: Mechanism + ?Sized>(m: &M, k: usize, q: &[f64], u: &[f64]) -> Result<bool> {
+    if dynamics::gap(m, k, q) > dynamics::touching_tolerance(m, k, q) {
+        return Ok(false);
+    }
+    let acc = dynamics::accelerations(m, q, u)?;
+    let [_, rate, accel] = dynamics::gap_rates(m, k, q, u, acc.as_slice());
+    Ok(rate <= 0.0 && accel < 0.0)
+}
+
+/// What happens at `(t, y)` when contact `k` reaches its surface.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Arrival {
+    /// Its gap crossed zero: an impact if it approaches (a graze otherwise).
+    Crossing(usize),
+    /// It touched its surface at the start of a step and the motion moved it into the
+    /// surface: an impact if it approaches, else it is pressed into persistent contact.
+    Pressing(usize),
+}
+
 /// Simulate `m` from `(q0, u0)` at `t = 0` until `options.until` (or a stop).
+///
+/// Every contact of the mechanism is watched (both ends of a rod, a double pendulum's tip and
+/// elbow). The run stops with [`StopReason::UnsupportedContact`] when a contact strikes, or is
+/// pressed into its surface, while another one touches its own (an impact or a resting
+/// contact at several points at once), and with [`StopReason::PersistentContact`] when a
+/// single contact stays closed on any body but a round one on a floor; the last sample is the
+/// state at the stop, with its true energy. No sampled state has a contact below its surface
+/// by more than [`dynamics::touching_tolerance`].
 ///
 /// # Errors
 /// Invalid state or options; a start below a surface; a singular mass matrix or a failed
@@ -271,10 +321,9 @@ pub fn simulate<M: Mechanism + ?Sized>(
     dynamics::accelerations(m, q0, u0)?;
     let n = m.dof();
     let contacts = m.contacts().len();
-    let scale = 1.0 + q0.iter().fold(0.0f64, |a, x| a.max(x.abs()));
     for k in 0..contacts {
         let g = dynamics::gap(m, k, q0);
-        if g < -1e-12 * scale {
+        if g < -dynamics::touching_tolerance(m, k, q0) {
             return Err(Error::Invalid {
                 field: "q".into(),
                 reason: format!(
@@ -301,43 +350,120 @@ pub fn simulate<M: Mechanism + ?Sized>(
     let mut series: (usize, Vec<f64>) = (usize::MAX, Vec::new());
     let until = options.until;
 
-    // A contact touching and approaching at the start is struck at t = 0.
-    let mut pending: Option<usize> = (0..contacts).find(|&k| {
-        dynamics::gap(m, k, q0) <= 1e-12 * scale
-            && MechanismImpact::new(m, q0, u0, k).is_ok_and(|i| i.contact_velocity().y < 0.0)
-    });
+    // A contact touching at the start: struck at t = 0 if it approaches, pressed if the
+    // motion pushes it into its surface.
+    let mut pending: Option<Arrival> = None;
+    for k in 0..contacts {
+        if dynamics::gap(m, k, q0) > dynamics::touching_tolerance(m, k, q0) {
+            continue;
+        }
+        if dynamics::gap_rate(m, k, q0, u0) < 0.0 {
+            pending = Some(Arrival::Crossing(k));
+            break;
+        }
+        if pending.is_none() && pressed(m, k, q0, u0)? {
+            pending = Some(Arrival::Pressing(k));
+        }
+    }
     ode.start(&mut f, t, &y, until)?;
     let mut ystart = vec![0.0; 2 * n];
     let mut trial = vec![0.0; 2 * n];
     let mut buf = vec![0.0; 2 * n];
     loop {
-        if let Some(k) = pending.take() {
-            // ---- the impact at (t, y) on contact k ----
-            if impacts.len() >= options.max_impacts {
-                return Ok(finish(
-                    rec,
-                    impacts,
-                    events,
-                    StopReason::ImpactLimit,
-                    t,
-                    &ode,
-                ));
-            }
+        if let Some(arrival) = pending.take() {
+            let (Arrival::Crossing(k) | Arrival::Pressing(k)) = arrival;
             let (q, u) = y.split_at(n);
-            let imp = MechanismImpact::new(m, q, u, k)?;
-            let v = imp.contact_velocity();
-            if v.y < 0.0 {
-                let problem = imp.problem(options.friction, options.restitution)?;
+            let others = touching(m, q, k);
+            let v_k = dynamics::gap_rate(m, k, q, u);
+            if v_k >= 0.0 {
+                if let Arrival::Pressing(_) = arrival {
+                    // Pressed into the surface: persistent contact.
+                    if !others.is_empty() {
+                        let stop = StopReason::UnsupportedContact {
+                            contact: k,
+                            touching: others,
+                        };
+                        return Ok(stop_at(rec, impacts, events, stop, t, &y, &ode));
+                    }
+                    if let Some(body) = m.round_on_floor() {
+                        if m.contacts()[k].surface.normal == Vec2::new(0.0, 1.0) {
+                            let state = Rolling {
+                                t0: t,
+                                x: y[0],
+                                vx: y[n],
+                                theta: y[2],
+                                omega: y[n + 2],
+                            };
+                            let (stop, end) = roll(m, &body, state, options, &mut rec, &mut events);
+                            return Ok(finish(rec, impacts, events, stop, end, &ode));
+                        }
+                    }
+                    let stop = StopReason::PersistentContact { contact: k };
+                    return Ok(stop_at(rec, impacts, events, stop, t, &y, &ode));
+                }
+            } else {
+                // ---- the impact at (t, y) on contact k ----
+                if impacts.len() >= options.max_impacts {
+                    return Ok(stop_at(
+                        rec,
+                        impacts,
+                        events,
+                        StopReason::ImpactLimit,
+                        t,
+                        &y,
+                        &ode,
+                    ));
+                }
+                // Another contact touching and approaching: an impact at several points.
+                if others.iter().any(|&j| dynamics::gap_rate(m, j, q, u) < 0.0) {
+                    let stop = StopReason::UnsupportedContact {
+                        contact: k,
+                        touching: others,
+                    };
+                    return Ok(stop_at(rec, impacts, events, stop, t, &y, &ode));
+                }
+                let imp = MechanismImpact::new(m, q, u, k)?;
+                let v = imp.contact_velocity();
+                // A contact that one coordinate alone moves (a double pendulum's elbow) has a
+                // singular W: no one-contact law applies there.
+                let problem = match imp.problem(options.friction, options.restitution) {
+                    Ok(p) => p,
+                    Err(e) => {
+                        let stop = StopReason::Breakdown {
+                            reason: format!(
+                                "the {} strikes, and its contact problem is not one a one-contact law takes: {e}",
+                                m.contacts()[k].name
+                            ),
+                        };
+                        return Ok(stop_at(rec, impacts, events, stop, t, &y, &ode));
+                    }
+                };
                 let outcome = match options.law.resolve(&problem) {
                     Ok(o) => o,
                     Err(b) => {
                         let stop = StopReason::Breakdown {
                             reason: b.reason.to_string(),
                         };
-                        return Ok(finish(rec, impacts, events, stop, t, &ode));
+                        return Ok(stop_at(rec, impacts, events, stop, t, &y, &ode));
                     }
                 };
                 let after = imp.velocities_after(outcome.impulse);
+                // The impulse at k must not drive another touching contact into its surface.
+                let speed = v.norm();
+                let mut blocked = false;
+                for &j in &others {
+                    let vj = dynamics::gap_rate(m, j, q, &after);
+                    if vj < 0.0 || (vj <= 1e-9 * speed && pressed(m, j, q, &after)?) {
+                        blocked = true;
+                    }
+                }
+                if blocked {
+                    let stop = StopReason::UnsupportedContact {
+                        contact: k,
+                        touching: others,
+                    };
+                    return Ok(stop_at(rec, impacts, events, stop, t, &y, &ode));
+                }
                 let (tr0, rot0) = energy_parts(m, imp.kinematics(), u);
                 let (tr1, rot1) = energy_parts(m, imp.kinematics(), &after);
                 let kinetic_before = imp.energy_before();
@@ -366,7 +492,20 @@ pub fn simulate<M: Mechanism + ?Sized>(
                 y[n..].copy_from_slice(&after);
                 rec.push(t, &y, Mode::Flight);
                 let vn_after = outcome.velocity_after.y;
-                // Persistent contact: a plastic impact, or an accumulation of impacts.
+                // The height of the coming bounce, `φ̇² / 2|φ̈|`: below the touching tolerance
+                // the contact cannot be told apart from its surface.
+                let apex = {
+                    let (q, u) = y.split_at(n);
+                    let acc = dynamics::accelerations(m, q, u)?;
+                    let [_, rate, accel] = dynamics::gap_rates(m, k, q, u, acc.as_slice());
+                    if accel < 0.0 {
+                        rate.max(0.0).powi(2) / (2.0 * -accel)
+                    } else {
+                        f64::INFINITY
+                    }
+                };
+                // Persistent contact: a plastic impact, a bounce too low to leave the surface,
+                // or an accumulation of impacts.
                 let mut persistent: Option<f64> = None; // the time it starts
                 if vn_after <= 1e-9 * v.y.abs() {
                     persistent = Some(t);
@@ -392,6 +531,9 @@ pub fn simulate<M: Mechanism + ?Sized>(
                             y[i] += y[n + i] * tail;
                         }
                         t = limit;
+                        persistent = Some(t);
+                        series.1.clear();
+                    } else if apex <= dynamics::touching_tolerance(m, k, &y[..n]) {
                         persistent = Some(t);
                         series.1.clear();
                     }
@@ -420,8 +562,7 @@ pub fn simulate<M: Mechanism + ?Sized>(
                         let after = imp.velocities_after(Vec2::new(0.0, -vn / w[(1, 1)]));
                         y[n..].copy_from_slice(&after);
                     }
-                    rec.push(t_contact, &y, Mode::Flight);
-                    return Ok(finish(rec, impacts, events, stop, t_contact, &ode));
+                    return Ok(stop_at(rec, impacts, events, stop, t_contact, &y, &ode));
                 }
             }
             // Bound the first step by a quarter of the coming flight of the contact just struck
@@ -443,32 +584,6 @@ pub fn simulate<M: Mechanism + ?Sized>(
         let step = ode.advance(&mut f, until)?;
         let (t0, t1) = (step.t0, step.t1);
         ystart.copy_from_slice(step.y0);
-        // The first contact whose gap crosses from positive to ≤ 0 on the dense output.
-        const PARTS: usize = 8;
-        let mut candidate: Option<(usize, f64, f64)> = None;
-        for k in 0..contacts {
-            let mut prev = (t0, gap_of(m, k, step.y0));
-            for j in 1..=PARTS {
-                let tj = if j == PARTS {
-                    t1
-                } else {
-                    t0 + (t1 - t0) * j as f64 / PARTS as f64
-                };
-                let g = if j == PARTS {
-                    gap_of(m, k, step.y1)
-                } else {
-                    step.interpolate(tj, &mut buf);
-                    gap_of(m, k, &buf)
-                };
-                if prev.1 > 0.0 && g <= 0.0 {
-                    if candidate.is_none_or(|c| prev.0 < c.1) {
-                        candidate = Some((k, prev.0, tj));
-                    }
-                    break;
-                }
-                prev = (tj, g);
-            }
-        }
         // Regular samples inside the step (kept only before the event, if any).
         let mut inside: Vec<(f64, Vec<f64>)> = Vec::new();
         while rec.next_time() <= t1 && rec.next_time() <= until {
@@ -477,16 +592,63 @@ pub fn simulate<M: Mechanism + ?Sized>(
             inside.push((ts, buf.clone()));
             rec.next += 1;
         }
+        // Each contact's gap on the dense output, at PARTS points of the step and at the
+        // samples: the first crossing from positive to ≤ 0 brackets an arrival; a contact
+        // touching at the step's start that goes further in arrives at the start.
+        const PARTS: usize = 8;
+        let mut times: Vec<f64> = (1..PARTS)
+            .map(|j| t0 + (t1 - t0) * j as f64 / PARTS as f64)
+            .chain(inside.iter().map(|s| s.0))
+            .filter(|&tj| tj > t0 && tj < t1)
+            .collect();
+        times.sort_by(f64::total_cmp);
+        times.push(t1);
+        let mut states: Vec<Vec<f64>> = Vec::with_capacity(times.len());
+        for &tj in &times {
+            if tj == t1 {
+                states.push(step.y1.to_vec());
+            } else {
+                step.interpolate(tj, &mut buf);
+                states.push(buf.clone());
+            }
+        }
+        let mut brackets: Vec<(usize, f64, f64)> = Vec::new();
+        let mut pressing: Option<usize> = None;
+        for k in 0..contacts {
+            let g0 = gap_of(m, k, step.y0);
+            let tol = dynamics::touching_tolerance(m, k, &step.y0[..n]);
+            let mut prev = (t0, g0);
+            for (&tj, yj) in times.iter().zip(&states) {
+                let g = gap_of(m, k, yj);
+                if prev.1 > 0.0 && g <= 0.0 {
+                    brackets.push((k, prev.0, tj));
+                    break;
+                }
+                if g0 <= 0.0 && g < -tol && g < g0 {
+                    pressing = pressing.or(Some(k));
+                    break;
+                }
+                prev = (tj, g);
+            }
+        }
         let y1 = step.y1.to_vec();
-        let mut event: Option<(usize, f64)> = None;
-        if let Some((k, a, b)) = candidate {
-            event = locate(
-                &mut ode, &mut f, m, k, t0, &ystart, t1, &y1, a, b, &mut trial,
-            )
-            .map(|te| (k, te));
+        let mut event: Option<(Arrival, f64)> = None;
+        if let Some(k) = pressing {
+            event = Some((Arrival::Pressing(k), t0));
+        } else {
+            for (k, a, b) in brackets {
+                let located = locate(
+                    &mut ode, &mut f, m, k, t0, &ystart, t1, &y1, a, b, &mut trial,
+                );
+                if let Some(te) = located {
+                    if event.is_none_or(|(_, t_first)| te < t_first) {
+                        event = Some((Arrival::Crossing(k), te));
+                    }
+                }
+            }
         }
         match event {
-            Some((k, te)) => {
+            Some((arrival, te)) => {
                 for (ts, ys) in inside {
                     if ts < te {
                         rec.push(ts, &ys, Mode::Flight);
@@ -494,10 +656,14 @@ pub fn simulate<M: Mechanism + ?Sized>(
                         rec.next = rec.next.min((ts / rec.dt).round() as u64);
                     }
                 }
-                ode.trial_step(&mut f, t0, &ystart, te - t0, &mut trial);
-                y.copy_from_slice(&trial);
+                if te > t0 {
+                    ode.trial_step(&mut f, t0, &ystart, te - t0, &mut trial);
+                    y.copy_from_slice(&trial);
+                } else {
+                    y.copy_from_slice(&ystart);
+                }
                 t = te;
-                pending = Some(k);
+                pending = Some(arrival);
             }
             None => {
                 for (ts, ys) in inside {
@@ -512,6 +678,21 @@ pub fn simulate<M: Mechanism + ?Sized>(
             rec.next += 1;
         }
     }
+}
+
+/// The end of a run at `(t, y)`, recorded as its last sample (so that the run's final energy
+/// is the state's at the stop).
+fn stop_at<M: Mechanism + ?Sized>(
+    mut rec: Recorder<'_, M>,
+    impacts: Vec<ImpactRecord>,
+    events: Vec<(f64, EventKind)>,
+    stop: StopReason,
+    t: f64,
+    y: &[f64],
+    ode: &Dopri5,
+) -> Run {
+    rec.push(t, y, Mode::Flight);
+    finish(rec, impacts, events, stop, t, ode)
 }
 
 /// The end of a run.

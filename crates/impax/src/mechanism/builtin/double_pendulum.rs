@@ -12,7 +12,9 @@ use crate::mechanism::{BodyInertia, Contact, Mechanism, Pose, Real, Surface};
 /// vertical (counter-clockwise). Rod `i` has mass `m_i`, length `l_i`, central inertia
 /// `m_i l_i²/12`. Centres: `r₁ = (l₁/2)(sin θ₁, −cos θ₁)`,
 /// `r₂ = l₁ (sin θ₁, −cos θ₁) + (l₂/2)(sin θ₂, −cos θ₂)`; the tip
-/// `c = l₁ (sin θ₁, −cos θ₁) + l₂ (sin θ₂, −cos θ₂)` strikes the floor `y = floor`.
+/// `c = l₁ (sin θ₁, −cos θ₁) + l₂ (sin θ₂, −cos θ₂)` strikes the floor `y = floor`
+/// (contact 0, `tip of rod 2`). The elbow, the joint `l₁ (sin θ₁, −cos θ₁)` of the two rods,
+/// can meet the floor too (contact 1, `elbow`): a simulation watches both.
 ///
 /// Mass matrix (the hand-derived check of the automatic one):
 /// `M = [[(m₁/3 + m₂) l₁², m₂ l₁ l₂ cos(θ₁−θ₂)/2], [·, m₂ l₂²/3]]`.
@@ -46,7 +48,7 @@ pub struct DoublePendulum {
     bodies: [BodyInertia; 2],
     lengths: [f64; 2],
     gravity: f64,
-    contacts: [Contact; 1],
+    contacts: [Contact; 2],
 }
 
 impl DoublePendulum {
@@ -74,11 +76,18 @@ impl DoublePendulum {
             ],
             lengths: [l1, l2],
             gravity: gravity(g)?,
-            contacts: [Contact {
-                name: "tip of rod 2",
-                body: 1,
-                surface: Surface::floor(floor),
-            }],
+            contacts: [
+                Contact {
+                    name: "tip of rod 2",
+                    body: 1,
+                    surface: Surface::floor(floor),
+                },
+                Contact {
+                    name: "elbow",
+                    body: 0,
+                    surface: Surface::floor(floor),
+                },
+            ],
         })
     }
 
@@ -90,10 +99,12 @@ impl DoublePendulum {
         p
     }
 
-    /// Move the floor to the height of the tip at `q`.
+    /// Move the floor (of both contacts) to the height of the tip at `q`.
     pub fn put_floor_at_tip(&mut self, q: [f64; 2]) {
         let tip = self.contact_point(0, &q);
-        self.contacts[0].surface = Surface::floor(tip[1]);
+        for c in &mut self.contacts {
+            c.surface = Surface::floor(tip[1]);
+        }
     }
 
     /// Rod lengths `(l₁, l₂)`.
@@ -131,9 +142,12 @@ impl Mechanism for DoublePendulum {
         &self.contacts
     }
 
-    fn contact_point<D: Real>(&self, _k: usize, q: &[D]) -> [D; 2] {
+    fn contact_point<D: Real>(&self, k: usize, q: &[D]) -> [D; 2] {
         let [l1, l2] = self.lengths;
         let (s1, c1) = q[0].sin_cos();
+        if k == 1 {
+            return [s1 * l1, -(c1 * l1)];
+        }
         let (s2, c2) = q[1].sin_cos();
         [s1 * l1 + s2 * l2, -(c1 * l1) - c2 * l2]
     }

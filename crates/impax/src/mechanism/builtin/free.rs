@@ -106,7 +106,9 @@ impl Mechanism for Sphere {
 }
 
 /// A uniform rod of mass `m` and length `l` (`I = m l²/12`) moving in the plane above the
-/// floor `y = floor`; `θ` is its angle from the floor, and its lower end the contact.
+/// floor `y = floor`; `θ` is its angle from the floor. Both ends can strike the floor: contact
+/// 0, `end A`, is the material point `(−l/2, 0)` of the rod's frame (the lower end when
+/// `0 < θ < π`), contact 1, `end B`, the point `(+l/2, 0)`.
 ///
 /// # Example: a rod striking with its end
 /// A unit rod at 50° to the floor translating at (0.5, −1): the end's contact-space `W` has
@@ -130,7 +132,7 @@ pub struct Rod {
     bodies: [BodyInertia; 1],
     length: f64,
     gravity: f64,
-    contacts: [Contact; 1],
+    contacts: [Contact; 2],
 }
 
 impl Rod {
@@ -150,11 +152,18 @@ impl Rod {
             }],
             length,
             gravity: gravity(g)?,
-            contacts: [Contact {
-                name: "lower end",
-                body: 0,
-                surface: Surface::floor(floor),
-            }],
+            contacts: [
+                Contact {
+                    name: "end A",
+                    body: 0,
+                    surface: Surface::floor(floor),
+                },
+                Contact {
+                    name: "end B",
+                    body: 0,
+                    surface: Surface::floor(floor),
+                },
+            ],
         })
     }
 }
@@ -175,10 +184,10 @@ impl Mechanism for Rod {
     fn contacts(&self) -> &[Contact] {
         &self.contacts
     }
-    fn contact_point<D: Real>(&self, _k: usize, q: &[D]) -> [D; 2] {
-        // The lower of the two ends.
+    fn contact_point<D: Real>(&self, k: usize, q: &[D]) -> [D; 2] {
+        // End A at −l/2 along the rod's axis, end B at +l/2.
         let (s, c) = q[2].sin_cos();
-        let half = if s.re() >= 0.0 {
+        let half = if k == 0 {
             -0.5 * self.length
         } else {
             0.5 * self.length

@@ -2,11 +2,11 @@
 //!
 //! | mechanism | coordinates | contact |
 //! |---|---|---|
-//! | [`DoublePendulum`] | θ₁, θ₂ (absolute, from the downward vertical) | tip of rod 2 on a floor |
+//! | [`DoublePendulum`] | θ₁, θ₂ (absolute, from the downward vertical) | tip of rod 2, elbow on a floor |
 //! | [`RingPendulum`] | x (ring centre), φ (pendulum from the downward vertical) | — (rolls) |
 //! | [`CartPendulum`] | x (cart), φ | — |
 //! | [`Sphere`] | x, y, θ | lowest point on a floor |
-//! | [`Rod`] | x, y, θ (from the floor) | lower end on a floor |
+//! | [`Rod`] | x, y, θ (from the floor) | end A, end B on a floor |
 
 mod double_pendulum;
 mod free;
