@@ -210,6 +210,7 @@ proptest! {
             o.energy_change <= gain_bound(&p, &o),
             "ΔT = {} > 0 (approach energy {}) for {:?}", o.energy_change, p.approach_energy(), p
         );
+        prop_assert_ne!(o.verdict, impax::planar::Verdict::EnergyGained);
     }
 
     #[test]
@@ -219,6 +220,7 @@ proptest! {
             o.energy_change <= gain_bound(&p, &o),
             "ΔT = {} > 0 (approach energy {}) for {:?}", o.energy_change, p.approach_energy(), p
         );
+        prop_assert_ne!(o.verdict, impax::planar::Verdict::EnergyGained);
     }
 }
 

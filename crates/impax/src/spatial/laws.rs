@@ -7,11 +7,12 @@ use super::outcome::{Detail3, Outcome3, Phase3Kind, Phases3, Resolution3};
 use super::ContactProblem3;
 use crate::law::LawId;
 use crate::math::{Vec2, Vec3};
-use crate::planar::laws::ENERGY_GAIN_TOL;
+use crate::planar::laws::ENERGY_GAIN_ROUND_OFF;
 use crate::planar::{Breakdown, BreakdownReason, Inconsistency, Verdict, WorkSplit};
 
-/// Whether `ΔT` is a real gain: beyond `ENERGY_GAIN_TOL` of the approach energy and beyond
-/// the round-off of `½ (v⁻ + v⁺)·p`.
+/// Whether `ΔT` is a real gain: it exceeds the round-off of its evaluation
+/// `½ (v⁻ + v⁺)·p`, `16 ε Σ_i (|v⁻_i| + |v⁺_i| + (|W| |p|)_i) |p_i|` (the problem's own
+/// energy scale; as [`crate::planar::laws::is_energy_gain`]).
 pub fn is_energy_gain3(
     problem: &ContactProblem3,
     energy_change: f64,
@@ -22,8 +23,9 @@ pub fn is_energy_gain3(
         return false;
     }
     let v = problem.velocity();
-    let round_off = 4.0 * f64::EPSILON * (v.abs() + v_after.abs()).dot(&p.abs());
-    energy_change > round_off && energy_change > ENERGY_GAIN_TOL * problem.approach_energy()
+    let pa = p.abs();
+    let scale = (v.abs() + v_after.abs() + problem.w().abs() * pa).dot(&pa);
+    energy_change > ENERGY_GAIN_ROUND_OFF * scale
 }
 
 pub(crate) fn assemble(
