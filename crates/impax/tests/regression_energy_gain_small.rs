@@ -86,6 +86,10 @@ fn just_below_the_threshold_there_is_no_gain() {
     assert!(exact < 0.0);
     for law in [LawId::Whittaker, LawId::TwoPhase] {
         let o = law.resolve(&sphere(1.0, mu)).unwrap();
-        assert_ne!(o.verdict, Verdict::EnergyGained, "{law}: exact ΔT = {exact:e}");
+        assert_ne!(
+            o.verdict,
+            Verdict::EnergyGained,
+            "{law}: exact ΔT = {exact:e}"
+        );
     }
 }

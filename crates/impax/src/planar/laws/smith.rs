@@ -73,11 +73,26 @@ fn horner(p: &[f64; 4], x: f64) -> f64 {
     ((p[3] * x + p[2]) * x + p[1]) * x + p[0]
 }
 
+/// The factor `1/max(1, x²)` by which the cubic is evaluated (its sign is the cubic's, and
+/// its size stays representable for `|x|` up to the largest friction coefficients).
+#[inline]
+fn damping(x: f64) -> f64 {
+    let r = 1.0 / x.abs().max(1.0);
+    r * r
+}
+
 /// Real roots of the cubic with monomial coefficients `p` in `[lo, hi]`, each to the last
-/// bit (ascending, deduplicated). `f` evaluates the same cubic, possibly in a better
-/// conditioned (factored) form: the monomials only place the critical points that split
-/// `[lo, hi]` into monotone pieces and guide Newton; every sign test uses `f`.
-fn cubic_roots_in(p: &[f64; 4], f: impl Fn(f64) -> f64, lo: f64, hi: f64) -> ([f64; 3], usize) {
+/// bit (ascending, deduplicated). `f` evaluates the same cubic times [`damping`]`(x)`,
+/// possibly in a better conditioned (factored) form: the monomials only place the critical
+/// points that split `[lo, hi]` into monotone pieces and guide Newton; every sign test uses
+/// `f`.
+fn cubic_roots_in(
+    p: &[f64; 4],
+    f: impl Fn(f64) -> f64,
+    lo: f64,
+    hi: f64,
+    floor: f64,
+) -> ([f64; 3], usize) {
     let mut out = [0.0; 3];
     let mut n = 0;
     if p.iter().all(|&c| c == 0.0) {
@@ -111,7 +126,7 @@ fn cubic_roots_in(p: &[f64; 4], f: impl Fn(f64) -> f64, lo: f64, hi: f64) -> ([f
         if f1 == 0.0 || f0.signum() == f1.signum() {
             continue;
         }
-        push(monotone_root(p, &f, x0, x1, f0), &mut out, &mut n);
+        push(monotone_root(p, &f, x0, x1, f0, floor), &mut out, &mut n);
     }
     if f(hi) == 0.0 {
         push(hi, &mut out, &mut n);
@@ -121,16 +136,48 @@ fn cubic_roots_in(p: &[f64; 4], f: impl Fn(f64) -> f64, lo: f64, hi: f64) -> ([f
 
 /// The root of the cubic `p` in `[x0, x1]`, where `p` is monotone and changes sign
 /// (`f0 = p(x0)`): safeguarded Newton (a bisection step whenever Newton leaves the bracket
-/// or stalls), to the last bit in a handful of iterations.
+/// or stalls), to the last bit in a handful of iterations (to `floor · ε` near zero).
 fn monotone_root(
     p: &[f64; 4],
     eval: &impl Fn(f64) -> f64,
     mut x0: f64,
     mut x1: f64,
     f0: f64,
+    floor: f64,
 ) -> f64 {
     let s0 = f0.signum();
-    let mut x = 0.5 * (x0 + x1);
+    // Bisection in the exponent where the bracket spans orders of magnitude on one side of
+    // zero (ζ ∈ [0.1, 1e100] at μ = 1e100): a few steps instead of hundreds.
+    let split = |x0: f64, x1: f64| {
+        let (a, b) = (x0.max(floor), x1);
+        if x0 < 0.0 && x1 > 0.0 && (-x0 > 4.0 * x1.max(floor) || x1 > -4.0 * x0.min(-floor)) {
+            // A wide bracket about zero: split at zero, leaving one side.
+            0.0
+        } else if x0 >= 0.0 && b > 4.0 * a {
+            (a * b).sqrt()
+        } else if x1 <= 0.0 && -x0 > 4.0 * (-x1).max(floor) {
+            -(x0 * x1.min(-floor)).sqrt()
+        } else {
+            0.5 * (x0 + x1)
+        }
+    };
+    // The bracket's size in the same measure: orders of magnitude where `split` bisects the
+    // exponent, length elsewhere.
+    let size = |x0: f64, x1: f64| {
+        let (a, b) = (x0.max(floor), x1);
+        if x0 >= 0.0 && b > 4.0 * a {
+            (b / a).ln()
+        } else if x1 <= 0.0 && -x0 > 4.0 * (-x1).max(floor) {
+            (x0 / x1.min(-floor)).ln()
+        } else {
+            x1 - x0
+        }
+    };
+    let mut x = split(x0, x1);
+    // Newton is taken while it at least halves the bracket every other step (far from the
+    // root of a cubic it may crawl, halving x each step from ζ = 1e100).
+    let mut width = size(x0, x1);
+    let mut slow = false;
     for _ in 0..200 {
         let f = eval(x);
         if f == 0.0 {
@@ -141,16 +188,25 @@ fn monotone_root(
         } else {
             x1 = x;
         }
-        let df = (3.0 * p[3] * x + 2.0 * p[2]) * x + p[1];
+        // The derivative damped like `f` (the damping's own derivative multiplies `f` ≈ 0
+        // near the root): x r and r are at most 1, so nothing overflows.
+        let r = 1.0 / x.abs().max(1.0);
+        let xr = x * r;
+        let df = (3.0 * p[3] * xr + 2.0 * p[2] * r) * xr + p[1] * r * r;
         let newton = x - f / df;
-        let next = if newton > x0 && newton < x1 {
+        let now = size(x0, x1);
+        let halved = now <= 0.5 * width;
+        width = now;
+        let crawling = !halved && slow;
+        slow = !halved;
+        let next = if newton > x0 && newton < x1 && !crawling {
             newton
         } else {
-            0.5 * (x0 + x1)
+            split(x0, x1)
         };
-        // Converged when the step or the bracket is at the last bit of x; near η = 0 an
-        // absolute floor (1e-9 · ε) stops the chase of round-off noise.
-        let tol = 2.0 * f64::EPSILON * x.abs().max(1e-9);
+        // Converged when the step or the bracket is at the last bit of x; near zero an
+        // absolute floor (`floor · ε`) stops the chase of round-off noise.
+        let tol = 2.0 * f64::EPSILON * x.abs().max(floor);
         if (next - x).abs() <= tol || x1 - x0 <= tol {
             // Converged: the better of the bracket ends and the iterate.
             return [x, next]
@@ -184,42 +240,75 @@ impl ImpactLaw for Smith {
         let mu = problem.friction();
         let big_n = -(1.0 + problem.restitution()) * v.y;
         let (u0, g) = self.reference.unwrap_or((v.x, Vec2::new(a, b)));
-        // D(η) = d[0] + d[1] η ;  Q(η) = u⁺ D = q[0] + q[1] η
-        let d = [c, -mu * b];
-        let q = [u0 * c + big_n * g.y, -mu * (b * u0 + big_n * g.x)];
-        let dval = |eta: f64| d[0] + d[1] * eta;
-        let qval = |eta: f64| q[0] + q[1] * eta;
+        // Solved in the friction ratio ζ = μ η (p_t = −ζ p_n), in which `D` and `Q` do not
+        // contain μ: μ only bounds |ζ| ≤ μ and multiplies the right-hand side,
+        // ζ (U D² + Q²) = μ σ (U D² − Q²). (In η the coefficients grow as μ² and the roots
+        // shrink as 1/μ: from μ ≈ 1e20 the root finder's resolution, and at μ ≈ 1e154 the
+        // monomials, failed.) D(ζ) = d[0] + d[1] ζ ;  Q(ζ) = u⁺ D = q[0] + q[1] ζ.
+        let d = [c, -b];
+        let q = [u0 * c + big_n * g.y, -(b * u0 + big_n * g.x)];
+        let dval = |zeta: f64| d[0] + d[1] * zeta;
+        let qval = |zeta: f64| q[0] + q[1] * zeta;
         let sigma = sign(u0);
+        if mu == 0.0 {
+            // No friction: p_t = 0 whatever η; η from its definition with u⁺ = Q(0)/D(0).
+            let up = q[0] / d[0];
+            let den = up * up + u0 * u0;
+            let eta = if den > 0.0 {
+                (up * up.abs() + u0 * u0.abs()) / den
+            } else {
+                0.0
+            };
+            return checked(finish_line(
+                problem,
+                law,
+                PhaseKind::Slip(SlipDirection::of(v.x)),
+                0.0,
+                big_n / c,
+                LawDetail::Smith {
+                    eta,
+                    roots: 1,
+                    reading: self.reading,
+                },
+                None,
+            ));
+        }
+        // Roots closer to ζ = 0 than 1e-9 of the natural scale of a friction ratio (1, or μ
+        // when smaller) are not chased below round-off.
+        let floor = 1e-9 * mu.min(1.0);
         let mut cands = [0.0f64; 6];
         let mut nc = 0;
         let mut stick_root = None;
         if sigma != 0.0 {
-            if dval(sigma) > 0.0 && sigma * qval(sigma) >= 0.0 {
-                cands[nc] = sigma;
+            let full = mu * sigma;
+            if dval(full) > 0.0 && sigma * qval(full) >= 0.0 {
+                cands[nc] = full;
                 nc += 1;
             }
             let uu = u0 * u0;
             let dd = mul1(d, d);
             let qq = mul1(q, q);
-            // P(η) = η (U D² + Q²) − σ (U D² − Q²)
+            // P(ζ) = ζ (U D² + Q²) − μσ (U D² − Q²)
             let aa = [uu * dd[0] + qq[0], uu * dd[1] + qq[1], uu * dd[2] + qq[2]];
             let bb = [uu * dd[0] - qq[0], uu * dd[1] - qq[1], uu * dd[2] - qq[2]];
             let poly = [
-                -sigma * bb[0],
-                aa[0] - sigma * bb[1],
-                aa[1] - sigma * bb[2],
+                -full * bb[0],
+                aa[0] - full * bb[1],
+                aa[1] - full * bb[2],
                 aa[2],
             ];
             // The same cubic in factored form, far better conditioned near a pole of p_n
             // (small D) than its monomials.
-            let factored = |eta: f64| {
-                let (dv, qv) = (dval(eta), qval(eta));
+            let factored = |zeta: f64| {
+                // Damped by 1/max(1, ζ²) (see `damping`): D and Q divided by max(1, |ζ|).
+                let r = 1.0 / zeta.abs().max(1.0);
+                let (dv, qv) = (dval(zeta) * r, qval(zeta) * r);
                 let (ud, qq) = (uu * dv * dv, qv * qv);
-                eta * (ud + qq) - sigma * (ud - qq)
+                zeta * (ud + qq) - full * (ud - qq)
             };
-            // Only the reversal region σ Q(η) < 0 (Q linear) can hold admissible roots:
-            // search there, skipping the inadmissible ones (η = 0 is one whenever u⁺ = u⁻).
-            let (mut lo, mut hi) = (-1.0f64, 1.0f64);
+            // Only the reversal region σ Q(ζ) < 0 (Q linear) can hold admissible roots:
+            // search there, skipping the inadmissible ones (ζ = 0 is one whenever u⁺ = u⁻).
+            let (mut lo, mut hi) = (-mu, mu);
             let slope = sigma * q[1];
             let zero = -q[0] / q[1];
             if slope > 0.0 {
@@ -230,49 +319,49 @@ impl ImpactLaw for Smith {
                 hi = lo - 1.0; // no reversal anywhere
             }
             let (roots, nr) = if lo < hi {
-                cubic_roots_in(&poly, factored, lo, hi)
+                cubic_roots_in(&poly, factored, lo, hi, floor)
             } else {
                 ([0.0; 3], 0)
             };
-            for &eta in &roots[..nr] {
-                if dval(eta) > 0.0 && sigma * qval(eta) < 0.0 {
-                    cands[nc] = eta;
+            for &zeta in &roots[..nr] {
+                if dval(zeta) > 0.0 && sigma * qval(zeta) < 0.0 {
+                    cands[nc] = zeta;
                     nc += 1;
                 }
             }
         } else {
-            for eta in [1.0, -1.0] {
-                if dval(eta) > 0.0 && eta * qval(eta) > 0.0 {
-                    cands[nc] = eta;
+            for zeta in [mu, -mu] {
+                if dval(zeta) > 0.0 && zeta * qval(zeta) > 0.0 {
+                    cands[nc] = zeta;
                     nc += 1;
                 }
             }
-            let eta = if q[1] != 0.0 {
+            let zeta = if q[1] != 0.0 {
                 -q[0] / q[1]
             } else if q[0] == 0.0 {
                 0.0
             } else {
                 f64::NAN
             };
-            if (-1.0..=1.0).contains(&eta) && dval(eta) > 0.0 {
-                cands[nc] = eta;
+            if (-mu..=mu).contains(&zeta) && dval(zeta) > 0.0 {
+                cands[nc] = zeta;
                 nc += 1;
-                stick_root = Some(eta);
+                stick_root = Some(zeta);
             }
         }
         if nc == 0 {
             // Distinguish a negative normal impulse from a missing root.
-            let reason = if dval(1.0) <= 0.0 || dval(-1.0) <= 0.0 {
+            let reason = if dval(mu) <= 0.0 || dval(-mu) <= 0.0 {
                 BreakdownReason::NegativeNormalImpulse {
-                    denominator: dval(1.0).min(dval(-1.0)),
+                    denominator: dval(mu).min(dval(-mu)),
                 }
             } else {
                 BreakdownReason::NoEtaRoot
             };
             return Err(Breakdown { law, reason });
         }
-        let eta = match stick_root {
-            Some(eta) => eta,
+        let zeta = match stick_root {
+            Some(zeta) => zeta,
             None => cands[..nc]
                 .iter()
                 .copied()
@@ -284,10 +373,15 @@ impl ImpactLaw for Smith {
                     }
                 }),
         };
-        let pf = big_n / dval(eta);
-        let ratio = -mu * eta;
-        let dir = if eta != 0.0 && mu > 0.0 {
-            SlipDirection::of(eta)
+        let pf = big_n / dval(zeta);
+        // |ζ| = μ exactly when the slip keeps its direction: η = ±1 exactly.
+        let eta = if zeta.abs() == mu {
+            zeta.signum()
+        } else {
+            zeta / mu
+        };
+        let dir = if zeta != 0.0 {
+            SlipDirection::of(zeta)
         } else {
             SlipDirection::of(v.x)
         };
@@ -295,7 +389,7 @@ impl ImpactLaw for Smith {
             problem,
             law,
             PhaseKind::Slip(dir),
-            ratio,
+            -zeta,
             pf,
             LawDetail::Smith {
                 eta,
@@ -315,7 +409,7 @@ mod tests {
     fn cubic_roots_found_to_the_last_bit() {
         // (x − 0.5)(x + 0.25)(x − 0.9) = x³ − 1.15x² + 0.1x + 0.1125
         let p = [0.1125, 0.1, -1.15, 1.0];
-        let (r, n) = cubic_roots_in(&p, |x| horner(&p, x), -1.0, 1.0);
+        let (r, n) = cubic_roots_in(&p, |x| horner(&p, x) * damping(x), -1.0, 1.0, 1e-9);
         assert_eq!(n, 3);
         for (x, y) in r.iter().zip([-0.25, 0.5, 0.9]) {
             assert!((x - y).abs() < 1e-15, "{x} vs {y}");
