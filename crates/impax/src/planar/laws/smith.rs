@@ -75,14 +75,14 @@ fn horner(p: &[f64; 4], x: f64) -> f64 {
 
 /// The factor `1/max(1, x²)` by which the cubic is evaluated (its sign is the cubic's, and
 /// its size stays representable for `|x|` up to the largest friction coefficients).
-#[inline]
+#[cfg(test)]
 fn damping(x: f64) -> f64 {
     let r = 1.0 / x.abs().max(1.0);
     r * r
 }
 
 /// Real roots of the cubic with monomial coefficients `p` in `[lo, hi]`, each to the last
-/// bit (ascending, deduplicated). `f` evaluates the same cubic times [`damping`]`(x)`,
+/// bit (ascending, deduplicated). `f` evaluates the same cubic times `1/max(1, x²)`,
 /// possibly in a better conditioned (factored) form: the monomials only place the critical
 /// points that split `[lo, hi]` into monotone pieces and guide Newton; every sign test uses
 /// `f`.
