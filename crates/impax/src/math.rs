@@ -29,6 +29,19 @@ pub fn sign(x: f64) -> f64 {
     }
 }
 
+/// The power of two that brings `x > 0` near one, limited so that every nonzero entry of
+/// `entries`, scaled by it, stays within `[2⁻¹⁰⁰⁰, 2¹⁰⁰⁰]`: the exact change of units in
+/// which a law is evaluated when its inputs are extreme.
+pub(crate) fn unit_factor(x: f64, entries: &[f64]) -> f64 {
+    let exponent = |y: f64| y.abs().log2().round() as i32;
+    let (mut lo, mut hi) = (i32::MIN, i32::MAX);
+    for &y in entries.iter().filter(|y| **y != 0.0) {
+        lo = lo.max(-1000 - exponent(y));
+        hi = hi.min(1000 - exponent(y));
+    }
+    2f64.powi((-exponent(x)).max(lo).min(hi))
+}
+
 /// Planar cross product `a × b = a.x b.y − a.y b.x` (the z component).
 #[inline]
 pub fn cross2(a: Vec2, b: Vec2) -> f64 {

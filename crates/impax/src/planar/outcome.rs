@@ -1,5 +1,6 @@
 //! What every planar law returns: the impulse, velocities, work split, phases and a verdict.
 
+use super::problem::Units;
 use crate::law::LawId;
 use crate::math::Vec2;
 use std::fmt;
@@ -324,6 +325,84 @@ impl Outcome {
             self.energy_change,
             self.compression_impulse,
         )
+    }
+}
+
+impl Outcome {
+    /// The outcome of the problem in [`Units`] expressed in the problem's own units.
+    pub(crate) fn in_problem_units(mut self, u: Units) -> Self {
+        self.impulse = self.impulse.map(|x| u.impulse(x));
+        self.velocity_after = self.velocity_after.map(|x| u.velocity(x));
+        self.compression_impulse = self.compression_impulse.map(|x| u.impulse(x));
+        self.work = WorkSplit {
+            compression: u.work(self.work.compression),
+            restitution: u.work(self.work.restitution),
+            friction: u.work(self.work.friction),
+        };
+        self.energy_change = u.work(self.energy_change);
+        self.phases = self.phases.in_problem_units(u);
+        self.inconsistency = self.inconsistency.map(|i| match i {
+            Inconsistency::SlipReversed { slip_after } => Inconsistency::SlipReversed {
+                slip_after: u.velocity(slip_after),
+            },
+            Inconsistency::ReversalDidNotHappen { slip_after } => {
+                Inconsistency::ReversalDidNotHappen {
+                    slip_after: u.velocity(slip_after),
+                }
+            }
+            other => other,
+        });
+        self.detail = match self.detail {
+            LawDetail::TwoPhase { switch_impulse } => LawDetail::TwoPhase {
+                switch_impulse: switch_impulse.map(|x| u.impulse(x)),
+            },
+            LawDetail::DarbouxKeller { slip_halt } => LawDetail::DarbouxKeller {
+                slip_halt: slip_halt.map(|x| u.impulse(x)),
+            },
+            other => other,
+        };
+        self
+    }
+}
+
+impl OutcomeBrief {
+    /// The brief in the problem's own units (as [`Outcome::in_problem_units`]).
+    pub(crate) fn in_problem_units(mut self, u: Units) -> Self {
+        self.energy_change = u.work(self.energy_change);
+        self.phases = self.phases.in_problem_units(u);
+        self
+    }
+}
+
+impl Phases {
+    /// The phases with their end impulses in the problem's own units.
+    pub(crate) fn in_problem_units(mut self, u: Units) -> Self {
+        for p in &mut self.items[..self.len] {
+            p.ends_at = u.impulse(p.ends_at);
+        }
+        self
+    }
+}
+
+impl Breakdown {
+    /// The breakdown with its numbers in the problem's own units.
+    pub(crate) fn in_problem_units(mut self, u: Units) -> Self {
+        self.reason = match self.reason {
+            BreakdownReason::NegativeNormalImpulse { denominator } => {
+                BreakdownReason::NegativeNormalImpulse {
+                    denominator: u.inverse_inertia(denominator),
+                }
+            }
+            BreakdownReason::NoConsistentSplit {
+                switch_impulse,
+                total_impulse,
+            } => BreakdownReason::NoConsistentSplit {
+                switch_impulse: u.impulse(switch_impulse),
+                total_impulse: u.impulse(total_impulse),
+            },
+            other => other,
+        };
+        self
     }
 }
 

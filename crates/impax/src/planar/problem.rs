@@ -277,6 +277,34 @@ impl ContactProblem {
         Self::with_inertia(&self.inverse_inertia(), self.v, friction, restitution)
     }
 
+    /// The problem in units where its normal velocity and `W_nn` are near one, when they are
+    /// not (outside `[2⁻⁶⁰, 2⁶⁰]`, where the normal works `∝ v_n²/W_nn` and the squares in
+    /// the laws under- or overflow): `v → a v`, `W → b W` with `a`, `b` powers of two —
+    /// exact, so a law's result in these units, scaled back by [`Units`], is the result
+    /// the law would give with an unbounded exponent. Each factor is limited so that no
+    /// nonzero entry leaves `[2⁻¹⁰⁰⁰, 2¹⁰⁰⁰]`. `None` when no scaling is needed (the common
+    /// case).
+    #[inline]
+    pub(crate) fn in_units(&self) -> Option<(ContactProblem, Units)> {
+        const LO: f64 = 1.0 / (1u64 << 60) as f64;
+        const HI: f64 = (1u64 << 60) as f64;
+        let vn = self.v.y.abs();
+        if (LO..=HI).contains(&vn) && (LO..=HI).contains(&self.c) {
+            return None;
+        }
+        let a = Units::factor(vn, &[self.v.x, self.v.y]);
+        let b = Units::factor(self.c, &[self.a, self.b, self.c]);
+        let scaled = ContactProblem {
+            a: self.a * b,
+            b: self.b * b,
+            c: self.c * b,
+            v: self.v * a,
+            mu: self.mu,
+            e: self.e,
+        };
+        Some((scaled, Units { a, b }))
+    }
+
     /// The validated `W` of this problem.
     #[inline]
     pub fn inverse_inertia(&self) -> InverseInertia {
@@ -285,5 +313,47 @@ impl ContactProblem {
             b: self.b,
             c: self.c,
         }
+    }
+}
+
+/// The change of units of [`ContactProblem::in_units`]: velocities times `a`, `W` times `b`,
+/// hence impulses times `a/b` and works times `a²/b` (the Darboux–Keller equations and every
+/// algebraic law are homogeneous in these units).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Units {
+    /// The factor of velocities.
+    pub a: f64,
+    /// The factor of `W`.
+    pub b: f64,
+}
+
+impl Units {
+    fn factor(x: f64, entries: &[f64]) -> f64 {
+        crate::math::unit_factor(x, entries)
+    }
+
+    /// Impulses back to the problem's units.
+    #[inline]
+    pub fn impulse(&self, p: f64) -> f64 {
+        p * (self.b / self.a)
+    }
+
+    /// Velocities back to the problem's units.
+    #[inline]
+    pub fn velocity(&self, v: f64) -> f64 {
+        v / self.a
+    }
+
+    /// Works and energies back to the problem's units.
+    #[inline]
+    pub fn work(&self, w: f64) -> f64 {
+        // (b / a) / a: each factor a power of two, so exact.
+        w * (self.b / self.a) / self.a
+    }
+
+    /// A quantity with the units of `W` (velocity per impulse) back to the problem's units.
+    #[inline]
+    pub fn inverse_inertia(&self, w: f64) -> f64 {
+        w / self.b
     }
 }

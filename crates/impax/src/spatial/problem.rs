@@ -118,6 +118,17 @@ impl ContactProblem3 {
         Self::new(m, Vec3::new(v.x, 0.0, v.y), p.friction(), p.restitution())
     }
 
+    /// The same problem with velocities times `a` and `W` times `b` (powers of two: exact),
+    /// without the validation of [`ContactProblem3::new`] (the approach energy may not be
+    /// representable in these units).
+    pub(crate) fn in_units(&self, a: f64, b: f64) -> Self {
+        Self {
+            w: self.w * b,
+            v: self.v * a,
+            ..*self
+        }
+    }
+
     /// The matrix `W`.
     #[inline]
     pub fn w(&self) -> &Mat3 {

@@ -29,62 +29,64 @@ impl ImpactLaw for Brach {
     }
 
     fn resolve(&self, problem: &ContactProblem) -> Resolution {
-        let law = LawId::Brach;
-        let (a, b, c) = (problem.wtt(), problem.wtn(), problem.wnn());
-        let v = problem.velocity();
-        let mu = problem.friction();
-        let target_n = -(1.0 + problem.restitution()) * v.y;
-        let det = a * c - b * b;
-        // p* = W⁻¹ (−v_t, target_n)
-        let pt_star = (c * -v.x - b * target_n) / det;
-        let pn_star = (-b * -v.x + a * target_n) / det;
-        // With p*_n ≤ 0 no compressive impulse can stop the slip: the ratio is beyond any
-        // cone, in the direction of p*_t.
-        let sticking = pn_star > 0.0;
-        let ratio = if sticking {
-            pt_star / pn_star
-        } else {
-            f64::INFINITY * sign(pt_star)
-        };
-        if sticking && ratio.abs() <= mu {
-            let mut out = finish_line(
+        super::in_units(problem, |problem, _, _| {
+            let law = LawId::Brach;
+            let (a, b, c) = (problem.wtt(), problem.wtn(), problem.wnn());
+            let v = problem.velocity();
+            let mu = problem.friction();
+            let target_n = -(1.0 + problem.restitution()) * v.y;
+            let det = a * c - b * b;
+            // p* = W⁻¹ (−v_t, target_n)
+            let pt_star = (c * -v.x - b * target_n) / det;
+            let pn_star = (-b * -v.x + a * target_n) / det;
+            // With p*_n ≤ 0 no compressive impulse can stop the slip: the ratio is beyond any
+            // cone, in the direction of p*_t.
+            let sticking = pn_star > 0.0;
+            let ratio = if sticking {
+                pt_star / pn_star
+            } else {
+                f64::INFINITY * sign(pt_star)
+            };
+            if sticking && ratio.abs() <= mu {
+                let mut out = finish_line(
+                    problem,
+                    law,
+                    PhaseKind::Stick,
+                    ratio,
+                    pn_star,
+                    LawDetail::Brach {
+                        ratio,
+                        capped: false,
+                    },
+                    None,
+                );
+                // p* is defined by v_t⁺ = 0: keep that exact rather than its round-off.
+                out.velocity_after.x = 0.0;
+                return checked(out);
+            }
+            let k = mu * sign(ratio);
+            let pf = newton_normal_impulse(problem, k).map_err(|denominator| Breakdown {
+                law,
+                reason: BreakdownReason::NegativeNormalImpulse { denominator },
+            })?;
+            // Friction along −ŝ means slip along −sign(k) (frictionless: the initial slip).
+            let dir = if k != 0.0 {
+                SlipDirection::of(-k)
+            } else {
+                SlipDirection::of(v.x)
+            };
+            checked(finish_line(
                 problem,
                 law,
-                PhaseKind::Stick,
-                ratio,
-                pn_star,
+                PhaseKind::Slip(dir),
+                k,
+                pf,
                 LawDetail::Brach {
                     ratio,
-                    capped: false,
+                    capped: true,
                 },
                 None,
-            );
-            // p* is defined by v_t⁺ = 0: keep that exact rather than its round-off.
-            out.velocity_after.x = 0.0;
-            return checked(out);
-        }
-        let k = mu * sign(ratio);
-        let pf = newton_normal_impulse(problem, k).map_err(|denominator| Breakdown {
-            law,
-            reason: BreakdownReason::NegativeNormalImpulse { denominator },
-        })?;
-        // Friction along −ŝ means slip along −sign(k) (frictionless: the initial slip).
-        let dir = if k != 0.0 {
-            SlipDirection::of(-k)
-        } else {
-            SlipDirection::of(v.x)
-        };
-        checked(finish_line(
-            problem,
-            law,
-            PhaseKind::Slip(dir),
-            k,
-            pf,
-            LawDetail::Brach {
-                ratio,
-                capped: true,
-            },
-            None,
-        ))
+            ))
+        })
     }
 }

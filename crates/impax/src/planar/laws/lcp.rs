@@ -181,28 +181,30 @@ impl ImpactLaw for Lcp {
     }
 
     fn resolve(&self, problem: &ContactProblem) -> Resolution {
-        let cands = Self::candidates(problem);
-        let consistent = cands.iter().filter(|c| c.violation == 0.0).count();
-        // The first consistent candidate (stick first: on the boundary it leaves v_t⁺ = 0
-        // exactly); else the one nearest to consistency (round-off).
-        let best = cands
-            .iter()
-            .copied()
-            .min_by(|x, y| x.violation.total_cmp(&y.violation))
-            .expect("three candidates");
-        let out = finish_line(
-            problem,
-            LawId::Lcp,
-            best.kind,
-            best.ratio,
-            best.pn,
-            LawDetail::Lcp {
-                ratio: best.ratio,
-                consistent_candidates: consistent,
-            },
-            None,
-        );
-        checked(tidy(out, best.kind))
+        super::in_units(problem, |problem, _, _| {
+            let cands = Self::candidates(problem);
+            let consistent = cands.iter().filter(|c| c.violation == 0.0).count();
+            // The first consistent candidate (stick first: on the boundary it leaves v_t⁺ = 0
+            // exactly); else the one nearest to consistency (round-off).
+            let best = cands
+                .iter()
+                .copied()
+                .min_by(|x, y| x.violation.total_cmp(&y.violation))
+                .expect("three candidates");
+            let out = finish_line(
+                problem,
+                LawId::Lcp,
+                best.kind,
+                best.ratio,
+                best.pn,
+                LawDetail::Lcp {
+                    ratio: best.ratio,
+                    consistent_candidates: consistent,
+                },
+                None,
+            );
+            checked(tidy(out, best.kind))
+        })
     }
 }
 

@@ -77,6 +77,39 @@ pub fn is_energy_gain(
     energy_change > ENERGY_GAIN_ROUND_OFF * scale
 }
 
+/// Resolve `problem` with `law`, in units where its normal velocity and `W_nn` are near one
+/// when they are not ([`ContactProblem::in_units`]), and the result scaled back: every law is
+/// invariant under scaling of the velocity and of `W` (masses) wherever its numbers are
+/// representable (e.g. `energetic` keeps its restitution at `v_n⁻ = −1e-300`, where the
+/// compression work `∝ v_n²` underflows). `law` receives the factors of velocity and `W`
+/// (for a reference velocity of its own, as `smith-centre`'s).
+#[inline(always)]
+pub(crate) fn in_units(
+    problem: &ContactProblem,
+    law: impl Fn(&ContactProblem, f64, f64) -> Resolution,
+) -> Resolution {
+    match problem.in_units() {
+        None => law(problem, 1.0, 1.0),
+        Some((scaled, u)) => law(&scaled, u.a, u.b)
+            .map(|o| o.in_problem_units(u))
+            .map_err(|b| b.in_problem_units(u)),
+    }
+}
+
+/// [`in_units`] for the brief of an outcome.
+#[inline(always)]
+pub(crate) fn in_units_brief(
+    problem: &ContactProblem,
+    law: impl Fn(&ContactProblem) -> BriefResolution,
+) -> BriefResolution {
+    match problem.in_units() {
+        None => law(problem),
+        Some((scaled, u)) => law(&scaled)
+            .map(|o| o.in_problem_units(u))
+            .map_err(|b| b.in_problem_units(u)),
+    }
+}
+
 /// The normal impulse Newton's rule asks of a straight path with friction ratio `k`:
 /// `p_n = −(1+e) v_n⁻ / (W_nn + k W_tn)`; `Err(denominator)` when it is not positive.
 #[inline]

@@ -37,21 +37,25 @@ impl ImpactLaw for Poisson {
 
     #[inline]
     fn resolve(&self, problem: &ContactProblem) -> Resolution {
-        let (path, pf) = Self::end(problem);
-        checked(assemble(
-            problem,
-            LawId::Poisson,
-            path.summarize(pf),
-            LawDetail::DarbouxKeller {
-                slip_halt: path.slip_halt().filter(|&ps| ps < pf),
-            },
-            None,
-        ))
+        super::in_units(problem, |problem, _, _| {
+            let (path, pf) = Self::end(problem);
+            checked(assemble(
+                problem,
+                LawId::Poisson,
+                path.summarize(pf),
+                LawDetail::DarbouxKeller {
+                    slip_halt: path.slip_halt().filter(|&ps| ps < pf),
+                },
+                None,
+            ))
+        })
     }
 
     #[inline]
     fn resolve_brief(&self, problem: &ContactProblem) -> BriefResolution {
-        let (path, pf) = Self::end(problem);
-        checked_brief(path.brief(problem, pf), LawId::Poisson)
+        super::in_units_brief(problem, |problem| {
+            let (path, pf) = Self::end(problem);
+            checked_brief(path.brief(problem, pf), LawId::Poisson)
+        })
     }
 }

@@ -234,170 +234,175 @@ impl ImpactLaw for Smith {
     }
 
     fn resolve(&self, problem: &ContactProblem) -> Resolution {
-        let law = self.id();
-        let (a, b, c) = (problem.wtt(), problem.wtn(), problem.wnn());
-        let v = problem.velocity();
-        let mu = problem.friction();
-        let big_n = -(1.0 + problem.restitution()) * v.y;
-        let (u0, g) = self.reference.unwrap_or((v.x, Vec2::new(a, b)));
-        // Solved in the friction ratio ζ = μ η (p_t = −ζ p_n), in which `D` and `Q` do not
-        // contain μ: μ only bounds |ζ| ≤ μ and multiplies the right-hand side,
-        // ζ (U D² + Q²) = μ σ (U D² − Q²). (In η the coefficients grow as μ² and the roots
-        // shrink as 1/μ: from μ ≈ 1e20 the root finder's resolution, and at μ ≈ 1e154 the
-        // monomials, failed.) D(ζ) = d[0] + d[1] ζ ;  Q(ζ) = u⁺ D = q[0] + q[1] ζ.
-        let d = [c, -b];
-        let q = [u0 * c + big_n * g.y, -(b * u0 + big_n * g.x)];
-        let dval = |zeta: f64| d[0] + d[1] * zeta;
-        let qval = |zeta: f64| q[0] + q[1] * zeta;
-        let sigma = sign(u0);
-        if mu == 0.0 {
-            // No friction: p_t = 0 whatever η; η from its definition with u⁺ = Q(0)/D(0).
-            let up = q[0] / d[0];
-            let den = up * up + u0 * u0;
-            let eta = if den > 0.0 {
-                (up * up.abs() + u0 * u0.abs()) / den
+        super::in_units(problem, |problem, a_v, b_w| {
+            let law = self.id();
+            let (a, b, c) = (problem.wtt(), problem.wtn(), problem.wnn());
+            let v = problem.velocity();
+            let mu = problem.friction();
+            let big_n = -(1.0 + problem.restitution()) * v.y;
+            // A reference velocity of its own (the centre's) in the units of `problem`.
+            let (u0, g) = self
+                .reference
+                .map_or((v.x, Vec2::new(a, b)), |(u, g)| (u * a_v, g * b_w));
+            // Solved in the friction ratio ζ = μ η (p_t = −ζ p_n), in which `D` and `Q` do not
+            // contain μ: μ only bounds |ζ| ≤ μ and multiplies the right-hand side,
+            // ζ (U D² + Q²) = μ σ (U D² − Q²). (In η the coefficients grow as μ² and the roots
+            // shrink as 1/μ: from μ ≈ 1e20 the root finder's resolution, and at μ ≈ 1e154 the
+            // monomials, failed.) D(ζ) = d[0] + d[1] ζ ;  Q(ζ) = u⁺ D = q[0] + q[1] ζ.
+            let d = [c, -b];
+            let q = [u0 * c + big_n * g.y, -(b * u0 + big_n * g.x)];
+            let dval = |zeta: f64| d[0] + d[1] * zeta;
+            let qval = |zeta: f64| q[0] + q[1] * zeta;
+            let sigma = sign(u0);
+            if mu == 0.0 {
+                // No friction: p_t = 0 whatever η; η from its definition with u⁺ = Q(0)/D(0).
+                let up = q[0] / d[0];
+                let den = up * up + u0 * u0;
+                let eta = if den > 0.0 {
+                    (up * up.abs() + u0 * u0.abs()) / den
+                } else {
+                    0.0
+                };
+                return checked(finish_line(
+                    problem,
+                    law,
+                    PhaseKind::Slip(SlipDirection::of(v.x)),
+                    0.0,
+                    big_n / c,
+                    LawDetail::Smith {
+                        eta,
+                        roots: 1,
+                        reading: self.reading,
+                    },
+                    None,
+                ));
+            }
+            // Roots closer to ζ = 0 than 1e-9 of the natural scale of a friction ratio (1, or μ
+            // when smaller) are not chased below round-off.
+            let floor = 1e-9 * mu.min(1.0);
+            let mut cands = [0.0f64; 6];
+            let mut nc = 0;
+            let mut stick_root = None;
+            if sigma != 0.0 {
+                let full = mu * sigma;
+                if dval(full) > 0.0 && sigma * qval(full) >= 0.0 {
+                    cands[nc] = full;
+                    nc += 1;
+                }
+                let uu = u0 * u0;
+                let dd = mul1(d, d);
+                let qq = mul1(q, q);
+                // P(ζ) = ζ (U D² + Q²) − μσ (U D² − Q²)
+                let aa = [uu * dd[0] + qq[0], uu * dd[1] + qq[1], uu * dd[2] + qq[2]];
+                let bb = [uu * dd[0] - qq[0], uu * dd[1] - qq[1], uu * dd[2] - qq[2]];
+                let poly = [
+                    -full * bb[0],
+                    aa[0] - full * bb[1],
+                    aa[1] - full * bb[2],
+                    aa[2],
+                ];
+                // The same cubic in factored form, far better conditioned near a pole of p_n
+                // (small D) than its monomials.
+                let factored = |zeta: f64| {
+                    // Damped by 1/max(1, ζ²) (see `damping`): D and Q divided by max(1, |ζ|).
+                    let r = 1.0 / zeta.abs().max(1.0);
+                    let (dv, qv) = (dval(zeta) * r, qval(zeta) * r);
+                    let (ud, qq) = (uu * dv * dv, qv * qv);
+                    zeta * (ud + qq) - full * (ud - qq)
+                };
+                // Only the reversal region σ Q(ζ) < 0 (Q linear) can hold admissible roots:
+                // search there, skipping the inadmissible ones (ζ = 0 is one whenever u⁺ = u⁻).
+                let (mut lo, mut hi) = (-mu, mu);
+                let slope = sigma * q[1];
+                let zero = -q[0] / q[1];
+                if slope > 0.0 {
+                    hi = hi.min(zero);
+                } else if slope < 0.0 {
+                    lo = lo.max(zero);
+                } else if sigma * q[0] >= 0.0 {
+                    hi = lo - 1.0; // no reversal anywhere
+                }
+                let (roots, nr) = if lo < hi {
+                    cubic_roots_in(&poly, factored, lo, hi, floor)
+                } else {
+                    ([0.0; 3], 0)
+                };
+                for &zeta in &roots[..nr] {
+                    if dval(zeta) > 0.0 && sigma * qval(zeta) < 0.0 {
+                        cands[nc] = zeta;
+                        nc += 1;
+                    }
+                }
             } else {
-                0.0
+                for zeta in [mu, -mu] {
+                    if dval(zeta) > 0.0 && zeta * qval(zeta) > 0.0 {
+                        cands[nc] = zeta;
+                        nc += 1;
+                    }
+                }
+                let zeta = if q[1] != 0.0 {
+                    -q[0] / q[1]
+                } else if q[0] == 0.0 {
+                    0.0
+                } else {
+                    f64::NAN
+                };
+                if (-mu..=mu).contains(&zeta) && dval(zeta) > 0.0 {
+                    cands[nc] = zeta;
+                    nc += 1;
+                    stick_root = Some(zeta);
+                }
+            }
+            if nc == 0 {
+                // Distinguish a negative normal impulse from a missing root.
+                let reason = if dval(mu) <= 0.0 || dval(-mu) <= 0.0 {
+                    BreakdownReason::NegativeNormalImpulse {
+                        denominator: dval(mu).min(dval(-mu)),
+                    }
+                } else {
+                    BreakdownReason::NoEtaRoot
+                };
+                return Err(Breakdown { law, reason });
+            }
+            let zeta = match stick_root {
+                Some(zeta) => zeta,
+                None => cands[..nc]
+                    .iter()
+                    .copied()
+                    .fold(f64::NEG_INFINITY, |best, x| {
+                        if sigma * x > sigma * best || best == f64::NEG_INFINITY {
+                            x
+                        } else {
+                            best
+                        }
+                    }),
             };
-            return checked(finish_line(
+            let pf = big_n / dval(zeta);
+            // |ζ| = μ exactly when the slip keeps its direction: η = ±1 exactly.
+            let eta = if zeta.abs() == mu {
+                zeta.signum()
+            } else {
+                zeta / mu
+            };
+            let dir = if zeta != 0.0 {
+                SlipDirection::of(zeta)
+            } else {
+                SlipDirection::of(v.x)
+            };
+            checked(finish_line(
                 problem,
                 law,
-                PhaseKind::Slip(SlipDirection::of(v.x)),
-                0.0,
-                big_n / c,
+                PhaseKind::Slip(dir),
+                -zeta,
+                pf,
                 LawDetail::Smith {
                     eta,
-                    roots: 1,
+                    roots: nc,
                     reading: self.reading,
                 },
                 None,
-            ));
-        }
-        // Roots closer to ζ = 0 than 1e-9 of the natural scale of a friction ratio (1, or μ
-        // when smaller) are not chased below round-off.
-        let floor = 1e-9 * mu.min(1.0);
-        let mut cands = [0.0f64; 6];
-        let mut nc = 0;
-        let mut stick_root = None;
-        if sigma != 0.0 {
-            let full = mu * sigma;
-            if dval(full) > 0.0 && sigma * qval(full) >= 0.0 {
-                cands[nc] = full;
-                nc += 1;
-            }
-            let uu = u0 * u0;
-            let dd = mul1(d, d);
-            let qq = mul1(q, q);
-            // P(ζ) = ζ (U D² + Q²) − μσ (U D² − Q²)
-            let aa = [uu * dd[0] + qq[0], uu * dd[1] + qq[1], uu * dd[2] + qq[2]];
-            let bb = [uu * dd[0] - qq[0], uu * dd[1] - qq[1], uu * dd[2] - qq[2]];
-            let poly = [
-                -full * bb[0],
-                aa[0] - full * bb[1],
-                aa[1] - full * bb[2],
-                aa[2],
-            ];
-            // The same cubic in factored form, far better conditioned near a pole of p_n
-            // (small D) than its monomials.
-            let factored = |zeta: f64| {
-                // Damped by 1/max(1, ζ²) (see `damping`): D and Q divided by max(1, |ζ|).
-                let r = 1.0 / zeta.abs().max(1.0);
-                let (dv, qv) = (dval(zeta) * r, qval(zeta) * r);
-                let (ud, qq) = (uu * dv * dv, qv * qv);
-                zeta * (ud + qq) - full * (ud - qq)
-            };
-            // Only the reversal region σ Q(ζ) < 0 (Q linear) can hold admissible roots:
-            // search there, skipping the inadmissible ones (ζ = 0 is one whenever u⁺ = u⁻).
-            let (mut lo, mut hi) = (-mu, mu);
-            let slope = sigma * q[1];
-            let zero = -q[0] / q[1];
-            if slope > 0.0 {
-                hi = hi.min(zero);
-            } else if slope < 0.0 {
-                lo = lo.max(zero);
-            } else if sigma * q[0] >= 0.0 {
-                hi = lo - 1.0; // no reversal anywhere
-            }
-            let (roots, nr) = if lo < hi {
-                cubic_roots_in(&poly, factored, lo, hi, floor)
-            } else {
-                ([0.0; 3], 0)
-            };
-            for &zeta in &roots[..nr] {
-                if dval(zeta) > 0.0 && sigma * qval(zeta) < 0.0 {
-                    cands[nc] = zeta;
-                    nc += 1;
-                }
-            }
-        } else {
-            for zeta in [mu, -mu] {
-                if dval(zeta) > 0.0 && zeta * qval(zeta) > 0.0 {
-                    cands[nc] = zeta;
-                    nc += 1;
-                }
-            }
-            let zeta = if q[1] != 0.0 {
-                -q[0] / q[1]
-            } else if q[0] == 0.0 {
-                0.0
-            } else {
-                f64::NAN
-            };
-            if (-mu..=mu).contains(&zeta) && dval(zeta) > 0.0 {
-                cands[nc] = zeta;
-                nc += 1;
-                stick_root = Some(zeta);
-            }
-        }
-        if nc == 0 {
-            // Distinguish a negative normal impulse from a missing root.
-            let reason = if dval(mu) <= 0.0 || dval(-mu) <= 0.0 {
-                BreakdownReason::NegativeNormalImpulse {
-                    denominator: dval(mu).min(dval(-mu)),
-                }
-            } else {
-                BreakdownReason::NoEtaRoot
-            };
-            return Err(Breakdown { law, reason });
-        }
-        let zeta = match stick_root {
-            Some(zeta) => zeta,
-            None => cands[..nc]
-                .iter()
-                .copied()
-                .fold(f64::NEG_INFINITY, |best, x| {
-                    if sigma * x > sigma * best || best == f64::NEG_INFINITY {
-                        x
-                    } else {
-                        best
-                    }
-                }),
-        };
-        let pf = big_n / dval(zeta);
-        // |ζ| = μ exactly when the slip keeps its direction: η = ±1 exactly.
-        let eta = if zeta.abs() == mu {
-            zeta.signum()
-        } else {
-            zeta / mu
-        };
-        let dir = if zeta != 0.0 {
-            SlipDirection::of(zeta)
-        } else {
-            SlipDirection::of(v.x)
-        };
-        checked(finish_line(
-            problem,
-            law,
-            PhaseKind::Slip(dir),
-            -zeta,
-            pf,
-            LawDetail::Smith {
-                eta,
-                roots: nc,
-                reading: self.reading,
-            },
-            None,
-        ))
+            ))
+        })
     }
 }
 

@@ -41,72 +41,75 @@ impl ImpactLaw for TwoPhase {
     }
 
     fn resolve(&self, problem: &ContactProblem) -> Resolution {
-        let law = LawId::TwoPhase;
-        let (a, b) = (problem.wtt(), problem.wtn());
-        let mu = problem.friction();
-        let v = problem.velocity();
-        let dir = SlipDirection::of(v.x);
-        let s0 = dir.sign();
-        let k1 = -mu * s0;
-        let dvt = a * k1 + b;
-        let switch = -v.x / dvt;
-        let halts = dir != SlipDirection::None && mu > 0.0 && switch.is_finite() && switch > 0.0;
-        let whittaker = newton_normal_impulse(problem, k1);
-        if !halts || matches!(whittaker, Ok(pw) if pw <= switch) {
-            // The slip does not halt before Whittaker's impulse ends: one phase.
-            let pf = whittaker.map_err(|denominator| Breakdown {
-                law,
-                reason: BreakdownReason::NegativeNormalImpulse { denominator },
-            })?;
-            return checked(finish_line(
+        super::in_units(problem, |problem, _, _| {
+            let law = LawId::TwoPhase;
+            let (a, b) = (problem.wtt(), problem.wtn());
+            let mu = problem.friction();
+            let v = problem.velocity();
+            let dir = SlipDirection::of(v.x);
+            let s0 = dir.sign();
+            let k1 = -mu * s0;
+            let dvt = a * k1 + b;
+            let switch = -v.x / dvt;
+            let halts =
+                dir != SlipDirection::None && mu > 0.0 && switch.is_finite() && switch > 0.0;
+            let whittaker = newton_normal_impulse(problem, k1);
+            if !halts || matches!(whittaker, Ok(pw) if pw <= switch) {
+                // The slip does not halt before Whittaker's impulse ends: one phase.
+                let pf = whittaker.map_err(|denominator| Breakdown {
+                    law,
+                    reason: BreakdownReason::NegativeNormalImpulse { denominator },
+                })?;
+                return checked(finish_line(
+                    problem,
+                    law,
+                    PhaseKind::Slip(dir),
+                    k1,
+                    pf,
+                    LawDetail::TwoPhase {
+                        switch_impulse: None,
+                    },
+                    None,
+                ));
+            }
+            let den = problem.wnn() + mu * s0 * b;
+            let total = (-(1.0 + problem.restitution()) * v.y + 2.0 * mu * s0 * b * switch) / den;
+            if den.is_nan() || den <= 0.0 || !total.is_finite() {
+                return Err(Breakdown {
+                    law,
+                    reason: BreakdownReason::NegativeNormalImpulse { denominator: den },
+                });
+            }
+            if total < switch {
+                return Err(Breakdown {
+                    law,
+                    reason: BreakdownReason::NoConsistentSplit {
+                        switch_impulse: switch,
+                        total_impulse: total,
+                    },
+                });
+            }
+            let reversed = if s0 > 0.0 {
+                SlipDirection::Negative
+            } else {
+                SlipDirection::Positive
+            };
+            let mut path = ImpulsePath::new(problem);
+            path.push(PhaseKind::Slip(dir), k1, switch);
+            path.push_from_rest(PhaseKind::Slip(reversed), -k1, f64::INFINITY);
+            let slip_after = path.velocity_at(total).x;
+            let inconsistency = (slip_after * s0 > 0.0)
+                .then_some(Inconsistency::ReversalDidNotHappen { slip_after });
+            checked(finish(
                 problem,
                 law,
-                PhaseKind::Slip(dir),
-                k1,
-                pf,
+                &path,
+                total,
                 LawDetail::TwoPhase {
-                    switch_impulse: None,
+                    switch_impulse: Some(switch),
                 },
-                None,
-            ));
-        }
-        let den = problem.wnn() + mu * s0 * b;
-        let total = (-(1.0 + problem.restitution()) * v.y + 2.0 * mu * s0 * b * switch) / den;
-        if den.is_nan() || den <= 0.0 || !total.is_finite() {
-            return Err(Breakdown {
-                law,
-                reason: BreakdownReason::NegativeNormalImpulse { denominator: den },
-            });
-        }
-        if total < switch {
-            return Err(Breakdown {
-                law,
-                reason: BreakdownReason::NoConsistentSplit {
-                    switch_impulse: switch,
-                    total_impulse: total,
-                },
-            });
-        }
-        let reversed = if s0 > 0.0 {
-            SlipDirection::Negative
-        } else {
-            SlipDirection::Positive
-        };
-        let mut path = ImpulsePath::new(problem);
-        path.push(PhaseKind::Slip(dir), k1, switch);
-        path.push_from_rest(PhaseKind::Slip(reversed), -k1, f64::INFINITY);
-        let slip_after = path.velocity_at(total).x;
-        let inconsistency =
-            (slip_after * s0 > 0.0).then_some(Inconsistency::ReversalDidNotHappen { slip_after });
-        checked(finish(
-            problem,
-            law,
-            &path,
-            total,
-            LawDetail::TwoPhase {
-                switch_impulse: Some(switch),
-            },
-            inconsistency,
-        ))
+                inconsistency,
+            ))
+        })
     }
 }

@@ -39,26 +39,28 @@ impl ImpactLaw for Whittaker {
 
     #[inline]
     fn resolve(&self, problem: &ContactProblem) -> Resolution {
-        let dir = SlipDirection::of(problem.velocity().x);
-        let ratio = -problem.friction() * dir.sign();
-        let pf = newton_normal_impulse(problem, ratio).map_err(|denominator| Breakdown {
-            law: LawId::Whittaker,
-            reason: BreakdownReason::NegativeNormalImpulse { denominator },
-        })?;
-        let v = problem.velocity();
-        let slip_after = v.x + (problem.wtt() * ratio + problem.wtn()) * pf;
-        let inconsistency = (dir != SlipDirection::None
-            && problem.friction() > 0.0
-            && slip_after * dir.sign() < 0.0)
-            .then_some(Inconsistency::SlipReversed { slip_after });
-        checked(finish_line(
-            problem,
-            LawId::Whittaker,
-            PhaseKind::Slip(dir),
-            ratio,
-            pf,
-            LawDetail::None,
-            inconsistency,
-        ))
+        super::in_units(problem, |problem, _, _| {
+            let dir = SlipDirection::of(problem.velocity().x);
+            let ratio = -problem.friction() * dir.sign();
+            let pf = newton_normal_impulse(problem, ratio).map_err(|denominator| Breakdown {
+                law: LawId::Whittaker,
+                reason: BreakdownReason::NegativeNormalImpulse { denominator },
+            })?;
+            let v = problem.velocity();
+            let slip_after = v.x + (problem.wtt() * ratio + problem.wtn()) * pf;
+            let inconsistency = (dir != SlipDirection::None
+                && problem.friction() > 0.0
+                && slip_after * dir.sign() < 0.0)
+                .then_some(Inconsistency::SlipReversed { slip_after });
+            checked(finish_line(
+                problem,
+                LawId::Whittaker,
+                PhaseKind::Slip(dir),
+                ratio,
+                pf,
+                LawDetail::None,
+                inconsistency,
+            ))
+        })
     }
 }
