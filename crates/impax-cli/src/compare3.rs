@@ -302,13 +302,26 @@ pub fn run(
             LawId::SPATIAL.map(|l| l.as_str()).join(", ")
         )));
     }
-    let problem = impact.problem(spec.friction, spec.restitution)?;
     let (ea, eb) = impact.energy_before();
-    let t0 = if ea.translational + eb.translational > 0.0 {
-        ea.translational + eb.translational
-    } else {
-        ea.total() + eb.total()
-    };
+    // Every energy is a number with room to spare (an `omega` of 1e200 gave a null
+    // `energy_before`).
+    for (prefix, e) in [("body", ea), ("other", eb)] {
+        for (key, part) in [("velocity", e.translational), ("omega", e.rotational)] {
+            if !(part.is_finite() && part <= 1e300) {
+                return Err(CliError::input(format!(
+                    "{prefix}.{key}: the kinetic energy it gives, {part:e}, is not representable with room to spare (it must be below 1e300)"
+                )));
+            }
+        }
+    }
+    let t0 = crate::scenario::reference_energy(
+        &impax::bodies::EnergyParts {
+            translational: ea.translational + eb.translational,
+            rotational: ea.rotational + eb.rotational,
+        },
+        "body.velocity",
+    )?;
+    let problem = impact.problem(spec.friction, spec.restitution)?;
     let results: Vec<_> = laws
         .iter()
         .map(|&l| (l, impact.resolve(l, &problem)))

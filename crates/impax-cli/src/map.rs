@@ -459,7 +459,10 @@ fn compare_threshold(
     } else {
         Vec::new()
     };
-    let mut report = format!(
+    let mut report = if ng < 2 {
+        "whittaker energy-gain boundary vs paper A eq. 13: not compared (the γ axis has a single value, no grid step)\n".to_string()
+    } else {
+        format!(
         "whittaker energy-gain boundary vs paper A eq. 13 (γ grid step {step:.6}): \
          max |engine − eq. 13| = {:.6} on the upper branch γ*₊ ({} α columns), {:.6} on the lower branch γ*₋ ({} α columns); \
          {disagree} columns where only one of them has a boundary inside the grid; \
@@ -473,7 +476,8 @@ fn compare_threshold(
         } else {
             "NO"
         },
-    );
+    )
+    };
     let at30 = whittaker_sphere_thresholds(30f64.to_radians(), e, f);
     if seed_coefficients {
         report.push_str(&format!(

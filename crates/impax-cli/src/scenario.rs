@@ -360,12 +360,12 @@ pub fn load(args: &CompareArgs) -> CliResult<Scenario> {
             PlanarImpact::between(body, state, ob, os)
         }
     };
-    let before = impact.energy_before();
-    let t0 = if before.translational > 0.0 {
-        before.translational
+    let motion = if spec.body.velocity.is_some() || spec.body.omega.is_some() {
+        "velocity"
     } else {
-        before.total()
+        "speed"
     };
+    let t0 = reference_energy(&impact.energy_before(), motion)?;
     Ok(Scenario {
         impact,
         friction: spec.friction,
@@ -384,4 +384,27 @@ fn read(path: &Path) -> CliResult<String> {
             path.display()
         ))
     })
+}
+
+/// The energy that normalises `ΔT` in tables, sweeps and maps: the translational kinetic
+/// energy before the impact (`½ m v0²` for the seed), or the total if that is zero. It must
+/// lie within `[1e-290, 1e300]` so that `ΔT/T0` is a number to full precision (at
+/// `v0 = 1e-300` it underflows to 0 and the ratio would be NaN): an error names `field`
+/// (the flag or key that sets the velocity) otherwise.
+pub fn reference_energy(before: &impax::bodies::EnergyParts, field: &str) -> impax::Result<f64> {
+    let t0 = if before.translational > 0.0 {
+        before.translational
+    } else {
+        before.total()
+    };
+    if (1e-290..=1e300).contains(&t0) {
+        Ok(t0)
+    } else {
+        Err(impax::Error::Invalid {
+            field: field.into(),
+            reason: format!(
+                "the kinetic energy before the impact, T0 = {t0:e}, must lie within [1e-290, 1e300] to normalise ΔT (ΔT/T0 is not representable otherwise); change the units"
+            ),
+        })
+    }
 }

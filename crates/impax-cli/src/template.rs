@@ -192,6 +192,16 @@ enum Motion {
     },
 }
 
+impl Motion {
+    /// The field that sets the body's velocity, for errors.
+    fn field(&self) -> &'static str {
+        match self {
+            Motion::Seed { .. } => "speed",
+            Motion::Direct { .. } => "velocity",
+        }
+    }
+}
+
 /// A body as numbers (absent parameters are NaN and never read).
 #[derive(Debug, Clone, Copy, PartialEq)]
 struct BodyParams {
@@ -542,12 +552,13 @@ impl Template {
                 self.friction,
                 self.restitution,
             )?;
-            let translational = body.translational_energy(&state);
-            let t0 = if translational > 0.0 {
-                translational
-            } else {
-                translational + body.rotational_energy(&state)
-            };
+            let t0 = crate::scenario::reference_energy(
+                &impax::bodies::EnergyParts {
+                    translational: body.translational_energy(&state),
+                    rotational: body.rotational_energy(&state),
+                },
+                self.body.motion.field(),
+            )?;
             problems.push(problem);
             t0s.push(t0);
             return Ok(());
@@ -564,12 +575,8 @@ impl Template {
             self.friction,
             self.restitution,
         )?;
-        let before = impact.energy_before();
-        let t0 = if before.translational > 0.0 {
-            before.translational
-        } else {
-            before.total()
-        };
+        let t0 =
+            crate::scenario::reference_energy(&impact.energy_before(), self.body.motion.field())?;
         problems.push(problem);
         t0s.push(t0);
         if let Some(v) = impacts {

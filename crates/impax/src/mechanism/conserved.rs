@@ -582,6 +582,28 @@ pub fn track<M: Mechanism + ?Sized>(
         times.push(t1);
         record(&mut tracks, &y, t1);
     }
+    // Every value, magnitude and deviation must be a number: an angular momentum about a
+    // point ~1e308 away overflows (the field to change is the point), as may any quantity
+    // of an extreme state.
+    for tr in &tracks {
+        let bad = tr.values.iter().any(|v| !v.is_finite())
+            || !tr.magnitude.is_finite()
+            || !tr.largest_deviation().is_finite();
+        if bad {
+            let (field, value) = match tr.kind {
+                QuantityKind::AngularMomentum { about } => ("about", about.norm()),
+                _ => ("q", q0.iter().chain(u0).fold(0.0f64, |a, x| a.max(x.abs()))),
+            };
+            return Err(Error::OutOfRange {
+                field: field.into(),
+                value,
+                reason: format!(
+                    "the quantity {} is not representable along the motion (it overflows)",
+                    tr.name
+                ),
+            });
+        }
+    }
     Ok(Tracking {
         times,
         tracks,

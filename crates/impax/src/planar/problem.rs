@@ -81,7 +81,7 @@ impl InverseInertia {
                 lower,
             });
         }
-        let b = 0.5 * (upper + lower);
+        let b = 0.5 * upper + 0.5 * lower;
         if a <= 0.0 {
             return Err(Error::NotPositiveDefinite {
                 field: "w".into(),
@@ -94,11 +94,25 @@ impl InverseInertia {
                 reason: format!("W_nn = {c} is not positive"),
             });
         }
-        let det = a * c - b * b;
-        if det <= 0.0 || det <= 1e-14 * a * c {
+        // det W relative to W_tt W_nn, on entries divided by the largest (no overflow at
+        // 1e308, no underflow at 1e-308).
+        let s = a.max(c).max(b.abs());
+        let (an, bn, cn) = (a / s, b / s, c / s);
+        let det = an * cn - bn * bn;
+        if det <= 1e-14 * an * cn {
             return Err(Error::NotPositiveDefinite {
                 field: "w".into(),
-                reason: format!("det W = {det} is not positive (W_tt W_nn − W_tn² must be > 0)"),
+                reason: if det <= 0.0 {
+                    format!(
+                        "det W = W_tt W_nn − W_tn² is not positive ({} of W_tt W_nn)",
+                        det / (an * cn)
+                    )
+                } else {
+                    format!(
+                        "det W = W_tt W_nn − W_tn² is {:e} of W_tt W_nn, below 1e-14 (numerically singular)",
+                        det / (an * cn)
+                    )
+                },
             });
         }
         Ok(Self { a, b, c })
@@ -259,7 +273,21 @@ impl ContactProblem {
     pub fn approach_energy(&self) -> f64 {
         let det = self.a * self.c - self.b * self.b;
         let (vt, vn) = (self.v.x, self.v.y);
-        0.5 * (self.c * vt * vt - 2.0 * self.b * vt * vn + self.a * vn * vn) / det
+        let energy = 0.5 * (self.c * vt * vt - 2.0 * self.b * vt * vn + self.a * vn * vn) / det;
+        if energy.is_finite() && det.is_normal() {
+            return energy;
+        }
+        // Extreme entries (det W or the squares under- or overflow): the same with W and v
+        // divided by their largest entries (½ vᵀ W⁻¹ v scales as v²/W).
+        let s = self.a.max(self.c).max(self.b.abs());
+        let r = self.v.x.abs().max(self.v.y.abs());
+        if r == 0.0 {
+            return 0.0;
+        }
+        let (a, b, c) = (self.a / s, self.b / s, self.c / s);
+        let (vt, vn) = (vt / r, vn / r);
+        let unit = 0.5 * (c * vt * vt - 2.0 * b * vt * vn + a * vn * vn) / (a * c - b * b);
+        unit * (r / s) * r
     }
 
     /// The same problem with the tangent reversed (`t → −t`): `W_tn → −W_tn`, `v_t → −v_t`.

@@ -321,6 +321,14 @@ pub fn simulate<M: Mechanism + ?Sized>(
     dynamics::accelerations(m, q0, u0)?;
     let n = m.dof();
     let contacts = m.contacts().len();
+    let energy = dynamics::kinetic_energy(m, q0, u0) + dynamics::potential_energy(m, q0);
+    if !(energy.is_finite() && energy.abs() < 1e300) {
+        return Err(Error::OutOfRange {
+            field: "q".into(),
+            value: energy,
+            reason: "the energy T + V of the initial state is not representable with room for the motion (it must be below 1e300)".into(),
+        });
+    }
     for k in 0..contacts {
         let g = dynamics::gap(m, k, q0);
         if g < -dynamics::touching_tolerance(m, k, q0) {

@@ -53,7 +53,7 @@ pub fn bouncing_ball(
     } else {
         Sphere::new(mass, radius, gravity, 0.0)?
     };
-    Ok(Initial {
+    let init = Initial {
         mechanism: BuiltIn::Sphere(ball),
         q: vec![0.0, radius + height, 0.0],
         u: vec![
@@ -61,7 +61,38 @@ pub fn bouncing_ball(
             -speed * angle.cos(),
             spin_ratio * speed / radius,
         ],
-    })
+    };
+    init.energies_representable(("height", height), ("speed", speed))?;
+    Ok(init)
+}
+
+impl Initial {
+    /// The initial potential and kinetic energies are representable with room for the motion
+    /// (`|V|`, `T` below 1e300): each named by the parameter that sets it.
+    fn energies_representable(&self, potential: (&str, f64), kinetic: (&str, f64)) -> Result<()> {
+        use crate::mechanism::dynamics;
+        let check = |(field, value): (&str, f64), energy: f64, what: &str| {
+            if energy.is_finite() && energy.abs() < 1e300 {
+                Ok(())
+            } else {
+                Err(Error::OutOfRange {
+                    field: field.into(),
+                    value,
+                    reason: format!("the {what} energy at the start, {energy:e}, is not representable with room for the motion (it must be below 1e300)"),
+                })
+            }
+        };
+        check(
+            potential,
+            dynamics::potential_energy(&self.mechanism, &self.q),
+            "potential",
+        )?;
+        check(
+            kinetic,
+            dynamics::kinetic_energy(&self.mechanism, &self.q, &self.u),
+            "kinetic",
+        )
+    }
 }
 
 /// A uniform rod of mass `m` and length `l` at `angle` (radians, from the floor) whose lower
@@ -71,11 +102,13 @@ pub fn rod_drop(mass: f64, length: f64, angle: f64, height: f64, gravity: f64) -
     crate::error::finite("angle", angle)?;
     let rod = Rod::new(mass, length, gravity, 0.0)?;
     let lift = 0.5 * length * angle.sin().abs();
-    Ok(Initial {
+    let init = Initial {
         mechanism: BuiltIn::Rod(rod),
         q: vec![0.0, height + lift, angle],
         u: vec![0.0, 0.0, 0.0],
-    })
+    };
+    init.energies_representable(("height", height), ("height", height))?;
+    Ok(init)
 }
 
 /// Kane's double pendulum (rods `m1, m2, l1, l2`, pinned at the origin) released at angles
