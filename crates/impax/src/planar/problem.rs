@@ -1,6 +1,6 @@
 //! The planar contact-space impact problem `(W, v⁻, μ, e)`.
 
-use crate::error::{finite, Error, Result};
+use crate::error::{finite, Error, Num, Result};
 use crate::math::{Mat2, Vec2};
 
 /// A validated planar impact problem in contact space.
@@ -85,20 +85,23 @@ impl InverseInertia {
         if a <= 0.0 {
             return Err(Error::NotPositiveDefinite {
                 field: "w".into(),
-                reason: format!("W_tt = {a} is not positive"),
+                reason: format!("W_tt = {} is not positive", Num(a)),
             });
         }
         if c <= 0.0 {
             return Err(Error::NotPositiveDefinite {
                 field: "w".into(),
-                reason: format!("W_nn = {c} is not positive"),
+                reason: format!("W_nn = {} is not positive", Num(c)),
             });
         }
         let det = a * c - b * b;
         if det <= 0.0 || det <= 1e-14 * a * c {
             return Err(Error::NotPositiveDefinite {
                 field: "w".into(),
-                reason: format!("det W = {det} is not positive (W_tt W_nn − W_tn² must be > 0)"),
+                reason: format!(
+                    "det W = {} is not positive (W_tt W_nn − W_tn² must be > 0)",
+                    Num(det)
+                ),
             });
         }
         Ok(Self { a, b, c })
