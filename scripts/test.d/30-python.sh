@@ -3,7 +3,8 @@
 # pinned crates/impax-py/requirements-test.txt, builds the wheel with maturin (profile `ci`:
 # optimised, parallel code generation), installs it, builds the `impax` binary the tests
 # compare against, and runs pytest on crates/impax-py/tests (agreement with the CLI's JSON,
-# bad input, physics identities, batch speed-up, Dask LocalCluster and Parquet).
+# bad input, physics identities, Dask LocalCluster and Parquet). No test times anything: the
+# batch speed-up is the benchmark crates/impax-py/bench/batch_speed.py, which prints figures.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
 cd "$root"

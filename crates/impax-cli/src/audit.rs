@@ -357,6 +357,17 @@ fn role(law: LawId) -> &'static str {
     }
 }
 
+/// Every verdict id of an engine-style rule (`engine_rules[].verdict.id` of `--json`), each
+/// documented in the README ("Engine audit").
+pub const VERDICT_IDS: [&str; 6] = [
+    "gains-energy",
+    "matches",
+    "dissipates-more",
+    "dissipates-less",
+    "breakdown",
+    "no-reference",
+];
+
 /// The comparison of one engine-style rule with the reference.
 struct Judgement {
     law: LawId,
@@ -517,6 +528,7 @@ fn document(audit: &Audit) -> Value {
         .iter()
         .map(|&law| {
             let j = judge(audit, law);
+            debug_assert!(VERDICT_IDS.contains(&j.id), "undocumented verdict {}", j.id);
             json!({
                 "law": j.law.as_str(),
                 "reference": REFERENCE.as_str(),
@@ -585,6 +597,7 @@ fn table(audit: &Audit) -> String {
         ("Δ(T+/T-)", true),
     ]);
     let judgements: Vec<Judgement> = ENGINE_RULES.iter().map(|&l| judge(audit, l)).collect();
+    debug_assert!(judgements.iter().all(|j| VERDICT_IDS.contains(&j.id)));
     for j in &judgements {
         match (
             &j.velocity_differences,
@@ -607,4 +620,24 @@ fn table(audit: &Audit) -> String {
         s.push_str(&format!("verdict — {}: {}\n", j.law, j.text));
     }
     s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::VERDICT_IDS;
+
+    /// `no-reference` was printed by `--json` but missing from the README's list of ids.
+    #[test]
+    fn every_verdict_id_is_documented() {
+        let readme = include_str!("../../../README.md");
+        let start = readme.find("## Engine audit").expect("the audit section");
+        let end = start + readme[start..].find("\n## ").expect("the next section");
+        let section = &readme[start..end];
+        for id in VERDICT_IDS {
+            assert!(
+                section.contains(&format!("`{id}`")),
+                "`{id}` is not documented"
+            );
+        }
+    }
 }

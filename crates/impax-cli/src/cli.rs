@@ -80,9 +80,9 @@ pub struct SpaceArgs {
     /// Laws, comma separated (default: the file's `laws`, else every law).
     #[arg(long, value_delimiter = ',')]
     pub law: Vec<String>,
-    /// Worker threads (default: one per core).
-    #[arg(long)]
-    pub threads: Option<usize>,
+    /// Worker threads, 1 to 256 (default: one per core).
+    #[arg(long, allow_hyphen_values = true)]
+    pub threads: Option<i64>,
     /// Confirm a sweep of more than 10⁷ impacts (points × laws).
     #[arg(long)]
     pub yes: bool,

@@ -309,7 +309,8 @@ pub fn run(
         for (key, part) in [("velocity", e.translational), ("omega", e.rotational)] {
             if !(part.is_finite() && part <= 1e300) {
                 return Err(CliError::input(format!(
-                    "{prefix}.{key}: the kinetic energy it gives, {part:e}, is not representable with room to spare (it must be below 1e300)"
+                    "{prefix}.{key}: the kinetic energy it gives, {}, is not representable with room to spare (it must be below 1e300)",
+                    impax::error::Num(part)
                 )));
             }
         }

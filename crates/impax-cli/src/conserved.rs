@@ -3,7 +3,7 @@
 //! value, its largest deviation and whether it is conserved (paper B).
 
 use crate::cli::ConservedArgs;
-use crate::fmt::Table;
+use crate::fmt::{Plain, Table};
 use crate::input::{parse_numbers, CliError, CliResult};
 use crate::json::num;
 use crate::mechanism::{self, MechanismSpec};
@@ -44,7 +44,8 @@ pub fn run(args: &ConservedArgs, out: &mut Vec<u8>) -> CliResult<()> {
     let duration = args.duration;
     if !(duration.is_finite() && duration > 0.0 && duration <= 1e6) {
         return Err(CliError::input(format!(
-            "--duration: must be positive and at most 1e6 s, got {duration}"
+            "--duration: must be positive and at most 1e6 s, got {}",
+            Plain(duration)
         )));
     }
     if args.samples == 0 || args.samples > 1_000_000 {
@@ -56,7 +57,7 @@ pub fn run(args: &ConservedArgs, out: &mut Vec<u8>) -> CliResult<()> {
     if !(args.tolerance.is_finite() && args.tolerance > 0.0 && args.tolerance < 1.0) {
         return Err(CliError::input(format!(
             "--tolerance: must be in (0, 1), got {}",
-            args.tolerance
+            Plain(args.tolerance)
         )));
     }
     let mut about = Vec::new();

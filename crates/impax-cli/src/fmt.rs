@@ -17,19 +17,9 @@ pub fn signed(x: f64, decimals: usize) -> String {
 }
 
 /// An input number as given (shortest round trip), in scientific form outside
-/// `[1e-6, 1e9)` so that `1e200` is not printed with two hundred digits.
-pub struct Plain(pub f64);
-
-impl std::fmt::Display for Plain {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        let x = self.0;
-        if x.is_finite() && x != 0.0 && !(1e-6..1e9).contains(&x.abs()) {
-            write!(f, "{x:e}")
-        } else {
-            write!(f, "{x}")
-        }
-    }
-}
+/// `[1e-6, 1e9)` so that `1e200` is not printed with two hundred digits: the library's
+/// [`impax::error::Num`], which its error messages use too.
+pub use impax::error::Num as Plain;
 
 /// A plain table with left-aligned text columns and right-aligned numeric columns.
 pub struct Table {

@@ -105,7 +105,8 @@ pub fn finite_flag(flag: &str, x: f64) -> CliResult<f64> {
         Ok(x)
     } else {
         Err(CliError::input(format!(
-            "--{flag}: must be a finite number, got {x}"
+            "--{flag}: must be a finite number, got {}",
+            crate::fmt::Plain(x)
         )))
     }
 }

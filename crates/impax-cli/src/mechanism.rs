@@ -14,7 +14,9 @@
 //! position = [0.0]
 //! ```
 
+use crate::fmt::Plain;
 use crate::input::{CliError, CliResult};
+use crate::simulate::MAX_ANGLE_DEG;
 use impax::mechanism::builtin::{
     BuiltIn, CartPendulum, DoublePendulum, RingPendulum, Rod, Sphere, STANDARD_GRAVITY,
 };
@@ -104,7 +106,14 @@ fn list(field: &str, v: &Option<Vec<f64>>, default: &[f64]) -> CliResult<Vec<f64
     for (i, x) in v.iter().enumerate() {
         if !x.is_finite() {
             return Err(CliError::input(format!(
-                "{field}[{i}]: must be a finite number, got {x}"
+                "{field}[{i}]: must be a finite number, got {}",
+                Plain(*x)
+            )));
+        }
+        if field == "angles_deg" && x.abs() > MAX_ANGLE_DEG {
+            return Err(CliError::input(format!(
+                "{field}[{i}]: must be between -{MAX_ANGLE_DEG} and {MAX_ANGLE_DEG} degrees, got {}",
+                Plain(*x)
             )));
         }
     }

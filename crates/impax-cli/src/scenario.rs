@@ -28,6 +28,7 @@
 //! ```
 
 use crate::cli::CompareArgs;
+use crate::fmt::Plain;
 use crate::input::{finite_flag, CliError, CliResult};
 use impax::bodies::{self, BodyState2, PlanarImpact, RigidBody2, Side};
 use impax::math::Vec2;
@@ -133,7 +134,8 @@ fn finite_field(field: &str, x: f64) -> CliResult<f64> {
         Ok(x)
     } else {
         Err(CliError::input(format!(
-            "{field}: must be a finite number, got {x}"
+            "{field}: must be a finite number, got {}",
+            Plain(x)
         )))
     }
 }
@@ -238,14 +240,16 @@ pub(crate) fn build_body(
         let gamma = finite_field(&f("spin_ratio"), spec.spin_ratio.unwrap_or(0.0))?;
         if v0 <= 0.0 {
             return Err(CliError::input(format!(
-                "{}: must be > 0, got {v0}",
-                f("speed")
+                "{}: must be > 0, got {}",
+                f("speed"),
+                Plain(v0)
             )));
         }
         if !(alpha > -90.0 && alpha < 90.0) {
             return Err(CliError::input(format!(
-                "{}: must be in (-90, 90) for the body to approach the surface, got {alpha}",
-                f("alpha_deg")
+                "{}: must be in (-90, 90) for the body to approach the surface, got {}",
+                f("alpha_deg"),
+                Plain(alpha)
             )));
         }
         let state = bodies::spin_state(v0, alpha.to_radians(), gamma, r).map_err(name_err)?;
@@ -403,7 +407,8 @@ pub fn reference_energy(before: &impax::bodies::EnergyParts, field: &str) -> imp
         Err(impax::Error::Invalid {
             field: field.into(),
             reason: format!(
-                "the kinetic energy before the impact, T0 = {t0:e}, must lie within [1e-290, 1e300] to normalise ΔT (ΔT/T0 is not representable otherwise); change the units"
+                "the kinetic energy before the impact, T0 = {}, must lie within [1e-290, 1e300] to normalise ΔT (ΔT/T0 is not representable otherwise); change the units",
+                impax::error::Num(t0)
             ),
         })
     }

@@ -15,7 +15,7 @@
 //! ```
 
 use crate::cli::SimulateArgs;
-use crate::fmt::{signed, Table};
+use crate::fmt::{signed, Plain, Table};
 use crate::input::{CliError, CliResult};
 use crate::json::num;
 use crate::plot;
@@ -153,6 +153,22 @@ fn load(source: &str, over: &SimSpec) -> CliResult<SimSpec> {
     Ok(spec)
 }
 
+/// The largest angle magnitude, in degrees, a scenario accepts: one full turn either way
+/// (beyond it an angle only adds turns, and 1e308° is a typo, not a release angle).
+pub const MAX_ANGLE_DEG: f64 = 360.0;
+
+/// Check an angle in degrees: finite and at most [`MAX_ANGLE_DEG`] in magnitude.
+fn angle(field: &str, deg: f64) -> CliResult<f64> {
+    if deg.abs() <= MAX_ANGLE_DEG {
+        Ok(deg)
+    } else {
+        Err(CliError::input(format!(
+            "{field}: must be between -{MAX_ANGLE_DEG} and {MAX_ANGLE_DEG} degrees, got {}",
+            Plain(deg)
+        )))
+    }
+}
+
 fn pair(field: &str, v: &Option<Vec<f64>>, default: [f64; 2]) -> CliResult<[f64; 2]> {
     match v {
         None => Ok(default),
@@ -225,7 +241,7 @@ pub fn build(spec: &SimSpec) -> CliResult<Case> {
             let (m, r) = (spec.mass.unwrap_or(1.0), spec.radius.unwrap_or(0.1));
             let (h, v0) = (spec.height.unwrap_or(1.0), spec.speed.unwrap_or(2.0));
             let (a, gamma) = (
-                spec.alpha_deg.unwrap_or(30.0),
+                angle("alpha-deg", spec.alpha_deg.unwrap_or(30.0))?,
                 spec.spin_ratio.unwrap_or(0.0),
             );
             let disc = spec.disc.unwrap_or(false);
@@ -241,7 +257,8 @@ pub fn build(spec: &SimSpec) -> CliResult<Case> {
         }
         "rod-drop" => {
             let (m, l) = (spec.mass.unwrap_or(1.0), spec.length.unwrap_or(1.0));
-            let (a, h) = (spec.angle_deg.unwrap_or(30.0), spec.height.unwrap_or(0.5));
+            let a = angle("angle-deg", spec.angle_deg.unwrap_or(30.0))?;
+            let h = spec.height.unwrap_or(0.5);
             let init = scenarios::rod_drop(m, l, a.to_radians(), h, g)?;
             (
                 init,
@@ -253,6 +270,9 @@ pub fn build(spec: &SimSpec) -> CliResult<Case> {
             let m = pair("masses", &spec.masses, [1.0, 1.0])?;
             let l = pair("lengths", &spec.lengths, [1.0, 1.0])?;
             let a = pair("angles_deg", &spec.angles_deg, [90.0, 90.0])?;
+            for x in a {
+                angle("angles-deg", x)?;
+            }
             let u = pair("rates", &spec.rates, [0.0, 0.0])?;
             let floor = spec.floor.unwrap_or(-1.5);
             let init = scenarios::double_pendulum_drop(
@@ -285,7 +305,8 @@ pub fn build(spec: &SimSpec) -> CliResult<Case> {
     options.sample_interval = until / samples as f64;
     if !(until.is_finite() && until > 0.0 && until <= 1e5) {
         return Err(CliError::input(format!(
-            "until: must be positive and at most 1e5 s, got {until}"
+            "until: must be positive and at most 1e5 s, got {}",
+            Plain(until)
         )));
     }
     Ok(Case {

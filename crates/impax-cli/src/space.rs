@@ -11,6 +11,10 @@ use impax::LawId;
 /// Sweeps of more impacts (points × laws) than this need `--yes`.
 pub const CONFIRM_ABOVE: u64 = 10_000_000;
 
+/// The most worker threads `--threads` accepts (each thread costs a stack and a share of the
+/// machine; more threads than cores only add switching).
+pub const MAX_THREADS: i64 = 256;
+
 /// A checked sweep: the scenario, the swept fields (in the order of the point values), the
 /// points and the laws.
 #[derive(Debug, Clone)]
@@ -22,9 +26,9 @@ pub struct Setup {
 }
 
 impl Setup {
-    /// Points × laws.
-    pub fn impacts(&self) -> u64 {
-        self.space.len().saturating_mul(self.laws.len() as u64)
+    /// Points × laws, or None if the product overflows `u64`.
+    pub fn impacts(&self) -> Option<u64> {
+        self.space.len().checked_mul(self.laws.len() as u64)
     }
 }
 
@@ -61,18 +65,21 @@ fn check_range(f: Field, flag: &str, text: &str, lo: f64, hi: f64) -> CliResult<
 
 /// Parse and check the points of a sweep.
 pub fn setup(args: &SpaceArgs) -> CliResult<Setup> {
+    thread_count(args.threads)?;
     let mut template = Template::load(args.scenario.as_deref())?;
     let laws = if args.law.is_empty() {
         template.laws.clone()
     } else {
         parse_laws(&args.law)?
     };
+    let mut set = Vec::new();
     for text in &args.set {
         let (name, value) = split_assignment("set", text, "NAME=VALUE")?;
         let f = field(&template, "set", text, name)?;
         let x = number("set", text, value)?;
         check_range(f, "set", text, x, x)?;
         template.set(f, x);
+        set.push((f, text));
     }
     let mut fields = Vec::new();
     let space =
@@ -161,13 +168,31 @@ pub fn setup(args: &SpaceArgs) -> CliResult<Setup> {
                 )
             }
         };
+    let kind = if args.grid.is_empty() {
+        "random"
+    } else {
+        "grid"
+    };
+    // A swept field takes every value of its axis: a `--set` of it would be silently ignored.
+    if let Some((f, text)) = set.iter().find(|(f, _)| fields.contains(f)) {
+        return Err(CliError::input(format!(
+            "--set {text}: field `{}` is also swept by --{kind}; give it either a fixed value or a range, not both",
+            f.name()
+        )));
+    }
     let setup = Setup {
         template,
         fields,
         space,
         laws,
     };
-    let impacts = setup.impacts();
+    let Some(impacts) = setup.impacts() else {
+        return Err(CliError::input(format!(
+            "--{kind}: {} points × {} laws overflows: more than 2⁶⁴ − 1 impacts, far beyond any sweep (more than 10⁷ impacts already need --yes)",
+            setup.space.len(),
+            setup.laws.len()
+        )));
+    };
     if impacts > CONFIRM_ABOVE && !args.yes {
         return Err(CliError::input(format!(
             "{} points × {} laws = {impacts} impacts is more than {CONFIRM_ABOVE}: pass --yes to run it",
@@ -175,15 +200,24 @@ pub fn setup(args: &SpaceArgs) -> CliResult<Setup> {
             setup.laws.len()
         )));
     }
-    if let Some(0) = args.threads {
-        return Err(CliError::input("--threads: must be at least 1"));
-    }
     Ok(setup)
 }
 
-/// Run `f` in a pool of `threads` threads (default: rayon's, one per core).
-pub fn with_threads<T: Send>(threads: Option<usize>, f: impl FnOnce() -> T + Send) -> CliResult<T> {
+/// The checked `--threads`: between 1 and [`MAX_THREADS`], or None for rayon's default.
+pub fn thread_count(threads: Option<i64>) -> CliResult<Option<usize>> {
     match threads {
+        None => Ok(None),
+        Some(n) if (1..=MAX_THREADS).contains(&n) => Ok(Some(n as usize)),
+        Some(n) => Err(CliError::input(format!(
+            "--threads: must be between 1 and {MAX_THREADS}, got {n}"
+        ))),
+    }
+}
+
+/// Run `f` in a pool of `threads` threads (default: rayon's, one per core); `threads` is
+/// checked by [`thread_count`].
+pub fn with_threads<T: Send>(threads: Option<i64>, f: impl FnOnce() -> T + Send) -> CliResult<T> {
+    match thread_count(threads)? {
         None => Ok(f()),
         Some(n) => {
             let pool = rayon::ThreadPoolBuilder::new()

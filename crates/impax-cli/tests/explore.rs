@@ -1,5 +1,11 @@
 //! `impax explore`: the page's files written with `--out` (the bytes of `web/`), the page
 //! served on 127.0.0.1 with the right MIME types, and a port in use as bad input.
+//!
+//! Regressions (issue 17, item 11): a request line of 200 MB was buffered whole (the server's
+//! memory grew by 400 MB) — now an overlong line gets `414` and the connection is closed;
+//! the body of a `POST` was parsed as the next request (a second response, here `200` for the
+//! `GET` inside the body) — now one `405` with `Allow: GET, HEAD`, then the connection closes.
+//! The single-write responses and the bounded reads are unit tests of `explore::answer`.
 
 use assert_cmd::cargo::cargo_bin;
 use assert_cmd::Command;
@@ -167,4 +173,82 @@ fn a_port_in_use_is_bad_input() {
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(stderr.contains(&format!("--port {port}")), "{stderr}");
     assert_eq!(stderr.trim().lines().count(), 1);
+}
+
+/// Everything the server sends on `s` until it closes the connection (or, after a regression,
+/// until 20 s of silence, so that a hanging server fails the test instead of blocking it).
+fn read_until_closed(s: &mut TcpStream) -> Vec<u8> {
+    s.set_read_timeout(Some(std::time::Duration::from_secs(20)))
+        .unwrap();
+    let mut raw = Vec::new();
+    let mut buf = [0u8; 65536];
+    loop {
+        match s.read(&mut buf) {
+            Ok(0) | Err(_) => return raw,
+            Ok(n) => raw.extend_from_slice(&buf[..n]),
+        }
+    }
+}
+
+/// The status lines in a stream of responses.
+fn status_lines(raw: &[u8]) -> Vec<String> {
+    let text = String::from_utf8_lossy(raw);
+    text.match_indices("HTTP/1.1 ")
+        .map(|(i, _)| text[i..].lines().next().unwrap().to_string())
+        .collect()
+}
+
+#[test]
+fn a_post_with_a_body_gets_one_405_and_the_connection_closes() {
+    let (_server, addr) = start();
+    let mut s = TcpStream::connect(&addr).unwrap();
+    let body = format!("GET /style.css HTTP/1.1\r\nHost: {addr}\r\n\r\n");
+    write!(
+        s,
+        "POST / HTTP/1.1\r\nHost: {addr}\r\nContent-Length: {}\r\n\r\n{body}",
+        body.len()
+    )
+    .unwrap();
+    let raw = read_until_closed(&mut s);
+    assert_eq!(status_lines(&raw), ["HTTP/1.1 405 Method Not Allowed"]);
+    let text = String::from_utf8_lossy(&raw);
+    assert!(text.contains("\r\nAllow: GET, HEAD\r\n"), "{text}");
+    assert!(text.contains("\r\nConnection: close\r\n"), "{text}");
+}
+
+#[test]
+fn an_overlong_request_line_gets_414_and_the_connection_closes() {
+    let (_server, addr) = start();
+    let mut s = TcpStream::connect(&addr).unwrap();
+    // 512 KiB of path and no line end: the old server waited for the end of the line.
+    let mut w = s.try_clone().unwrap();
+    let writer = std::thread::spawn(move || {
+        let _ = w.write_all(b"GET /");
+        let _ = w.write_all(&vec![b'a'; 512 << 10]);
+    });
+    let raw = read_until_closed(&mut s);
+    writer.join().unwrap();
+    assert_eq!(status_lines(&raw), ["HTTP/1.1 414 URI Too Long"]);
+}
+
+#[test]
+fn keep_alive_requests_on_one_connection() {
+    let (_server, addr) = start();
+    let mut s = TcpStream::connect(&addr).unwrap();
+    write!(
+        s,
+        "GET /style.css HTTP/1.1\r\nHost: {addr}\r\n\r\nHEAD / HTTP/1.1\r\nHost: {addr}\r\n\r\nGET /impax.js HTTP/1.1\r\nHost: {addr}\r\nConnection: close\r\n\r\n"
+    )
+    .unwrap();
+    let raw = read_until_closed(&mut s);
+    let statuses = status_lines(&raw);
+    assert_eq!(
+        statuses,
+        ["HTTP/1.1 200 OK"; 3],
+        "{}",
+        String::from_utf8_lossy(&raw)
+    );
+    let (css, js) = (web("style.css"), web("impax.js"));
+    assert!(raw.windows(css.len()).any(|w| w == css.as_slice()));
+    assert!(raw.ends_with(&js), "the HEAD response has no body");
 }

@@ -9,13 +9,13 @@
 //! problem). Every row is a pure function of its inputs, so the result does not depend on the
 //! thread count or the chunking.
 
-use crate::convert::{planar_law, spatial_law, value_error};
+use crate::convert::{float_array, planar_law, spatial_law, threads as thread_count, value_error};
 use impax::analysis::Sequence;
 use impax::planar::{ContactProblem, Verdict};
 use impax::spatial::{ContactProblem3, Phase3Kind};
 use impax::LawId;
 use numpy::ndarray::ArrayViewD;
-use numpy::{AllowTypeChange, PyArray1, PyArray2, PyArrayLikeDyn, PyArrayMethods};
+use numpy::{PyArray1, PyArray2, PyArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use std::borrow::Cow;
@@ -352,6 +352,15 @@ fn coef<'a>(view: &ArrayViewD<'_, f64>, s: &'a [f64]) -> Coef<'a> {
     }
 }
 
+/// `threads=` checked as `resolve_batch` checks it (None, or an integer from 1 to 256): the
+/// value, or `ValueError` / `TypeError`. For `impax.study` and `impax.dask`, which check it
+/// before sending any chunk to a worker.
+#[pyfunction]
+#[pyo3(name = "_check_threads", signature = (threads = None))]
+pub fn check_threads(threads: Option<&Bound<'_, PyAny>>) -> PyResult<Option<usize>> {
+    thread_count(threads)
+}
+
 /// Resolve many impacts with one law, in parallel, on numpy arrays.
 ///
 /// Planar: `w` of shape (N, 3) holds `W_tt, W_tn, W_nn`, `v` of shape (N, 2) holds
@@ -367,21 +376,28 @@ fn coef<'a>(view: &ArrayViewD<'_, f64>, s: &'a [f64]) -> Coef<'a> {
 ///
 /// An invalid row raises `ValueError("row I: <the CLI's message>")` naming the first one
 /// (`on_invalid="raise"`, the default); with `on_invalid="mark"` it gets status `invalid`.
-/// The GIL is released while the rows are computed; `threads` limits the worker threads
-/// (default: rayon's pool, one per core).
+/// Complex arrays are refused (`TypeError`), as are integers too large for a float
+/// (`ValueError`). The GIL is released while the rows are computed; `threads` is the number
+/// of worker threads, an integer from 1 to 256 (`impax.MAX_THREADS`; default: rayon's pool,
+/// one per core); any other value raises `ValueError`.
 #[pyfunction]
 #[pyo3(signature = (w, v, friction, restitution, law = "energetic", *, on_invalid = "raise", threads = None))]
 #[allow(clippy::too_many_arguments)]
 pub fn resolve_batch<'py>(
     py: Python<'py>,
-    w: PyArrayLikeDyn<'py, f64, AllowTypeChange>,
-    v: PyArrayLikeDyn<'py, f64, AllowTypeChange>,
-    friction: PyArrayLikeDyn<'py, f64, AllowTypeChange>,
-    restitution: PyArrayLikeDyn<'py, f64, AllowTypeChange>,
+    w: &Bound<'py, PyAny>,
+    v: &Bound<'py, PyAny>,
+    friction: &Bound<'py, PyAny>,
+    restitution: &Bound<'py, PyAny>,
     law: &str,
     on_invalid: &str,
-    threads: Option<usize>,
+    threads: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
+    let threads = thread_count(threads)?;
+    let w = float_array(w, "w")?;
+    let v = float_array(v, "v")?;
+    let friction = float_array(friction, "friction")?;
+    let restitution = float_array(restitution, "restitution")?;
     let raise = match on_invalid {
         "raise" => true,
         "mark" => false,
@@ -473,7 +489,6 @@ pub fn resolve_batch<'py>(
             }
         };
         let pool = match threads {
-            Some(0) => return Err(value_error("threads: must be ≥ 1")),
             Some(t) => Some(
                 rayon::ThreadPoolBuilder::new()
                     .num_threads(t)

@@ -4,9 +4,10 @@
 //! (`impax::mechanism::builtin`) with the CLI's defaults; angles are radians, as in the
 //! library.
 
-use crate::convert::{law, lib, list, value_error};
+use crate::convert::{arg, law, lib, list, value_error};
 use crate::outcome::{Context, Outcome, Raw};
 use impax::bodies::{self, BodyState2, PlanarImpact, RigidBody2, Side};
+use impax::error::Num;
 use impax::math::Vec2;
 use impax::mechanism::builtin::{
     BuiltIn, CartPendulum, DoublePendulum, RingPendulum, Rod, Sphere, STANDARD_GRAVITY,
@@ -290,11 +291,12 @@ impl MechanismImpact {
 fn positive(field: &str, x: f64, reason: &str) -> PyResult<f64> {
     if !x.is_finite() {
         return Err(value_error(format!(
-            "{field}: must be a finite number, got {x}"
+            "{field}: must be a finite number, got {}",
+            Num(x)
         )));
     }
     if x <= 0.0 {
-        return Err(value_error(format!("{field}: {reason}, got {x}")));
+        return Err(value_error(format!("{field}: {reason}, got {}", Num(x))));
     }
     Ok(x)
 }
@@ -327,7 +329,8 @@ fn round_state(
         || alpha >= std::f64::consts::FRAC_PI_2
     {
         return Err(value_error(format!(
-            "alpha: must be in (-π/2, π/2) for the body to approach the surface, got {alpha}"
+            "alpha: must be in (-π/2, π/2) for the body to approach the surface, got {}",
+            Num(alpha)
         )));
     }
     let gamma = spin_ratio.unwrap_or(0.0);
@@ -344,7 +347,8 @@ fn direct_state(
     for (field, x) in [("velocity", vx), ("velocity", vy), ("omega", omega)] {
         if !x.is_finite() {
             return Err(value_error(format!(
-                "{field}: must be a finite number, got {x}"
+                "{field}: must be a finite number, got {}",
+                Num(x)
             )));
         }
     }
@@ -364,15 +368,15 @@ fn direct_state(
 #[pyo3(signature = (mass = 1.0, radius = 1.0, *, speed = None, alpha = None, spin_ratio = None, velocity = None, omega = None, friction = SEED_FRICTION, restitution = SEED_RESTITUTION, other = None))]
 #[allow(clippy::too_many_arguments)]
 pub fn sphere(
-    mass: f64,
-    radius: f64,
-    speed: Option<f64>,
-    alpha: Option<f64>,
-    spin_ratio: Option<f64>,
-    velocity: Option<(f64, f64)>,
-    omega: Option<f64>,
-    friction: f64,
-    restitution: f64,
+    #[pyo3(from_py_with = arg::mass)] mass: f64,
+    #[pyo3(from_py_with = arg::radius)] radius: f64,
+    #[pyo3(from_py_with = arg::speed)] speed: Option<f64>,
+    #[pyo3(from_py_with = arg::alpha)] alpha: Option<f64>,
+    #[pyo3(from_py_with = arg::spin_ratio)] spin_ratio: Option<f64>,
+    #[pyo3(from_py_with = arg::velocity)] velocity: Option<(f64, f64)>,
+    #[pyo3(from_py_with = arg::omega)] omega: Option<f64>,
+    #[pyo3(from_py_with = arg::friction)] friction: f64,
+    #[pyo3(from_py_with = arg::restitution)] restitution: f64,
     other: Option<PyRef<'_, Body>>,
 ) -> PyResult<BodyImpact> {
     let body = lib(bodies::sphere(mass, radius, Side::Below))?;
@@ -392,15 +396,15 @@ pub fn sphere(
 #[pyo3(signature = (mass = 1.0, radius = 1.0, *, speed = None, alpha = None, spin_ratio = None, velocity = None, omega = None, friction = SEED_FRICTION, restitution = SEED_RESTITUTION, other = None))]
 #[allow(clippy::too_many_arguments)]
 pub fn disc(
-    mass: f64,
-    radius: f64,
-    speed: Option<f64>,
-    alpha: Option<f64>,
-    spin_ratio: Option<f64>,
-    velocity: Option<(f64, f64)>,
-    omega: Option<f64>,
-    friction: f64,
-    restitution: f64,
+    #[pyo3(from_py_with = arg::mass)] mass: f64,
+    #[pyo3(from_py_with = arg::radius)] radius: f64,
+    #[pyo3(from_py_with = arg::speed)] speed: Option<f64>,
+    #[pyo3(from_py_with = arg::alpha)] alpha: Option<f64>,
+    #[pyo3(from_py_with = arg::spin_ratio)] spin_ratio: Option<f64>,
+    #[pyo3(from_py_with = arg::velocity)] velocity: Option<(f64, f64)>,
+    #[pyo3(from_py_with = arg::omega)] omega: Option<f64>,
+    #[pyo3(from_py_with = arg::friction)] friction: f64,
+    #[pyo3(from_py_with = arg::restitution)] restitution: f64,
     other: Option<PyRef<'_, Body>>,
 ) -> PyResult<BodyImpact> {
     let body = lib(bodies::disc(mass, radius, Side::Below))?;
@@ -421,13 +425,13 @@ pub fn disc(
 #[pyo3(signature = (mass = 1.0, length = 1.0, angle = 50f64.to_radians(), *, velocity = (0.5, -1.0), omega = 0.0, friction = SEED_FRICTION, restitution = SEED_RESTITUTION, other = None))]
 #[allow(clippy::too_many_arguments)]
 pub fn rod(
-    mass: f64,
-    length: f64,
-    angle: f64,
-    velocity: (f64, f64),
-    omega: f64,
-    friction: f64,
-    restitution: f64,
+    #[pyo3(from_py_with = arg::mass)] mass: f64,
+    #[pyo3(from_py_with = arg::length)] length: f64,
+    #[pyo3(from_py_with = arg::angle)] angle: f64,
+    #[pyo3(from_py_with = arg::velocity)] velocity: (f64, f64),
+    #[pyo3(from_py_with = arg::omega)] omega: f64,
+    #[pyo3(from_py_with = arg::friction)] friction: f64,
+    #[pyo3(from_py_with = arg::restitution)] restitution: f64,
     other: Option<PyRef<'_, Body>>,
 ) -> PyResult<BodyImpact> {
     let body = lib(bodies::rod(mass, length, angle, Side::Below))?;
@@ -448,14 +452,14 @@ pub fn rod(
 #[pyo3(signature = (mass = 1.0, a = 2.0, b = 1.0, angle = 0.0, *, velocity = (0.5, -1.0), omega = 0.0, friction = SEED_FRICTION, restitution = SEED_RESTITUTION, other = None))]
 #[allow(clippy::too_many_arguments)]
 pub fn ellipse(
-    mass: f64,
-    a: f64,
-    b: f64,
-    angle: f64,
-    velocity: (f64, f64),
-    omega: f64,
-    friction: f64,
-    restitution: f64,
+    #[pyo3(from_py_with = arg::mass)] mass: f64,
+    #[pyo3(from_py_with = arg::a)] a: f64,
+    #[pyo3(from_py_with = arg::b)] b: f64,
+    #[pyo3(from_py_with = arg::angle)] angle: f64,
+    #[pyo3(from_py_with = arg::velocity)] velocity: (f64, f64),
+    #[pyo3(from_py_with = arg::omega)] omega: f64,
+    #[pyo3(from_py_with = arg::friction)] friction: f64,
+    #[pyo3(from_py_with = arg::restitution)] restitution: f64,
     other: Option<PyRef<'_, Body>>,
 ) -> PyResult<BodyImpact> {
     let body = lib(bodies::ellipse(mass, a, b, angle, Side::Below))?;
@@ -476,13 +480,13 @@ pub fn ellipse(
 #[pyo3(signature = (mass, inertia, contact, *, velocity = (0.5, -1.0), omega = 0.0, friction = SEED_FRICTION, restitution = SEED_RESTITUTION, other = None))]
 #[allow(clippy::too_many_arguments)]
 pub fn rigid_body(
-    mass: f64,
-    inertia: f64,
-    contact: (f64, f64),
-    velocity: (f64, f64),
-    omega: f64,
-    friction: f64,
-    restitution: f64,
+    #[pyo3(from_py_with = arg::mass)] mass: f64,
+    #[pyo3(from_py_with = arg::inertia)] inertia: f64,
+    #[pyo3(from_py_with = arg::contact)] contact: (f64, f64),
+    #[pyo3(from_py_with = arg::velocity)] velocity: (f64, f64),
+    #[pyo3(from_py_with = arg::omega)] omega: f64,
+    #[pyo3(from_py_with = arg::friction)] friction: f64,
+    #[pyo3(from_py_with = arg::restitution)] restitution: f64,
     other: Option<PyRef<'_, Body>>,
 ) -> PyResult<BodyImpact> {
     let body = lib(RigidBody2::new(
@@ -542,15 +546,15 @@ impl Body {
 #[allow(clippy::too_many_arguments)]
 pub fn body(
     shape: &str,
-    mass: f64,
-    radius: Option<f64>,
-    length: Option<f64>,
-    angle: Option<f64>,
-    semi_axes: Option<(f64, f64)>,
-    inertia: Option<f64>,
-    contact: Option<(f64, f64)>,
-    velocity: (f64, f64),
-    omega: f64,
+    #[pyo3(from_py_with = arg::mass)] mass: f64,
+    #[pyo3(from_py_with = arg::radius)] radius: Option<f64>,
+    #[pyo3(from_py_with = arg::length)] length: Option<f64>,
+    #[pyo3(from_py_with = arg::angle)] angle: Option<f64>,
+    #[pyo3(from_py_with = arg::semi_axes)] semi_axes: Option<(f64, f64)>,
+    #[pyo3(from_py_with = arg::inertia)] inertia: Option<f64>,
+    #[pyo3(from_py_with = arg::contact)] contact: Option<(f64, f64)>,
+    #[pyo3(from_py_with = arg::velocity)] velocity: (f64, f64),
+    #[pyo3(from_py_with = arg::omega)] omega: f64,
 ) -> PyResult<Body> {
     let need = |field: &str, x: Option<f64>| {
         x.ok_or_else(|| value_error(format!("{field}: required for shape `{shape}`")))
@@ -661,15 +665,15 @@ fn reject(name: &str, field: &str, present: bool) -> PyResult<()> {
 #[allow(clippy::too_many_arguments)]
 pub fn mechanism(
     name: &str,
-    masses: Option<Vec<f64>>,
-    lengths: Option<Vec<f64>>,
-    radius: Option<f64>,
-    gravity: Option<f64>,
-    angles: Option<Vec<f64>>,
-    rates: Option<Vec<f64>>,
-    position: Option<Vec<f64>>,
-    friction: f64,
-    restitution: f64,
+    #[pyo3(from_py_with = arg::masses)] masses: Option<Vec<f64>>,
+    #[pyo3(from_py_with = arg::lengths)] lengths: Option<Vec<f64>>,
+    #[pyo3(from_py_with = arg::radius)] radius: Option<f64>,
+    #[pyo3(from_py_with = arg::gravity)] gravity: Option<f64>,
+    #[pyo3(from_py_with = arg::angles)] angles: Option<Vec<f64>>,
+    #[pyo3(from_py_with = arg::rates)] rates: Option<Vec<f64>>,
+    #[pyo3(from_py_with = arg::position)] position: Option<Vec<f64>>,
+    #[pyo3(from_py_with = arg::friction)] friction: f64,
+    #[pyo3(from_py_with = arg::restitution)] restitution: f64,
 ) -> PyResult<MechanismImpact> {
     let g = gravity.unwrap_or(STANDARD_GRAVITY);
     let (static_name, mechanism, q, u, description) = match name {
@@ -768,13 +772,13 @@ pub fn mechanism(
 #[pyfunction]
 #[pyo3(signature = (masses = (1.0, 1.0), lengths = (1.0, 1.0), angles = (FRAC_PI_6, 0.0), rates = (-1.0, 2.0), gravity = STANDARD_GRAVITY, *, friction = 0.5, restitution = 0.5))]
 pub fn double_pendulum(
-    masses: (f64, f64),
-    lengths: (f64, f64),
-    angles: (f64, f64),
-    rates: (f64, f64),
-    gravity: f64,
-    friction: f64,
-    restitution: f64,
+    #[pyo3(from_py_with = arg::masses)] masses: (f64, f64),
+    #[pyo3(from_py_with = arg::lengths)] lengths: (f64, f64),
+    #[pyo3(from_py_with = arg::angles)] angles: (f64, f64),
+    #[pyo3(from_py_with = arg::rates)] rates: (f64, f64),
+    #[pyo3(from_py_with = arg::gravity)] gravity: f64,
+    #[pyo3(from_py_with = arg::friction)] friction: f64,
+    #[pyo3(from_py_with = arg::restitution)] restitution: f64,
 ) -> PyResult<MechanismImpact> {
     mechanism(
         "double-pendulum",

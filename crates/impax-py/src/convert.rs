@@ -3,11 +3,16 @@
 //! Messages are the library's `Display` (the text the CLI prints after `error: `), so that a
 //! problem rejected by `impax resolve` is rejected here with the same words.
 
+use impax::error::Num;
 use impax::math::{Mat2, Mat3};
 use impax::LawId;
-use numpy::{PyArrayDyn, PyArrayMethods};
-use pyo3::exceptions::PyValueError;
+use numpy::{
+    AllowTypeChange, PyArrayDyn, PyArrayLikeDyn, PyArrayMethods, PyUntypedArray,
+    PyUntypedArrayMethods,
+};
+use pyo3::exceptions::{PyOverflowError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
+use pyo3::types::{PyBool, PyBytes, PyComplex, PyFloat, PyInt, PySequence, PyString};
 use std::fmt::Display;
 
 /// `ValueError(message)`.
@@ -84,7 +89,288 @@ fn too_big(field: &str, what: &str) -> PyErr {
     value_error(format!("{field}: expected {what}"))
 }
 
-/// Read `obj` as a small array of floats (numpy fast path, else sequences).
+/// The most worker threads a batch accepts (`threads=`), as `impax sweep --threads`.
+pub const MAX_THREADS: i64 = 256;
+
+/// `threads=`: None (rayon's pool, one thread per core) or an integer from 1 to
+/// [`MAX_THREADS`]; anything else is a `ValueError` (or a `TypeError` for a non-integer).
+pub fn threads(obj: Option<&Bound<'_, PyAny>>) -> PyResult<Option<usize>> {
+    let Some(obj) = obj.filter(|o| !o.is_none()) else {
+        return Ok(None);
+    };
+    let range = format!("must be between 1 and {MAX_THREADS}");
+    if obj.is_instance_of::<PyBool>() || obj.is_instance_of::<PyFloat>() {
+        return Err(PyTypeError::new_err(format!(
+            "threads: {range} (an integer) or None, got {}",
+            obj.repr()?
+        )));
+    }
+    match obj.extract::<i64>() {
+        Ok(n) if (1..=MAX_THREADS).contains(&n) => Ok(Some(n as usize)),
+        Ok(n) => Err(value_error(format!("threads: {range}, got {n}"))),
+        Err(e) if e.is_instance_of::<PyOverflowError>(obj.py()) => Err(value_error(format!(
+            "threads: {range}, got {}",
+            describe(obj)
+        ))),
+        Err(_) => Err(PyTypeError::new_err(format!(
+            "threads: {range} (an integer) or None, got an object of type {}",
+            obj.get_type().name()?
+        ))),
+    }
+}
+
+/// A short description of a number for a message: an integer by its digits (`an integer of
+/// 401 digits`), anything else by its `repr`, shortened.
+fn describe(obj: &Bound<'_, PyAny>) -> String {
+    let py = obj.py();
+    if obj.is_instance_of::<PyInt>() {
+        let digits = py
+            .import("math")
+            .and_then(|m| m.getattr("log10"))
+            .and_then(|log10| log10.call1((obj.abs()?,)))
+            .and_then(|x| x.extract::<f64>());
+        if let Ok(d) = digits {
+            let sign = if obj.lt(0).unwrap_or(false) {
+                "a negative"
+            } else {
+                "an"
+            };
+            return format!("{sign} integer of {} digits", d.floor() as u64 + 1);
+        }
+    }
+    let text = obj
+        .repr()
+        .map(|r| r.to_string())
+        .unwrap_or_else(|_| "?".into());
+    if text.chars().count() > 40 {
+        let head: String = text.chars().take(30).collect();
+        format!("{head}…")
+    } else {
+        text
+    }
+}
+
+/// Whether `obj` is a complex number or array (Python's `complex`, numpy's complex scalars
+/// and arrays), which a conversion to `float` would silently cut to its real part.
+fn is_complex(obj: &Bound<'_, PyAny>) -> PyResult<bool> {
+    if obj.is_instance_of::<PyComplex>() {
+        return Ok(true);
+    }
+    Ok(dtype_kind(obj)? == Some('c'))
+}
+
+/// numpy's dtype kind of `obj` (`'f'`, `'i'`, `'c'`, `'O'`, …) if it has a dtype.
+fn dtype_kind(obj: &Bound<'_, PyAny>) -> PyResult<Option<char>> {
+    let Some(dtype) = obj.getattr_opt("dtype")? else {
+        return Ok(None);
+    };
+    let Some(kind) = dtype.getattr_opt("kind")? else {
+        return Ok(None);
+    };
+    Ok(kind.extract::<String>().ok().and_then(|k| k.chars().next()))
+}
+
+/// One real number read from Python for `field`: a float, an int, or anything with
+/// `__float__` / `__index__` but a complex number. An int too large for a float is a
+/// `ValueError` naming the field (not Python's `OverflowError`); a complex number or a
+/// non-number a `TypeError` naming it.
+pub fn real(obj: &Bound<'_, PyAny>, field: &str) -> PyResult<f64> {
+    if let Ok(f) = obj.cast::<PyFloat>() {
+        return Ok(f.value());
+    }
+    if is_complex(obj)? {
+        return Err(PyTypeError::new_err(format!(
+            "{field}: expected a real number, got a complex number {}",
+            describe(obj)
+        )));
+    }
+    match obj.extract::<f64>() {
+        Ok(x) => Ok(x),
+        Err(e) if e.is_instance_of::<PyOverflowError>(obj.py()) => Err(value_error(format!(
+            "{field}: {} is not representable as a float",
+            describe(obj)
+        ))),
+        Err(e) if e.is_instance_of::<PyTypeError>(obj.py()) => Err(PyTypeError::new_err(format!(
+            "{field}: expected a real number, got an object of type {}",
+            obj.get_type().name()?
+        ))),
+        Err(e) => Err(e),
+    }
+}
+
+/// The items of a sequence (a list, a tuple, an array), or None for anything else
+/// (strings and bytes are not sequences of numbers).
+fn items<'py>(obj: &Bound<'py, PyAny>) -> PyResult<Option<Vec<Bound<'py, PyAny>>>> {
+    if obj.is_instance_of::<PyString>() || obj.is_instance_of::<PyBytes>() {
+        return Ok(None);
+    }
+    if obj.cast::<PySequence>().is_err() {
+        return Ok(None);
+    }
+    // A 0-d array is a sequence to Python's C API but has no items.
+    if let Ok(a) = obj.cast::<PyUntypedArray>() {
+        if a.ndim() == 0 {
+            return Ok(None);
+        }
+    }
+    Ok(Some(obj.try_iter()?.collect::<PyResult<Vec<_>>>()?))
+}
+
+/// Numbers read from a Python argument, every error naming the argument (see [`real`]).
+pub trait Numbers: Sized {
+    /// Read `obj` for the argument `field`.
+    fn read(obj: &Bound<'_, PyAny>, field: &str) -> PyResult<Self>;
+}
+
+impl Numbers for f64 {
+    fn read(obj: &Bound<'_, PyAny>, field: &str) -> PyResult<Self> {
+        real(obj, field)
+    }
+}
+
+impl Numbers for Vec<f64> {
+    fn read(obj: &Bound<'_, PyAny>, field: &str) -> PyResult<Self> {
+        let Some(items) = items(obj)? else {
+            return Err(PyTypeError::new_err(format!(
+                "{field}: expected a sequence of numbers, got an object of type {}",
+                obj.get_type().name()?
+            )));
+        };
+        items
+            .iter()
+            .enumerate()
+            .map(|(i, x)| real(x, &format!("{field}[{i}]")))
+            .collect()
+    }
+}
+
+impl Numbers for (f64, f64) {
+    fn read(obj: &Bound<'_, PyAny>, field: &str) -> PyResult<Self> {
+        let v = Vec::<f64>::read(obj, field)?;
+        match v[..] {
+            [x, y] => Ok((x, y)),
+            _ => Err(value_error(format!(
+                "{field}: expected 2 numbers, got {}",
+                v.len()
+            ))),
+        }
+    }
+}
+
+impl<T: Numbers> Numbers for Option<T> {
+    fn read(obj: &Bound<'_, PyAny>, field: &str) -> PyResult<Self> {
+        if obj.is_none() {
+            Ok(None)
+        } else {
+            T::read(obj, field).map(Some)
+        }
+    }
+}
+
+/// Readers of numeric arguments by name, for `#[pyo3(from_py_with = arg::friction)]`: each
+/// reads its argument with [`Numbers`], so that every error names the argument (pyo3's own
+/// conversion raises `OverflowError` for `friction=10**400`, without the argument's name).
+pub mod arg {
+    use super::Numbers;
+    use pyo3::prelude::*;
+
+    macro_rules! readers {
+        ($($name:ident),* $(,)?) => {
+            $(
+                #[doc = concat!("The argument `", stringify!($name), "`.")]
+                pub fn $name<T: Numbers>(obj: &Bound<'_, PyAny>) -> PyResult<T> {
+                    T::read(obj, stringify!($name))
+                }
+            )*
+        };
+    }
+
+    readers!(
+        a,
+        alpha,
+        angle,
+        angles,
+        b,
+        contact,
+        friction,
+        gravity,
+        inertia,
+        length,
+        lengths,
+        mass,
+        masses,
+        omega,
+        position,
+        radius,
+        rates,
+        restitution,
+        semi_axes,
+        speed,
+        spin_ratio,
+        velocity,
+    );
+}
+
+/// An array argument of `resolve_batch` as float64 (converted if needed): a complex array is
+/// refused (numpy would keep only its real part), an int too large for a float is a
+/// `ValueError`, both naming `field`.
+pub fn float_array<'py>(
+    obj: &Bound<'py, PyAny>,
+    field: &str,
+) -> PyResult<PyArrayLikeDyn<'py, f64, AllowTypeChange>> {
+    let py = obj.py();
+    let array = if obj.cast::<PyUntypedArray>().is_ok() {
+        obj.clone()
+    } else {
+        let asarray = py.import("numpy")?.getattr("asarray")?;
+        asarray.call1((obj,)).map_err(|e| {
+            if e.is_instance_of::<PyOverflowError>(py) {
+                value_error(format!(
+                    "{field}: a number is not representable as a float ({})",
+                    e.value(py)
+                ))
+            } else {
+                value_error(format!("{field}: {}", e.value(py)))
+            }
+        })?
+    };
+    match dtype_kind(&array)? {
+        Some('c') => {
+            return Err(PyTypeError::new_err(format!(
+                "{field}: expected real numbers, got complex numbers (dtype {})",
+                array.getattr("dtype")?
+            )))
+        }
+        Some('f' | 'i' | 'u' | 'b' | 'O') | None => {}
+        Some(_) => {
+            return Err(PyTypeError::new_err(format!(
+                "{field}: expected real numbers, got an array of dtype {}",
+                array.getattr("dtype")?
+            )))
+        }
+    }
+    array.extract().map_err(|e: PyErr| {
+        if e.is_instance_of::<PyOverflowError>(py) {
+            if obj.is_instance_of::<PyInt>() {
+                value_error(format!(
+                    "{field}: {} is not representable as a float",
+                    describe(obj)
+                ))
+            } else {
+                value_error(format!(
+                    "{field}: a number is not representable as a float (an integer too large)"
+                ))
+            }
+        } else if e.is_instance_of::<PyTypeError>(py) {
+            PyTypeError::new_err(format!("{field}: expected real numbers ({})", e.value(py)))
+        } else {
+            value_error(format!("{field}: {}", e.value(py)))
+        }
+    })
+}
+
+/// Read `obj` as a small array of floats (numpy fast path, else sequences, element by
+/// element: an element that is not a real number is named, e.g. `w[0]` or `w[1][0]`).
 pub fn small(obj: &Bound<'_, PyAny>, field: &str, what: &str) -> PyResult<Small> {
     let mut out = Small {
         shape: [0, 0],
@@ -111,30 +397,48 @@ pub fn small(obj: &Bound<'_, PyAny>, field: &str, what: &str) -> PyResult<Small>
         }
         return Ok(out);
     }
-    if let Ok(rows) = obj.extract::<Vec<Vec<f64>>>() {
-        let cols = rows.first().map_or(0, Vec::len);
-        if rows.iter().any(|r| r.len() != cols) || rows.len() * cols > 9 || cols == 0 {
+    if dtype_kind(obj)? == Some('c') && obj.cast::<PyUntypedArray>().is_ok() {
+        return Err(PyTypeError::new_err(format!(
+            "{field}: expected real numbers, got complex numbers (dtype {})",
+            obj.getattr("dtype")?
+        )));
+    }
+    let Some(rows) = items(obj)? else {
+        return Err(value_error(format!(
+            "{field}: expected {what}, got an object of type {}",
+            obj.get_type().name()?
+        )));
+    };
+    if rows.is_empty() || rows.len() > 9 {
+        return Err(too_big(field, what));
+    }
+    let nested = rows
+        .iter()
+        .map(items)
+        .collect::<PyResult<Vec<Option<Vec<Bound<'_, PyAny>>>>>>()?;
+    if nested.iter().all(Option::is_some) {
+        let nested: Vec<Vec<Bound<'_, PyAny>>> = nested.into_iter().flatten().collect();
+        let cols = nested[0].len();
+        if nested.iter().any(|r| r.len() != cols) || rows.len() * cols > 9 || cols == 0 {
             return Err(too_big(field, what));
         }
         out.ndim = 2;
         out.shape = [rows.len(), cols];
-        for (k, x) in rows.iter().flatten().enumerate() {
-            out.data[k] = *x;
+        for (i, row) in nested.iter().enumerate() {
+            for (j, x) in row.iter().enumerate() {
+                out.data[i * cols + j] = real(x, &format!("{field}[{i}][{j}]"))?;
+            }
         }
         return Ok(out);
     }
-    if let Ok(v) = obj.extract::<Vec<f64>>() {
-        if v.len() > 9 || v.is_empty() {
-            return Err(too_big(field, what));
-        }
-        out.shape = [v.len(), 0];
-        out.data[..v.len()].copy_from_slice(&v);
-        return Ok(out);
+    if nested.iter().any(Option::is_some) {
+        return Err(too_big(field, what));
     }
-    Err(value_error(format!(
-        "{field}: expected {what}, got an object of type {}",
-        obj.get_type().name()?
-    )))
+    out.shape = [rows.len(), 0];
+    for (i, x) in rows.iter().enumerate() {
+        out.data[i] = real(x, &format!("{field}[{i}]"))?;
+    }
+    Ok(out)
 }
 
 /// The contact-space matrix of one problem, planar or spatial.
@@ -192,7 +496,8 @@ pub fn list(field: &str, values: &[f64], n: usize) -> PyResult<()> {
     for (i, x) in values.iter().enumerate() {
         if !x.is_finite() {
             return Err(value_error(format!(
-                "{field}[{i}]: must be a finite number, got {x}"
+                "{field}[{i}]: must be a finite number, got {}",
+                Num(*x)
             )));
         }
     }

@@ -47,6 +47,7 @@ fn _impax(m: &Bound<'_, PyModule>) -> PyResult<()> {
             .map(|l| l.as_str())
             .collect::<Vec<_>>(),
     )?;
+    m.add("MAX_THREADS", convert::MAX_THREADS)?;
     m.add("STATUSES", batch::STATUSES.to_vec())?;
     m.add("SEQUENCES", batch::SEQUENCES.to_vec())?;
     m.add("SEQUENCES_3D", batch::SEQUENCES_3D.to_vec())?;
@@ -60,6 +61,7 @@ fn _impax(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<bodies::MechanismImpact>()?;
     m.add_function(wrap_pyfunction!(single::resolve, m)?)?;
     m.add_function(wrap_pyfunction!(batch::resolve_batch, m)?)?;
+    m.add_function(wrap_pyfunction!(batch::check_threads, m)?)?;
     m.add_function(wrap_pyfunction!(bodies::sphere, m)?)?;
     m.add_function(wrap_pyfunction!(bodies::disc, m)?)?;
     m.add_function(wrap_pyfunction!(bodies::rod, m)?)?;

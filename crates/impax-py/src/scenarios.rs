@@ -3,10 +3,10 @@
 //! `impax.rod(...)` and `impax.sphere(...)`, so the rows equal theirs bit for bit), in
 //! parallel with the GIL released.
 
-use crate::convert::value_error;
+use crate::convert::{float_array, value_error};
 use impax::bodies::{self, BodyState2, RigidBody2, Side};
 use numpy::ndarray::ArrayViewD;
-use numpy::{AllowTypeChange, PyArray2, PyArrayLikeDyn, PyArrayMethods};
+use numpy::{PyArray2, PyArrayMethods};
 use pyo3::prelude::*;
 use rayon::prelude::*;
 use std::borrow::Cow;
@@ -130,13 +130,19 @@ fn problems<'py>(
 #[allow(clippy::too_many_arguments)]
 pub fn rod_rows<'py>(
     py: Python<'py>,
-    angle: PyArrayLikeDyn<'py, f64, AllowTypeChange>,
-    speed: PyArrayLikeDyn<'py, f64, AllowTypeChange>,
-    direction: PyArrayLikeDyn<'py, f64, AllowTypeChange>,
-    omega: PyArrayLikeDyn<'py, f64, AllowTypeChange>,
-    mass: PyArrayLikeDyn<'py, f64, AllowTypeChange>,
-    length: PyArrayLikeDyn<'py, f64, AllowTypeChange>,
+    angle: &Bound<'py, PyAny>,
+    speed: &Bound<'py, PyAny>,
+    direction: &Bound<'py, PyAny>,
+    omega: &Bound<'py, PyAny>,
+    mass: &Bound<'py, PyAny>,
+    length: &Bound<'py, PyAny>,
 ) -> PyResult<Rows<'py>> {
+    let angle = float_array(angle, "angle")?;
+    let speed = float_array(speed, "speed")?;
+    let direction = float_array(direction, "direction")?;
+    let omega = float_array(omega, "omega")?;
+    let mass = float_array(mass, "mass")?;
+    let length = float_array(length, "length")?;
     let views = [
         angle.as_array(),
         speed.as_array(),
@@ -166,12 +172,17 @@ pub fn rod_rows<'py>(
 #[pyfunction]
 pub fn sphere_rows<'py>(
     py: Python<'py>,
-    alpha: PyArrayLikeDyn<'py, f64, AllowTypeChange>,
-    spin_ratio: PyArrayLikeDyn<'py, f64, AllowTypeChange>,
-    speed: PyArrayLikeDyn<'py, f64, AllowTypeChange>,
-    mass: PyArrayLikeDyn<'py, f64, AllowTypeChange>,
-    radius: PyArrayLikeDyn<'py, f64, AllowTypeChange>,
+    alpha: &Bound<'py, PyAny>,
+    spin_ratio: &Bound<'py, PyAny>,
+    speed: &Bound<'py, PyAny>,
+    mass: &Bound<'py, PyAny>,
+    radius: &Bound<'py, PyAny>,
 ) -> PyResult<Rows<'py>> {
+    let alpha = float_array(alpha, "alpha")?;
+    let spin_ratio = float_array(spin_ratio, "spin_ratio")?;
+    let speed = float_array(speed, "speed")?;
+    let mass = float_array(mass, "mass")?;
+    let radius = float_array(radius, "radius")?;
     let views = [
         alpha.as_array(),
         spin_ratio.as_array(),

@@ -1,6 +1,6 @@
 //! `impax.resolve`: one contact-space problem.
 
-use crate::convert::{lib, matrix, planar_law, spatial_law, vector, Matrix};
+use crate::convert::{arg, lib, matrix, planar_law, spatial_law, vector, Matrix};
 use crate::outcome::{Context, Outcome, Raw};
 use impax::math::{Vec2, Vec3};
 use impax::planar::ContactProblem;
@@ -18,8 +18,8 @@ use pyo3::prelude::*;
 pub fn resolve(
     w: &Bound<'_, PyAny>,
     v: &Bound<'_, PyAny>,
-    friction: f64,
-    restitution: f64,
+    #[pyo3(from_py_with = arg::friction)] friction: f64,
+    #[pyo3(from_py_with = arg::restitution)] restitution: f64,
     law: &str,
 ) -> PyResult<Outcome> {
     match matrix(w)? {

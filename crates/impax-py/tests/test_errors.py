@@ -4,6 +4,7 @@ row); nothing panics, and no invalid row yields numbers."""
 from __future__ import annotations
 
 import math
+import warnings
 
 import numpy as np
 import pytest
@@ -100,7 +101,7 @@ def test_wrong_shapes():
         impax.resolve("W", [0, -1], 0.4, 0.7)
     with pytest.raises(ValueError, match=r"^on_invalid: expected"):
         impax.resolve_batch(w, v, f, r, on_invalid="skip")
-    with pytest.raises(ValueError, match=r"^threads: must be ≥ 1$"):
+    with pytest.raises(ValueError, match=r"^threads: must be between 1 and 256, got 0$"):
         impax.resolve_batch(w, v, f, r, threads=0)
 
 
@@ -186,3 +187,111 @@ def test_struck_body_errors():
     # B moving down faster than A: the contact separates, no impact.
     with pytest.raises(ValueError, match=r"^v: the normal contact velocity must be negative"):
         impax.sphere(other=impax.body("disc", radius=1.0, velocity=(0.0, -5.0)))
+
+
+# Regressions of issue 17 ("No silent wrong answers"), items 10 and 12.
+
+PLANAR_W, PLANAR_V = [3.5, 0.0, 1.0], [0.5, -1.0]
+
+
+def test_threads_outside_1_to_256_are_refused():
+    """`resolve_batch(..., threads=10**6)` started a pool of that many threads (the machine's
+    load went to 900), `threads=-1` raised pyo3's `OverflowError` ("can't convert negative int
+    to unsigned"). Expected: `ValueError` naming `threads` with the limit for any integer
+    outside 1..=256, `TypeError` for a non-integer, checked before any work; `impax.study.run`
+    checks it before its first chunk."""
+    w, v, f, r = random_planar(np.random.default_rng(7), 8)
+    for bad in (-1, 0, 257, 10**6):
+        with pytest.raises(ValueError, match=rf"^threads: must be between 1 and 256, got {bad}$"):
+            impax.resolve_batch(w, v, f, r, threads=bad)
+    with pytest.raises(ValueError, match=r"^threads: must be between 1 and 256, got an integer of 31 digits$"):
+        impax.resolve_batch(w, v, f, r, threads=10**30)
+    for bad in (2.0, True, "4"):
+        with pytest.raises(TypeError, match=r"^threads: must be between 1 and 256 \(an integer\) or None"):
+            impax.resolve_batch(w, v, f, r, threads=bad)
+    assert impax.MAX_THREADS == 256
+    reference = impax.resolve_batch(w, v, f, r)
+    for good in (1, np.int64(2), 256, None):
+        out = impax.resolve_batch(w, v, f, r, threads=good)
+        assert np.array_equal(out["impulse"], reference["impulse"])
+    space = impax.study.Grid("sphere", {"alpha": np.linspace(0.1, 1.0, 4)})
+    with pytest.raises(ValueError, match=r"^threads: must be between 1 and 256, got 1000000$"):
+        impax.study.run(space, threads=10**6)
+
+
+def test_numbers_too_large_for_a_float_are_named():
+    """`friction=10**400` raised `OverflowError` ("int too large to convert to float") without
+    naming the argument, and a `W` holding 10**400 was reported as "an object of type list".
+    Expected: `ValueError` naming the argument (and the entry of a sequence). (No `$` in the
+    patterns: pytest also matches the note pyo3 adds, "while processing 'friction'".)"""
+    too_big = r"an integer of 401 digits is not representable as a float"
+    with pytest.raises(ValueError, match=r"^friction: " + too_big):
+        impax.resolve(PLANAR_W, PLANAR_V, 10**400, 0.7)
+    with pytest.raises(ValueError, match=r"^restitution: a negative integer of 401 digits is not representable as a float"):
+        impax.resolve(PLANAR_W, PLANAR_V, 0.4, -(10**400))
+    with pytest.raises(ValueError, match=r"^w\[0\]: " + too_big):
+        impax.resolve([10**400, 0.0, 1.0], PLANAR_V, 0.4, 0.7)
+    with pytest.raises(ValueError, match=r"^w\[1\]\[1\]: " + too_big):
+        impax.resolve([[3.5, 0.0], [0.0, 10**400]], PLANAR_V, 0.4, 0.7)
+    with pytest.raises(ValueError, match=r"^v\[1\]: a negative integer of 401 digits"):
+        impax.resolve(PLANAR_W, [0.5, -(10**400)], 0.4, 0.7)
+    with pytest.raises(ValueError, match=r"^friction: " + too_big):
+        impax.resolve_batch([PLANAR_W], [PLANAR_V], 10**400, 0.7)
+    with pytest.raises(ValueError, match=r"^w: a number is not representable as a float"):
+        impax.resolve_batch([[10**400, 0.0, 1.0]], [PLANAR_V], 0.4, 0.7)
+    with pytest.raises(ValueError, match=r"^friction: " + too_big):
+        impax.sphere(friction=10**400)
+    with pytest.raises(ValueError, match=r"^velocity\[0\]: " + too_big):
+        impax.rod(velocity=(10**400, -1.0))
+    with pytest.raises(ValueError, match=r"^angles\[1\]: " + too_big):
+        impax.mechanism("double-pendulum", angles=[0.5, 10**400])
+    with pytest.raises(ValueError, match=r"^masses\[0\]: " + too_big):
+        impax.double_pendulum(masses=(10**400, 1.0))
+    # Python ints that fit are still numbers.
+    assert impax.resolve([4, 0, 1], [1, -1], 0, 1).impulse[1] == 2.0
+
+
+def test_complex_numbers_are_refused():
+    """A complex `W` (a numpy complex array) was cast to its real part with at most a
+    `ComplexWarning`. Expected: `TypeError` naming the argument, and no warning."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        with pytest.raises(TypeError, match=r"^w: expected real numbers, got complex numbers \(dtype complex128\)$"):
+            impax.resolve(np.array([3.5, 0.0, 1.0 + 2.0j]), PLANAR_V, 0.4, 0.7)
+        with pytest.raises(TypeError, match=r"^w: expected real numbers, got complex numbers \(dtype complex64\)$"):
+            impax.resolve(np.array([[3.5, 0.0], [0.0, 1.0]], dtype=np.complex64), PLANAR_V, 0.4, 0.7)
+        with pytest.raises(TypeError, match=r"^w\[2\]: expected a real number, got a complex number \(1\+2j\)$"):
+            impax.resolve([3.5, 0.0, 1 + 2j], PLANAR_V, 0.4, 0.7)
+        with pytest.raises(TypeError, match=r"^w\[2\]: expected a real number, got a complex number"):
+            impax.resolve([3.5, 0.0, np.complex64(1.0)], PLANAR_V, 0.4, 0.7)
+        with pytest.raises(TypeError, match=r"^friction: expected a real number, got a complex number"):
+            impax.resolve(PLANAR_W, PLANAR_V, 0.4 + 0j, 0.7)
+        w, v, f, r = random_planar(np.random.default_rng(8), 6)
+        with pytest.raises(TypeError, match=r"^w: expected real numbers, got complex numbers \(dtype complex128\)$"):
+            impax.resolve_batch(w + 1j, v, f, r)
+        with pytest.raises(TypeError, match=r"^w: expected real numbers, got complex numbers"):
+            impax.resolve_batch([list(x) for x in w.astype(complex)], v, f, r)
+        with pytest.raises(TypeError, match=r"^restitution: expected real numbers, got complex numbers"):
+            impax.resolve_batch(w, v, f, r.astype(complex))
+        with pytest.raises(TypeError, match=r"^speed: expected a real number, got a complex number"):
+            impax.sphere(speed=1j)
+        with pytest.raises(TypeError, match=r"^omega: expected a real number, got an object of type str\b"):
+            impax.rod(omega="fast")
+
+
+def test_large_numbers_in_messages_are_short(cli):
+    """1e308 was printed as a 309-digit decimal in messages. Expected: the shortest round-trip
+    form, in scientific notation for large and small magnitudes, as the command line prints."""
+    for w, v, mu, e, text in [
+        (PLANAR_W, PLANAR_V, -1e308, 0.7, "friction: -1e308 is out of range"),
+        ([-1.5e-200, 0.0, 1.0], PLANAR_V, 0.4, 0.7, "W_tt = -1.5e-200 is not positive"),
+        (PLANAR_W, [0.5, 1e300], 0.4, 0.7, "(approach), got 1e300"),
+        (PLANAR_W, PLANAR_V, 0.4, 12.0, "restitution: 12 is out of range"),
+    ]:
+        message = cli.error(*resolve_args(w, v, mu, e))
+        with pytest.raises(ValueError) as err:
+            impax.resolve(w, v, mu, e)
+        assert str(err.value) == message
+        assert text in message and len(message) < 200, message
+    with pytest.raises(ValueError, match=r"^speed: must be > 0, got -1e300$"):
+        impax.sphere(speed=-1e300)

@@ -1,6 +1,43 @@
 //! The crate's one error type: every violation names the field and the reason.
+//!
+//! Numbers in messages are printed by [`Num`]: the shortest text that reads back to the same
+//! `f64`, in scientific notation when fixed point would need many digits (`1e308`, not a
+//! 309-digit integer).
 
+use std::fmt;
 use thiserror::Error;
+
+/// A number as it appears in a message: the shortest text that reads back to the same `f64`,
+/// in fixed point for magnitudes in `[1e-6, 1e9)` (and zero) and in scientific notation
+/// outside (`1e308`, `1.5e-200`); NaN and infinities as Rust prints them (`NaN`, `inf`).
+///
+/// ```
+/// use impax::error::Num;
+/// assert_eq!(Num(0.7).to_string(), "0.7");
+/// assert_eq!(Num(12.0).to_string(), "12");
+/// assert_eq!(Num(-2.5e-3).to_string(), "-0.0025");
+/// assert_eq!(Num(1e308).to_string(), "1e308");
+/// assert_eq!(Num(-1.5e-200).to_string(), "-1.5e-200");
+/// assert_eq!(Num(f64::NAN).to_string(), "NaN");
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Num(pub f64);
+
+impl fmt::Display for Num {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let x = self.0;
+        if x.is_finite() && x != 0.0 && !(1e-6..1e9).contains(&x.abs()) {
+            write!(f, "{x:e}")
+        } else {
+            write!(f, "{x}")
+        }
+    }
+}
+
+/// [`Num`] as a `String`: `fmt_number(1e308) == "1e308"`, `fmt_number(0.7) == "0.7"`.
+pub fn fmt_number(x: f64) -> String {
+    Num(x).to_string()
+}
 
 /// Errors returned by `impax` when an input cannot describe a physical impact.
 ///
@@ -10,7 +47,7 @@ use thiserror::Error;
 #[non_exhaustive]
 pub enum Error {
     /// A number is NaN or infinite.
-    #[error("{field}: must be a finite number, got {value}")]
+    #[error("{field}: must be a finite number, got {}", Num(*.value))]
     NotFinite {
         /// The field, e.g. `w[0][1]` or `friction`.
         field: String,
@@ -18,7 +55,7 @@ pub enum Error {
         value: f64,
     },
     /// A number is outside the range the physics allows.
-    #[error("{field}: {value} is out of range: {reason}")]
+    #[error("{field}: {} is out of range: {reason}", Num(*.value))]
     OutOfRange {
         /// The field.
         field: String,
@@ -28,7 +65,11 @@ pub enum Error {
         reason: String,
     },
     /// The contact-space matrix is not symmetric.
-    #[error("{field}: must be symmetric, but entry (t,n) = {upper} differs from (n,t) = {lower}")]
+    #[error(
+        "{field}: must be symmetric, but entry (t,n) = {} differs from (n,t) = {}",
+        Num(*.upper),
+        Num(*.lower)
+    )]
     NotSymmetric {
         /// The field (`w`).
         field: String,
@@ -46,7 +87,10 @@ pub enum Error {
         reason: String,
     },
     /// The bodies are not approaching at the contact point.
-    #[error("{field}: the normal contact velocity must be negative (approach), got {value}")]
+    #[error(
+        "{field}: the normal contact velocity must be negative (approach), got {}",
+        Num(*.value)
+    )]
     NotApproaching {
         /// The field (`v`).
         field: String,
@@ -139,7 +183,8 @@ pub(crate) fn representable_energy(energy: f64, speed: f64) -> Result<()> {
             field: "v".into(),
             value: speed,
             reason: format!(
-                "too large for W: the approach energy ½ vᵀW⁻¹v = {energy} is not representable"
+                "too large for W: the approach energy ½ vᵀW⁻¹v = {} is not representable",
+                Num(energy)
             ),
         })
     }

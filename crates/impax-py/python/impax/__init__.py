@@ -20,12 +20,15 @@ normal last; approach means ``v_n < 0``; the impulse ``p`` acts on the moving bo
   in chunks, reduced;
 * :mod:`impax.dask` — the same sweeps on a Dask cluster (needs ``dask[distributed]``).
 
-Errors are ``ValueError`` with the command line's message (a batch names the row).
+Errors are ``ValueError`` with the command line's message (a batch names the row); an
+argument of the wrong type (a complex number where a real one is expected) is a ``TypeError``
+naming it.
 """
 
 from ._impax import (
     CONTACT_SPACE_LAWS,
     LAWS,
+    MAX_THREADS,
     MECHANISMS,
     SEQUENCES,
     SEQUENCES_3D,
@@ -53,6 +56,7 @@ from . import study
 __all__ = [
     "CONTACT_SPACE_LAWS",
     "LAWS",
+    "MAX_THREADS",
     "MECHANISMS",
     "SEQUENCES",
     "SEQUENCES_3D",

@@ -21,6 +21,8 @@ SEQUENCES: list[str]
 SEQUENCES_3D: list[str]
 #: Built-in mechanism names.
 MECHANISMS: list[str]
+#: The most worker threads ``resolve_batch(..., threads=)`` accepts (256).
+MAX_THREADS: int
 
 ArrayLike = npt.ArrayLike
 
@@ -248,9 +250,15 @@ def resolve_batch(
     (N,), NaN only where the law broke down or the row is invalid; ``status`` (uint8 codes
     into ``STATUSES``), ``sequence`` (codes into ``SEQUENCES`` / ``SEQUENCES_3D``),
     ``energy_gained`` (bool). The first invalid row raises ``ValueError("row I: <the CLI's
-    message>")``, or with ``on_invalid="mark"`` gets status ``invalid``. ``threads`` limits
-    the worker threads (default: one per core).
+    message>")``, or with ``on_invalid="mark"`` gets status ``invalid``. Complex arrays raise
+    ``TypeError``, integers too large for a float ``ValueError``. ``threads``: the number of
+    worker threads, an integer from 1 to ``MAX_THREADS`` (256), default one per core; any
+    other value raises ``ValueError``.
     """
+
+def _check_threads(threads: int | None = None) -> int | None:
+    """``threads`` checked as :func:`resolve_batch` checks it: None or an integer from 1 to
+    ``MAX_THREADS``; anything else raises ``ValueError`` (``TypeError`` for a non-integer)."""
 
 def sphere(
     mass: float = 1.0,

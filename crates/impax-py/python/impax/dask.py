@@ -51,8 +51,9 @@ def sweep(
     is opened and closed here), or None (the current default client if there is one, else
     this process, as :func:`impax.study.run`). One task per chunk of ``chunk_size`` points;
     results are reduced as they arrive. ``map``, ``parquet``, ``on_invalid`` as in
-    :func:`impax.study.run`; ``threads``: threads of each task's batch (default: every core of
-    the worker's machine; use 1 with one single-threaded worker per core).
+    :func:`impax.study.run`; ``threads``: threads of each task's batch, 1 to
+    ``impax.MAX_THREADS`` (256; default: every core of the worker's machine; use 1 with one
+    single-threaded worker per core), checked before any task is sent.
 
     The numbers do not depend on the cluster: every point is a pure function of its index,
     so counts and maps are identical to :func:`impax.study.run` (and to one
@@ -72,7 +73,7 @@ def sweep(
         client = Client(client)
         own = True
     try:
-        study._check(space, law, map, parquet)
+        study._check(space, law, map, parquet, threads)
         t = time.perf_counter()
         n_chunks = len(study.chunks(len(space), chunk_size))
         collector = study._Collector(space, law, chunk_size, map)

@@ -355,7 +355,8 @@ def run_chunk(
     return out
 
 
-def _check(space, law: str, map: str | None, parquet: str | None) -> None:
+def _check(space, law: str, map: str | None, parquet: str | None, threads: int | None = None) -> None:
+    _impax._check_threads(threads)
     if law not in _impax.LAWS:
         raise ValueError(f"law: unknown impact law `{law}` (known: {', '.join(_impax.LAWS)})")
     if map is not None and map not in MAP_COLUMNS:
@@ -409,9 +410,10 @@ def run(
     ``map``: keep this output column (one of :data:`MAP_COLUMNS`) over the space, shaped as
     the space. ``parquet``: a directory; chunk ``k`` is written to ``part-{k:06d}.parquet``
     (needs pyarrow). ``on_invalid="mark"`` counts invalid points (e.g. not approaching) as
-    ``invalid`` instead of raising.
+    ``invalid`` instead of raising. ``threads``: the worker threads of each chunk's batch, 1 to
+    ``impax.MAX_THREADS`` (256; default: one per core); checked before the first chunk.
     """
-    _check(space, law, map, parquet)
+    _check(space, law, map, parquet, threads)
     t = time.perf_counter()
     c = _Collector(space, law, chunk_size, map)
     for index in range(len(chunks(len(space), chunk_size))):

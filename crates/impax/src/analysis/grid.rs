@@ -3,7 +3,7 @@
 //! as a pure function of `i`, so any chunking of the index range — and so any number of
 //! threads — yields the same points in the same order.
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Num, Result};
 
 /// One swept parameter on a regular grid: `count` values from `start` to `stop` inclusive.
 ///
@@ -40,7 +40,9 @@ impl Axis {
         };
         if !start.is_finite() || !stop.is_finite() {
             return Err(invalid(format!(
-                "grid ends must be finite numbers, got {start}:{stop}"
+                "grid ends must be finite numbers, got {}:{}",
+                Num(start),
+                Num(stop)
             )));
         }
         if count == 0 {
@@ -48,17 +50,23 @@ impl Axis {
         }
         if start > stop {
             return Err(invalid(format!(
-                "reversed grid: START = {start} > STOP = {stop} (write START:STOP with START < STOP)"
+                "reversed grid: START = {} > STOP = {} (write START:STOP with START < STOP)",
+                Num(start),
+                Num(stop)
             )));
         }
         if count == 1 && start != stop {
             return Err(invalid(format!(
-                "a grid of 1 point needs START = STOP, got {start}:{stop}"
+                "a grid of 1 point needs START = STOP, got {}:{}",
+                Num(start),
+                Num(stop)
             )));
         }
         if count > 1 && start == stop {
             return Err(invalid(format!(
-                "a grid of {count} points needs START < STOP, got {start}:{stop}"
+                "a grid of {count} points needs START < STOP, got {}:{}",
+                Num(start),
+                Num(stop)
             )));
         }
         Ok(Self {
@@ -239,13 +247,21 @@ impl SampleRange {
         if !lo.is_finite() || !hi.is_finite() {
             return Err(Error::Invalid {
                 field: name.into(),
-                reason: format!("range ends must be finite numbers, got {lo}:{hi}"),
+                reason: format!(
+                    "range ends must be finite numbers, got {}:{}",
+                    Num(lo),
+                    Num(hi)
+                ),
             });
         }
         if lo >= hi {
             return Err(Error::Invalid {
                 field: name.into(),
-                reason: format!("empty or reversed range {lo}:{hi} (write LO:HI with LO < HI)"),
+                reason: format!(
+                    "empty or reversed range {}:{} (write LO:HI with LO < HI)",
+                    Num(lo),
+                    Num(hi)
+                ),
             });
         }
         Ok(Self {

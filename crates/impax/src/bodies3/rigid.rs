@@ -1,6 +1,6 @@
 //! Any spatial rigid body.
 
-use crate::error::{finite, Error, Result};
+use crate::error::{finite, Error, Num, Result};
 use crate::math::{Mat3, Vec3};
 use nalgebra::UnitQuaternion;
 
@@ -99,7 +99,10 @@ impl RigidBody3 {
             return Err(Error::Invalid {
                 field: "inertia".into(),
                 reason: format!(
-                    "principal moments {a}, {b}, {c} violate the triangle inequality of a rigid body"
+                    "principal moments {}, {}, {} violate the triangle inequality of a rigid body",
+                    Num(a),
+                    Num(b),
+                    Num(c)
                 ),
             });
         }

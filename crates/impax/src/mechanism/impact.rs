@@ -114,8 +114,10 @@ impl<'a, M: Mechanism + ?Sized> MechanismImpact<'a, M> {
                 return Err(Error::Invalid {
                     field: "q".into(),
                     reason: format!(
-                        "the {} is below its surface (gap {:e}) while the {} strikes",
-                        contacts[j].name, gaps[j], contacts[k].name
+                        "the {} is below its surface (gap {}) while the {} strikes",
+                        contacts[j].name,
+                        crate::error::Num(gaps[j]),
+                        contacts[k].name
                     ),
                 });
             }
@@ -123,12 +125,12 @@ impl<'a, M: Mechanism + ?Sized> MechanismImpact<'a, M> {
                 return Err(Error::Invalid {
                     field: "q".into(),
                     reason: format!(
-                        "the {} and the {} strike at once (gaps {:e} and {:e}): an impact at several \
+                        "the {} and the {} strike at once (gaps {} and {}): an impact at several \
                          contacts at once is not supported yet",
                         contacts[k].name,
                         contacts[j].name,
-                        gaps[k],
-                        gaps[j]
+                        crate::error::Num(gaps[k]),
+                        crate::error::Num(gaps[j])
                     ),
                 });
             }

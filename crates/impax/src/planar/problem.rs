@@ -1,6 +1,6 @@
 //! The planar contact-space impact problem `(W, v⁻, μ, e)`.
 
-use crate::error::{finite, Error, Result};
+use crate::error::{finite, Error, Num, Result};
 use crate::math::{Mat2, Vec2};
 
 /// A validated planar impact problem in contact space.
@@ -85,13 +85,13 @@ impl InverseInertia {
         if a <= 0.0 {
             return Err(Error::NotPositiveDefinite {
                 field: "w".into(),
-                reason: format!("W_tt = {a} is not positive"),
+                reason: format!("W_tt = {} is not positive", Num(a)),
             });
         }
         if c <= 0.0 {
             return Err(Error::NotPositiveDefinite {
                 field: "w".into(),
-                reason: format!("W_nn = {c} is not positive"),
+                reason: format!("W_nn = {} is not positive", Num(c)),
             });
         }
         // det W relative to W_tt W_nn, on entries divided by the largest (no overflow at
@@ -105,12 +105,12 @@ impl InverseInertia {
                 reason: if det <= 0.0 {
                     format!(
                         "det W = W_tt W_nn − W_tn² is not positive ({} of W_tt W_nn)",
-                        det / (an * cn)
+                        Num(det / (an * cn))
                     )
                 } else {
                     format!(
-                        "det W = W_tt W_nn − W_tn² is {:e} of W_tt W_nn, below 1e-14 (numerically singular)",
-                        det / (an * cn)
+                        "det W = W_tt W_nn − W_tn² is {} of W_tt W_nn, below 1e-14 (numerically singular)",
+                        Num(det / (an * cn))
                     )
                 },
             });

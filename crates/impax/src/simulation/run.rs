@@ -335,8 +335,9 @@ pub fn simulate<M: Mechanism + ?Sized>(
             return Err(Error::Invalid {
                 field: "q".into(),
                 reason: format!(
-                    "the {} starts below its surface (gap {g:e})",
-                    m.contacts()[k].name
+                    "the {} starts below its surface (gap {})",
+                    m.contacts()[k].name,
+                    crate::error::Num(g)
                 ),
             });
         }

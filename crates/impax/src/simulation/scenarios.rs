@@ -78,7 +78,7 @@ impl Initial {
                 Err(Error::OutOfRange {
                     field: field.into(),
                     value,
-                    reason: format!("the {what} energy at the start, {energy:e}, is not representable with room for the motion (it must be below 1e300)"),
+                    reason: format!("the {what} energy at the start, {}, is not representable with room for the motion (it must be below 1e300)", crate::error::Num(energy)),
                 })
             }
         };

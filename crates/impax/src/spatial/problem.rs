@@ -1,6 +1,6 @@
 //! The spatial contact-space impact problem `(W, v⁻, μ, e)`.
 
-use crate::error::{finite, Error, Result};
+use crate::error::{finite, Error, Num, Result};
 use crate::math::{Mat2, Mat3, Vec2, Vec3};
 
 /// Relative tolerance on the asymmetry of `W` accepted as round-off.
@@ -69,7 +69,11 @@ impl ContactProblem3 {
             if w[(i, i)] <= 0.0 {
                 return Err(Error::NotPositiveDefinite {
                     field: "w".into(),
-                    reason: format!("diagonal entry {} = {} is not positive", i + 1, w[(i, i)]),
+                    reason: format!(
+                        "diagonal entry {} = {} is not positive",
+                        i + 1,
+                        Num(w[(i, i)])
+                    ),
                 });
             }
         }
