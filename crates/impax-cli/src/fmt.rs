@@ -16,9 +16,9 @@ pub fn signed(x: f64, decimals: usize) -> String {
     }
 }
 
-/// An input number as given (shortest round trip), in scientific form outside
-/// `[1e-6, 1e9)` so that `1e200` is not printed with two hundred digits: the library's
-/// [`impax::error::Num`], which its error messages use too.
+// An input number as given (shortest round trip), in scientific form outside `[1e-6, 1e9)`
+// so that `1e200` is not printed with two hundred digits: the library's `impax::error::Num`,
+// which its error messages use too.
 pub use impax::error::Num as Plain;
 
 /// A plain table with left-aligned text columns and right-aligned numeric columns.

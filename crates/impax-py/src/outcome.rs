@@ -234,7 +234,7 @@ impl Outcome {
                     )?;
                 }
                 LawDetail::Brach { ratio, capped } => {
-                    d.set_item("ratio", fin(ratio))?;
+                    d.set_item("ratio", ratio.and_then(fin))?;
                     d.set_item("capped", capped)?;
                 }
                 LawDetail::DarbouxKeller { slip_halt } => {
@@ -253,7 +253,7 @@ impl Outcome {
             Raw::Spatial(Ok(o)) => match o.detail {
                 Detail3::None => return Ok(None),
                 Detail3::Brach { ratio, capped } => {
-                    d.set_item("ratio", fin(ratio))?;
+                    d.set_item("ratio", ratio.and_then(fin))?;
                     d.set_item("capped", capped)?;
                 }
                 Detail3::Lcp { solutions } => {

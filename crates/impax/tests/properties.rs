@@ -429,15 +429,20 @@ proptest! {
                     prop_assert!((imp.x - pt).abs() <= 1e-12 * pscale,
                         "two-phase: p_t = {}, expected {pt}", imp.x);
                 }
-                (LawId::Brach, LawDetail::Brach { ratio, capped: false }) => {
+                (LawId::Brach, LawDetail::Brach { ratio: Some(ratio), capped: false }) => {
                     prop_assert!(ratio.abs() <= mu);
                     prop_assert!(vt.abs() <= 1e-12 * vscale, "brach: v_t⁺ = {vt} inside the cone");
                     prop_assert!((imp.x - ratio * imp.y).abs() <= 1e-12 * pscale);
                 }
-                (LawId::Brach, LawDetail::Brach { ratio, capped: true }) => {
+                (LawId::Brach, LawDetail::Brach { ratio: Some(ratio), capped: true }) => {
                     prop_assert!(ratio.abs() > mu);
                     prop_assert!((imp.x - mu * ratio.signum() * imp.y).abs() <= 1e-14 * pscale,
                         "brach: p = {imp:?} capped at μ sign(μ0) = {}", mu * ratio.signum());
+                }
+                (LawId::Brach, LawDetail::Brach { ratio: None, capped: true }) => {
+                    // No compressive impulse stops the slip: friction at the cone's edge.
+                    prop_assert!((imp.x.abs() - mu * imp.y).abs() <= 1e-14 * pscale,
+                        "brach: p = {imp:?} not on the cone's edge");
                 }
                 (LawId::Smith, LawDetail::Smith { eta, .. }) => {
                     prop_assert!((-1.0..=1.0).contains(&eta));

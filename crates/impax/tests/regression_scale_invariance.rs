@@ -200,3 +200,21 @@ fn any_factor_from_1e_minus_300_to_1e300_scales_every_law() {
     }
     assert!(compared > 4000, "{compared}");
 }
+
+/// Found by fuzzing the scaled laws: with `W_nn = 6.4e-232` the law works in units where the
+/// numbers are fine, but back in the problem's units the friction work `∝ W_tt p_t²`
+/// overflows; the result was an outcome holding an infinity.
+#[test]
+fn a_result_that_overflows_in_the_problems_units_is_the_overflow_breakdown() {
+    let p =
+        ContactProblem::from_entries(3.5, 0.0, 6.441148769597133e-232, 0.5, -0.866, 0.4, 0.7)
+            .unwrap();
+    for law in LAWS {
+        match law.resolve(&p) {
+            Ok(o) => assert!(o.is_finite(), "{law}: {o:?}"),
+            Err(b) => assert_eq!(b.reason.id(), "overflow", "{law}"),
+        }
+    }
+    let o = LawId::Whittaker.resolve(&p);
+    assert_eq!(o.unwrap_err().reason.id(), "overflow");
+}

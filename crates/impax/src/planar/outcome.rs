@@ -270,9 +270,11 @@ pub enum LawDetail {
     },
     /// Brach: the sticking ratio and whether it was capped to the cone.
     Brach {
-        /// `μ0 = p_t/p_n` of the impulse that leaves no tangential velocity.
-        ratio: f64,
-        /// Whether `|μ0| > μ` so that `μ sign(μ0)` was used.
+        /// `μ0 = p_t/p_n` of the impulse that leaves no tangential velocity; `None` when
+        /// that impulse is not compressive (`p*_n ≤ 0`: no impulse within any cone stops the
+        /// slip, and the friction is capped along `p*_t`).
+        ratio: Option<f64>,
+        /// Whether `|μ0| > μ` (or no `μ0`) so that `μ sign(μ0)` was used.
         capped: bool,
     },
     /// The engine rule `lcp`: the friction ratio of the solution and how many of the three

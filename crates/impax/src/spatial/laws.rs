@@ -171,7 +171,7 @@ pub fn brach(problem: &ContactProblem3) -> Resolution3 {
             law,
             &end,
             Detail3::Brach {
-                ratio,
+                ratio: Some(ratio),
                 capped: false,
             },
             None,
@@ -200,7 +200,7 @@ pub fn brach(problem: &ContactProblem3) -> Resolution3 {
         law,
         &end,
         Detail3::Brach {
-            ratio,
+            ratio: sticking.then_some(ratio),
             capped: true,
         },
         None,

@@ -116,8 +116,9 @@ pub enum Detail3 {
     None,
     /// Brach: the sticking ratio's magnitude and whether it was capped.
     Brach {
-        /// `|μ0| = |p*_t| / p*_n`.
-        ratio: f64,
+        /// `|μ0| = |p*_t| / p*_n`; `None` when the impulse that stops the slip is not
+        /// compressive (`p*_n ≤ 0`).
+        ratio: Option<f64>,
         /// Whether `|μ0| > μ`.
         capped: bool,
     },

@@ -55,7 +55,7 @@ impl ImpactLaw for Brach {
                     ratio,
                     pn_star,
                     LawDetail::Brach {
-                        ratio,
+                        ratio: Some(ratio),
                         capped: false,
                     },
                     None,
@@ -82,7 +82,7 @@ impl ImpactLaw for Brach {
                 k,
                 pf,
                 LawDetail::Brach {
-                    ratio,
+                    ratio: sticking.then_some(ratio),
                     capped: true,
                 },
                 None,

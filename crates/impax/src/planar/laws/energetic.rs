@@ -64,7 +64,7 @@ impl ImpactLaw for Energetic {
 
     #[inline]
     fn resolve_brief(&self, problem: &ContactProblem) -> BriefResolution {
-        super::in_units_brief(problem, |problem| {
+        super::in_units_brief(problem, LawId::Energetic, |problem| {
             let (path, pf) = Self::end(problem);
             checked_brief(path.brief(problem, pf), LawId::Energetic)
         })

@@ -90,23 +90,28 @@ pub(crate) fn in_units(
 ) -> Resolution {
     match problem.in_units() {
         None => law(problem, 1.0, 1.0),
-        Some((scaled, u)) => law(&scaled, u.a, u.b)
-            .map(|o| o.in_problem_units(u))
-            .map_err(|b| b.in_problem_units(u)),
+        // Back in the problem's units a number may overflow (e.g. friction work ∝ W_tt p_t²
+        // with W_nn = 1e-231): that is the breakdown `overflow`, as for any law.
+        Some((scaled, u)) => match law(&scaled, u.a, u.b) {
+            Ok(o) => checked(o.in_problem_units(u)),
+            Err(b) => Err(b.in_problem_units(u)),
+        },
     }
 }
 
-/// [`in_units`] for the brief of an outcome.
+/// [`in_units`] for the brief of an outcome of the law `id`.
 #[inline(always)]
 pub(crate) fn in_units_brief(
     problem: &ContactProblem,
+    id: LawId,
     law: impl Fn(&ContactProblem) -> BriefResolution,
 ) -> BriefResolution {
     match problem.in_units() {
         None => law(problem),
-        Some((scaled, u)) => law(&scaled)
-            .map(|o| o.in_problem_units(u))
-            .map_err(|b| b.in_problem_units(u)),
+        Some((scaled, u)) => match law(&scaled) {
+            Ok(o) => checked_brief(o.in_problem_units(u), id),
+            Err(b) => Err(b.in_problem_units(u)),
+        },
     }
 }
 

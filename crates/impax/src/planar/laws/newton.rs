@@ -55,7 +55,7 @@ impl ImpactLaw for Newton {
 
     #[inline]
     fn resolve_brief(&self, problem: &ContactProblem) -> BriefResolution {
-        super::in_units_brief(problem, |problem| {
+        super::in_units_brief(problem, LawId::Newton, |problem| {
             let (path, pf) = Self::end(problem);
             checked_brief(path.brief(problem, pf), LawId::Newton)
         })

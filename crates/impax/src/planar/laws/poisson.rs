@@ -53,7 +53,7 @@ impl ImpactLaw for Poisson {
 
     #[inline]
     fn resolve_brief(&self, problem: &ContactProblem) -> BriefResolution {
-        super::in_units_brief(problem, |problem| {
+        super::in_units_brief(problem, LawId::Poisson, |problem| {
             let (path, pf) = Self::end(problem);
             checked_brief(path.brief(problem, pf), LawId::Poisson)
         })
