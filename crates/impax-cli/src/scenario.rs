@@ -31,6 +31,7 @@ use crate::cli::CompareArgs;
 use crate::fmt::Plain;
 use crate::input::{finite_flag, CliError, CliResult};
 use impax::bodies::{self, BodyState2, PlanarImpact, RigidBody2, Side};
+use impax::error::Num;
 use impax::math::Vec2;
 use impax::LawId;
 use serde::Deserialize;
@@ -356,10 +357,12 @@ pub fn load(args: &CompareArgs) -> CliResult<Scenario> {
         LawId::ALL.to_vec()
     };
     let (body, state, scale, mut description) = build_body(&spec.body, "body", Side::Below)?;
+    body_energies(&body, &state, "body", &spec.body)?;
     let impact = match &spec.other {
         None => PlanarImpact::on_fixed_surface(body, state),
         Some(o) => {
             let (ob, os, _, od) = build_body(o, "other", Side::Above)?;
+            body_energies(&ob, &os, "other", o)?;
             description = format!("{description} striking {od}");
             PlanarImpact::between(body, state, ob, os)
         }
@@ -412,4 +415,34 @@ pub fn reference_energy(before: &impax::bodies::EnergyParts, field: &str) -> imp
             ),
         })
     }
+}
+
+/// Each part of a body's kinetic energy is a number with room to spare (a `spin_ratio` or an
+/// `omega` of 1e308 gave a null `energy_before`): an error names the key that sets it.
+fn body_energies(
+    body: &impax::bodies::RigidBody2,
+    state: &impax::bodies::BodyState2,
+    prefix: &str,
+    spec: &BodySpec,
+) -> CliResult<()> {
+    let direct = spec.velocity.is_some() || spec.omega.is_some();
+    let parts = [
+        (
+            if direct { "velocity" } else { "speed" },
+            body.translational_energy(state),
+        ),
+        (
+            if direct { "omega" } else { "spin_ratio" },
+            body.rotational_energy(state),
+        ),
+    ];
+    for (key, energy) in parts {
+        if !(energy.is_finite() && energy <= 1e300) {
+            return Err(CliError::input(format!(
+                "{prefix}.{key}: the kinetic energy it gives, {}, is not representable with room to spare (it must be below 1e300)",
+                Num(energy)
+            )));
+        }
+    }
+    Ok(())
 }

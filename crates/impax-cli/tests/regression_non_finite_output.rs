@@ -204,3 +204,37 @@ fn a_singular_w_and_tiny_masses_blame_the_right_field_or_resolve() {
         assert!((a - b).abs() < 1e-9 * b.abs().max(1.0), "{a} vs {b}");
     }
 }
+
+/// Found by the adversarial run of mutated files: a spin of 1e308 (planar body, mechanism)
+/// gave null energies; a sphere mechanism at y = 1e20 had its lowest point at its centre in
+/// double precision, and its impact was computed without rotation (`W = I`, silently).
+#[test]
+fn extreme_spins_and_positions_are_refused_naming_the_field() {
+    let seed = "friction = 0.4\nrestitution = 0.7\n[body]\nshape = \"sphere\"\nmass = 1.0\n\
+                radius = 1.0\nspeed = 1.0\nalpha_deg = 30.0\nspin_ratio = 1e308\n";
+    let path = tmp("spin-ratio.toml", seed);
+    refused(
+        &["compare", path.to_str().unwrap(), "--json"],
+        "body.spin_ratio",
+    );
+    let far = tmp(
+        "far.toml",
+        "mechanism = \"sphere\"\nposition = [0.0, 1e20]\nrates = [0.5, -0.866, 0.0]\n",
+    );
+    refused(&["compare", far.to_str().unwrap(), "--json"], "q");
+    refused(&["audit", far.to_str().unwrap(), "--json"], "q");
+    let spin = tmp(
+        "spin.toml",
+        "mechanism = \"sphere\"\nrates = [0.5, -0.866, 1e300]\n",
+    );
+    refused(&["compare", spin.to_str().unwrap(), "--json"], "u");
+    // Far, but within 4e7 radii of gyration: resolved, with the rotation (W_tt = 7/2).
+    let near = tmp(
+        "near.toml",
+        "mechanism = \"sphere\"\nposition = [0.0, 1e6]\nrates = [0.5, -0.866, 0.0]\n",
+    );
+    let doc: Value =
+        serde_json::from_str(&finite(&["compare", near.to_str().unwrap(), "--json"])).unwrap();
+    let wtt = doc["problem"]["w"][0][0].as_f64().unwrap();
+    assert!((wtt - 3.5).abs() < 1e-9, "W_tt = {wtt}");
+}

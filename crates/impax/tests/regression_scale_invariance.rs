@@ -206,9 +206,8 @@ fn any_factor_from_1e_minus_300_to_1e300_scales_every_law() {
 /// overflows; the result was an outcome holding an infinity.
 #[test]
 fn a_result_that_overflows_in_the_problems_units_is_the_overflow_breakdown() {
-    let p =
-        ContactProblem::from_entries(3.5, 0.0, 6.441148769597133e-232, 0.5, -0.866, 0.4, 0.7)
-            .unwrap();
+    let p = ContactProblem::from_entries(3.5, 0.0, 6.441148769597133e-232, 0.5, -0.866, 0.4, 0.7)
+        .unwrap();
     for law in LAWS {
         match law.resolve(&p) {
             Ok(o) => assert!(o.is_finite(), "{law}: {o:?}"),

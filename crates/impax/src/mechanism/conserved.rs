@@ -475,6 +475,7 @@ pub fn track<M: Mechanism + ?Sized>(
     options: TrackOptions,
 ) -> Result<Tracking> {
     check_state(m, q0, Some(u0))?;
+    dynamics::check_precision(m, q0)?;
     if !(options.duration.is_finite() && options.duration > 0.0) {
         return Err(Error::OutOfRange {
             field: "duration".into(),

@@ -61,6 +61,37 @@ pub(crate) fn check_state<M: Mechanism + ?Sized>(
     Ok(())
 }
 
+/// How far from the origin, in radii of gyration, a body may be before round-off of its
+/// absolute position eats its geometry: `|r_b| ≤ 4·10⁷ k_b` (`k_b = √(I_b/m_b)`), where the
+/// round-off of positions, `ε |r_b|`, reaches 10⁻⁸ of the body's size.
+const FAR: f64 = 4e7;
+
+/// Check that no body of `m` at `q` is so far from the origin that its geometry (a contact
+/// point's lever about its centre of mass) is lost to the round-off of absolute positions: a
+/// sphere of radius 1 at y = 1e20 has its lowest point at its centre in double precision,
+/// and every impact would be computed without its rotation. Point masses are not checked.
+pub(crate) fn check_precision<M: Mechanism + ?Sized>(m: &M, q: &[f64]) -> Result<()> {
+    let mut poses = vec![Pose::new(0.0, 0.0, 0.0); m.bodies().len()];
+    m.poses(q, &mut poses);
+    for (b, pose) in m.bodies().iter().zip(&poses) {
+        let k = (b.inertia / b.mass).sqrt();
+        let far = pose.x.hypot(pose.y);
+        if k > 0.0 && far > FAR * k {
+            return Err(Error::Invalid {
+                field: "q".into(),
+                reason: format!(
+                    "the {} is {} from the origin, {} times its radius of gyration: so far out its geometry is lost to round-off (at most {} times); move the origin",
+                    b.name,
+                    crate::error::Num(far),
+                    crate::error::Num(far / k),
+                    crate::error::Num(FAR)
+                ),
+            });
+        }
+    }
+    Ok(())
+}
+
 /// `V(q)` for any scalar: `Σ_b m_b g y_b + V_extra(q)`.
 pub(crate) fn potential_of<M: Mechanism + ?Sized, D: super::Real>(
     m: &M,

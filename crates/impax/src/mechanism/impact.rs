@@ -61,6 +61,7 @@ impl<'a, M: Mechanism + ?Sized> MechanismImpact<'a, M> {
                 },
             });
         }
+        dynamics::check_precision(mechanism, q)?;
         let kinematics = dynamics::kinematics(mechanism, q);
         let mass = dynamics::mass_matrix_of(mechanism, &kinematics);
         let chol = dynamics::cholesky(mass.clone())?;
@@ -71,6 +72,17 @@ impl<'a, M: Mechanism + ?Sized> MechanismImpact<'a, M> {
         let wtn = 0.5 * (w_dyn[(0, 1)] + w_dyn[(1, 0)]);
         let w = Mat2::new(w_dyn[(0, 0)], wtn, wtn, w_dyn[(1, 1)]);
         let u = DVector::from_column_slice(u);
+        let energy = 0.5 * u.dot(&(&mass * &u));
+        if !(energy.is_finite() && energy <= 1e300) {
+            return Err(Error::OutOfRange {
+                field: "u".into(),
+                value: u.amax(),
+                reason: format!(
+                    "the kinetic energy ½ uᵀMu = {} is not representable with room to spare (it must be below 1e300)",
+                    crate::error::Num(energy)
+                ),
+            });
+        }
         let vd = &jacobian * &u;
         Ok(MechanismImpact {
             mechanism,

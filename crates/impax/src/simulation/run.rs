@@ -317,6 +317,7 @@ pub fn simulate<M: Mechanism + ?Sized>(
     options: &SimulationOptions,
 ) -> Result<Run> {
     check_state(m, q0, Some(u0))?;
+    dynamics::check_precision(m, q0)?;
     options.validate()?;
     dynamics::accelerations(m, q0, u0)?;
     let n = m.dof();
