@@ -225,7 +225,10 @@ def reproducers(run: Run):
                 "1,0.12097437381250864,-1e-9", "--friction", "1.0598928366735887",
                 "--restitution", "0.9615509061531089", "--law", "lcp", "--json"],
                lambda p: js(p).get("verdict") != "breakdown", "a solution")
-    # 8. A small true gain is a gain at any mass.
+    # 8. A small true gain (exactly 5.67e-14, 1e-13 of the approach energy) is a gain.
+    run.expect(["resolve", "--w", "3.5,0,1", "--v", "0.5,-1", "--friction", "0.4182061896726541",
+                "--restitution", "0.5", "--law", "whittaker", "--json"],
+               lambda p: js(p)["verdict"] == "energy-gained", "energy-gained")
     # 10. Threads are bounded.
     run.expect(["sweep", "--grid", "alpha-deg=0:60:3", "--threads", "100000"],
                lambda p: p.returncode == 2, "exit 2")
