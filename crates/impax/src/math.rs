@@ -159,3 +159,108 @@ mod tests {
         assert!((0.0..1.0).contains(&u));
     }
 }
+
+/// Double-double arithmetic: an unevaluated sum `hi + lo` with `|lo| ≤ ulp(hi)/2`, about 106
+/// bits (Dekker 1971; Hida, Li & Bailey, *Algorithms for quad-double precision floating
+/// point arithmetic*, 2001): for the few small eliminations whose result is a difference of
+/// nearly equal terms (the Schur complement of an ill-conditioned `W`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Dd {
+    hi: f64,
+    lo: f64,
+}
+
+/// `a + b = s + e` exactly (Knuth's two-sum).
+#[inline]
+fn two_sum(a: f64, b: f64) -> (f64, f64) {
+    let s = a + b;
+    let bb = s - a;
+    (s, (a - (s - bb)) + (b - bb))
+}
+
+/// `a + b = s + e` exactly, given `|a| ≥ |b|` (Dekker's fast two-sum).
+#[inline]
+fn quick_two_sum(a: f64, b: f64) -> (f64, f64) {
+    let s = a + b;
+    (s, b - (s - a))
+}
+
+impl Dd {
+    /// The double `x`.
+    #[inline]
+    pub(crate) fn from(x: f64) -> Dd {
+        Dd { hi: x, lo: 0.0 }
+    }
+
+    /// The nearest double.
+    #[inline]
+    pub(crate) fn to_f64(self) -> f64 {
+        self.hi + self.lo
+    }
+
+    #[inline]
+    fn renormalised((hi, lo): (f64, f64)) -> Dd {
+        let (hi, lo) = quick_two_sum(hi, lo);
+        Dd { hi, lo }
+    }
+
+    /// `self + o`.
+    #[inline]
+    pub(crate) fn add(self, o: Dd) -> Dd {
+        let (s, e) = two_sum(self.hi, o.hi);
+        let (t, f) = two_sum(self.lo, o.lo);
+        let (s, e) = quick_two_sum(s, e + t);
+        Dd::renormalised((s, e + f))
+    }
+
+    /// `self − o`.
+    #[inline]
+    pub(crate) fn sub(self, o: Dd) -> Dd {
+        self.add(Dd {
+            hi: -o.hi,
+            lo: -o.lo,
+        })
+    }
+
+    /// `self · o`.
+    #[inline]
+    pub(crate) fn mul(self, o: Dd) -> Dd {
+        let p = self.hi * o.hi;
+        let e = self.hi.mul_add(o.hi, -p);
+        Dd::renormalised((p, e + (self.hi * o.lo + self.lo * o.hi)))
+    }
+
+    /// `self / o` (three correction steps of the long division).
+    #[inline]
+    pub(crate) fn div(self, o: Dd) -> Dd {
+        let q1 = self.hi / o.hi;
+        let r = self.sub(o.mul(Dd::from(q1)));
+        let q2 = r.hi / o.hi;
+        let r = r.sub(o.mul(Dd::from(q2)));
+        let q3 = r.hi / o.hi;
+        Dd::renormalised(quick_two_sum(q1, q2)).add(Dd::from(q3))
+    }
+}
+
+#[cfg(test)]
+mod dd_tests {
+    use super::Dd;
+
+    /// Products and quotients of doubles are exact to about 2⁻¹⁰⁴ relative; a cancellation
+    /// that loses all of double precision keeps the rest.
+    #[test]
+    fn double_double_keeps_the_digits_that_double_loses() {
+        // (1 + 2⁻⁴⁰)² − 1 − 2⁻³⁹ = 2⁻⁸⁰: zero in double.
+        let x = Dd::from(1.0 + 2f64.powi(-40));
+        let r = x
+            .mul(x)
+            .sub(Dd::from(1.0))
+            .sub(Dd::from(2f64.powi(-39)))
+            .to_f64();
+        assert_eq!(r, 2f64.powi(-80));
+        // 1/3 · 3 = 1 to 2⁻¹⁰⁴.
+        let third = Dd::from(1.0).div(Dd::from(3.0));
+        let back = third.mul(Dd::from(3.0)).sub(Dd::from(1.0)).to_f64();
+        assert!(back.abs() <= 2f64.powi(-104), "{back:e}");
+    }
+}

@@ -58,7 +58,7 @@
 
 mod angle;
 
-use super::invariant::{resumption_direction, sticking_ratio};
+use super::invariant::{polish_ray, resumption_direction};
 use super::outcome::{Phase3Kind, Phases3};
 use super::ray_series::{Field, RaySeries};
 use super::rk::{dop853_step, error_measure, Dense, Step};
@@ -420,8 +420,24 @@ fn integrate_scaled(
 
     // ---- Stage 1: initial slip ----
     if pt.vt.x != 0.0 || pt.vt.y != 0.0 {
+        // The centrifugal invariant ray, if any: the direction of resumption (theory §2).
+        let centrifugal = resumption_direction(problem).map(|(dir, rate)| Centrifugal {
+            dir,
+            rate,
+            slope: problem.resumed_slope(rate),
+        });
         let stage = slip_stage(
-            &wtt, wtn, wnn, mu, scales, &mut pt, &mut ev, &mut steps, observing, observe,
+            &wtt,
+            wtn,
+            wnn,
+            mu,
+            centrifugal,
+            scales,
+            &mut pt,
+            &mut ev,
+            &mut steps,
+            observing,
+            observe,
         )?;
         match stage {
             SlipEnd::Terminated { phi } => {
@@ -448,11 +464,14 @@ fn integrate_scaled(
     }
 
     // ---- Stage 2: stick or resumed slip, linear in p_n ----
-    let lambda = sticking_ratio(problem);
+    // The ratio and the slope of stick from W = L D Lᵀ: the slope is the last pivot, accurate
+    // where w_nn + w_tn·λ would cancel (an ill-conditioned W).
+    let (lambda, stick_slope) = problem.stick();
     let piece = if lambda.norm() <= mu {
         Linear {
             kind: Phase3Kind::Stick,
             ratio: lambda,
+            slope: stick_slope,
             dir: Vec2::zeros(),
             sigma: 0.0,
             dsigma: 0.0,
@@ -465,6 +484,7 @@ fn integrate_scaled(
                 angle: s.y.atan2(s.x),
             },
             ratio: -mu * s,
+            slope: problem.resumed_slope(rate),
             dir: s,
             sigma: 0.0,
             dsigma: rate,
@@ -472,7 +492,7 @@ fn integrate_scaled(
         }
     };
     let kind = piece.kind;
-    match linear_piece(&piece, &mut pt, &mut ev, wnn, wtn, mu)? {
+    match linear_piece(&piece, &mut pt, &mut ev, mu)? {
         true => {
             observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
             phases.push(kind, pt.p);
@@ -482,11 +502,33 @@ fn integrate_scaled(
     }
 }
 
+/// The centrifugal invariant ray: there is at most one, the solution `ŝ` of
+/// `(λ' I + μ W_tt) ŝ = w_tn` with `λ' > 0` ([`resumption_direction`]), along which the
+/// slip grows at the rate `λ'` and `v_n` changes at `slope` ([`ContactProblem3`]'s
+/// `resumed_slope`).
+#[derive(Clone, Copy)]
+struct Centrifugal {
+    dir: Vec2,
+    rate: f64,
+    slope: f64,
+}
+
+/// A slip settled on an invariant ray (see `slip_stage`).
+#[derive(Clone, Copy)]
+enum Settled {
+    /// Shrinking along `dir` at the rate `rate < 0`, to a halt.
+    Centripetal { dir: Vec2, rate: f64 },
+    /// Growing along the centrifugal ray.
+    Centrifugal(Centrifugal),
+}
+
 /// A straight piece of the path: friction ratio `ratio`, slip `σ dir` with `σ` changing at
 /// rate `dsigma` from `sigma`, of normal-impulse length `length`.
 struct Linear {
     kind: Phase3Kind,
     ratio: Vec2,
+    /// `dv_n/dp_n` on the piece, `w_nn + w_tn·ratio`.
+    slope: f64,
     dir: Vec2,
     sigma: f64,
     dsigma: f64,
@@ -500,11 +542,9 @@ fn linear_piece(
     piece: &Linear,
     pt: &mut Point,
     ev: &mut Events,
-    wnn: f64,
-    wtn: Vec2,
     mu: f64,
 ) -> Result<bool, BreakdownReason> {
-    let kn = wnn + wtn.dot(&piece.ratio);
+    let kn = piece.slope;
     let start = *pt;
     let at = |x: f64| -> Point {
         Point {
@@ -1030,6 +1070,7 @@ fn slip_stage(
     wtn: Vec2,
     wnn: f64,
     mu: f64,
+    centrifugal: Option<Centrifugal>,
     sc: Scales,
     pt: &mut Point,
     ev: &mut Events,
@@ -1186,12 +1227,13 @@ fn slip_stage(
             let piece = Linear {
                 kind: Phase3Kind::Stick,
                 ratio: -mu * s,
+                slope: wnn - mu * wtn.dot(&s),
                 dir: s,
                 sigma,
                 dsigma: q,
                 length: sigma / -q,
             };
-            if linear_piece(&piece, pt, ev, wnn, wtn, mu)? {
+            if linear_piece(&piece, pt, ev, mu)? {
                 Ok(SlipEnd::Terminated { phi })
             } else {
                 pt.vt = Vec2::zeros();
@@ -1205,6 +1247,65 @@ fn slip_stage(
                     field.ray_ahead(phi).map_or(phi, wrap_angle)
                 };
                 Ok(SlipEnd::Halted { phi: ray })
+            }
+        };
+    // A slip that has settled on an invariant ray that attracts the direction (`f' < 0`
+    // there: an offset δ obeys `dδ/dp_n = f' δ/σ`) runs straight along it, its speed
+    // changing at the ray's rate `q = ŝ·g`. Where `|q|` is small beside `|f'|` (a nearly
+    // neutral ray, near the stick limit of an ill-conditioned W) the steps in p_n, τ or the
+    // angle variable are held to the decay length `σ/|f'|` of the offset while the impulse
+    // to the next event or the halt is of order `σ/|q|`: millions of steps. There, once the
+    // offset is at the integration's own noise (`σ δ` within 4 rtol of the velocity scale,
+    // what the error control leaves in v_t), the rest is the straight run along the ray in
+    // closed form: the offset changes the result as little as one more step would. The ray
+    // is the root of `f` next to the direction (Newton's method); a centrifugal one is the
+    // direction of resumption, with its rate and slope from `centrifugal`.
+    let settled_on_ray = |vt: Vec2| -> Option<Settled> {
+        let sigma = vt.norm();
+        let s = vt / sigma;
+        // f' at the direction: df/dφ = s' × g − μ s × W_tt s', s' = (−s_y, s_x).
+        let g = wtn - mu * (wtt * s);
+        let sp = Vec2::new(-s.y, s.x);
+        let h = wtt * sp;
+        let df = sp.x * g.y - sp.y * g.x - mu * (s.x * h.y - s.y * h.x);
+        // (Each test fails on a NaN.)
+        let q = s.dot(&g);
+        (df < 0.0 && q.abs() <= 1e-3 * -df).then_some(())?;
+        let dir = polish_ray(wtt, wtn, mu, s)?;
+        let offset = (s.x * dir.y - s.y * dir.x).abs();
+        (offset * sigma <= 4.0 * sc.rtol * sc.v).then_some(())?;
+        let q = dir.dot(&(wtn - mu * (wtt * dir)));
+        if q < 0.0 {
+            return Some(Settled::Centripetal { dir, rate: q });
+        }
+        let c = centrifugal?;
+        (c.dir.dot(&dir) > 1.0 - 1e-9).then_some(Settled::Centrifugal(c))
+    };
+    // Run the slip along the centrifugal ray in closed form to the termination.
+    let run_centrifugal =
+        |pt: &mut Point, ev: &mut Events, c: Centrifugal| -> Result<SlipEnd, BreakdownReason> {
+            let piece = Linear {
+                kind: Phase3Kind::Stick,
+                ratio: -mu * c.dir,
+                slope: c.slope,
+                dir: c.dir,
+                sigma: pt.vt.norm(),
+                dsigma: c.rate,
+                length: f64::INFINITY,
+            };
+            if linear_piece(&piece, pt, ev, mu)? {
+                Ok(SlipEnd::Terminated {
+                    phi: c.dir.y.atan2(c.dir.x),
+                })
+            } else {
+                Err(BreakdownReason::NoSeparation)
+            }
+        };
+    let run_settled =
+        |pt: &mut Point, ev: &mut Events, s: Settled| -> Result<SlipEnd, BreakdownReason> {
+            match s {
+                Settled::Centripetal { dir, rate } => run_tail(pt, ev, dir, rate),
+                Settled::Centrifugal(c) => run_centrifugal(pt, ev, c),
             }
         };
     let max_steps = 200_000u32;
@@ -1229,6 +1330,11 @@ fn slip_stage(
                 while *steps < max_steps {
                     if let Some((s, q)) = straight_tail(pt.vt) {
                         let end = run_tail(pt, ev, s, q)?;
+                        observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
+                        return Ok(end);
+                    }
+                    if let Some(c) = settled_on_ray(pt.vt) {
+                        let end = run_settled(pt, ev, c)?;
                         observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
                         return Ok(end);
                     }
@@ -1416,6 +1522,11 @@ fn slip_stage(
                     };
                     if let Some((s, q)) = straight_tail(pt.vt) {
                         let end = run_tail(pt, ev, s, q)?;
+                        observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
+                        return Ok(end);
+                    }
+                    if let Some(c) = settled_on_ray(pt.vt) {
+                        let end = run_settled(pt, ev, c)?;
                         observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
                         return Ok(end);
                     }

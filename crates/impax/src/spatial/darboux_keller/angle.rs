@@ -794,13 +794,14 @@ pub(super) fn run(
             let piece = Linear {
                 kind: Phase3Kind::Stick,
                 ratio: -cx.mu * s,
+                slope: cx.wnn - cx.mu * cx.wtn.dot(&s),
                 dir: s,
                 sigma,
                 dsigma: qa,
                 length: f64::INFINITY,
             };
             let phi = pt.vt.y.atan2(pt.vt.x);
-            return if linear_piece(&piece, pt, ev, cx.wnn, cx.wtn, cx.mu)? {
+            return if linear_piece(&piece, pt, ev, cx.mu)? {
                 observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
                 Ok(Exit::End(SlipEnd::Terminated { phi }))
             } else {
