@@ -26,8 +26,11 @@
 //! * **Resumed slip** along `ŝ = (λ'I + μW_tt)⁻¹ w_tn / |…|` with `λ' > 0` found by
 //!   *bisection* on `|(λ'I + μW_tt)⁻¹ w_tn| = 1` (decreasing in `λ'`).
 //! * **Events** — end of compression (`v_n = 0`), each termination (newton
-//!   `v_n = −e v_n⁻`, poisson `p_n = (1+e) p_c`, energetic `W_n = (1−e²) W_c`) and a second
-//!   compression (`v_n` back to 0 after `p_c`) — are located by bisection of the step
+//!   `v_n = −e v_n⁻`; poisson: the restitution impulse, where `v_n ≥ 0`, reaches `e` times
+//!   the compression impulse, where `v_n < 0` — `p_n = (1+e) p_c` unless `v_n` falls back
+//!   below zero after `p_c` (jamb), whose phases add to the compression; energetic
+//!   `W_n = (1−e²) W_c`), a second compression (`v_n` back to 0 after `p_c`), and the start
+//!   and end of every compression phase after the first — are located by bisection of the step
 //!   length on the reference's own solution (re-stepping from the step start), and on the
 //!   straight pieces by bisection of the closed-form state on its monotone intervals.
 //!   The path does not depend on the law, so one integration serves all three laws.
@@ -397,32 +400,45 @@ struct Ev<'a> {
     pc: Option<f64>,
     wc: f64,
     second: Option<f64>,
+    /// Impulse of the compression phases after the first that have ended.
+    comp: f64,
+    /// Start of the current compression phase after the first.
+    neg: Option<f64>,
     halt: Option<f64>,
     after: After,
     diag: Option<Diag>,
     ends: [Option<LawEnd>; 3],
 }
 
-const N_EVENTS: usize = 5;
+const N_EVENTS: usize = 7;
 
 impl Ev<'_> {
     fn term(&self, i: usize, st: &St) -> f64 {
         let d = self.d;
         match i {
             0 => st.vn + d.e * d.v[2],
-            1 => st.p - (1.0 + d.e) * self.pc.unwrap_or(f64::INFINITY),
+            // Restitution impulse − e × compression impulse (every phase with v_n < 0).
+            1 => {
+                let c = self.pc.unwrap_or(f64::INFINITY)
+                    + self.comp
+                    + self.neg.map_or(0.0, |start| st.p - start);
+                st.p - (1.0 + d.e) * c
+            }
             _ => st.wn - (1.0 - d.e * d.e) * self.wc,
         }
     }
-    /// Event `i` (0 compression, 1–3 the laws, 4 second compression): active, and its
-    /// function, which crosses upward through zero at the event.
+    /// Event `i` (0 compression, 1–3 the laws, 4 second compression, 5 and 6 the start of
+    /// any later compression phase and the end of each): active, and its function, which
+    /// crosses upward through zero at the event.
     fn value(&self, i: usize, st: &St) -> Option<f64> {
         match i {
             0 => self.pc.is_none().then_some(st.vn),
             1..=3 => {
                 (self.pc.is_some() && self.ends[i - 1].is_none()).then(|| self.term(i - 1, st))
             }
-            _ => (self.pc.is_some() && self.second.is_none()).then_some(-st.vn),
+            4 => (self.pc.is_some() && self.second.is_none()).then_some(-st.vn),
+            5 => (self.second.is_some() && self.neg.is_none()).then_some(-st.vn),
+            _ => self.neg.is_some().then_some(st.vn),
         }
     }
     fn end_law(&mut self, i: usize, st: &St) {
@@ -443,7 +459,13 @@ impl Ev<'_> {
                 self.wc = st.wn;
             }
             1..=3 => self.end_law(i - 1, st),
-            _ => self.second = Some(st.p),
+            4 | 5 => {
+                self.second.get_or_insert(st.p);
+                self.neg = Some(st.p);
+            }
+            _ => {
+                self.comp += st.p - self.neg.take().expect("in a later compression");
+            }
         }
         if self.pc.is_some() {
             for l in 0..3 {
@@ -589,6 +611,8 @@ fn reference(d: &Data) -> Result<[Option<LawEnd>; 3], String> {
         pc: None,
         wc: 0.0,
         second: None,
+        comp: 0.0,
+        neg: None,
         halt: None,
         after: After::NotHalted,
         diag: None,

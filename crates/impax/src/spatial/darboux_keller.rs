@@ -49,9 +49,11 @@
 //!    `(λ' I + μ W_tt) ŝ = w_tn`, `λ' > 0` ([`resumption_direction`]): straight, linear.
 //!
 //! Events: the end of compression (`v_n = 0`), the termination of the law (`newton`
-//! `v_n = −e v_n⁻`; `poisson` `p_n = (1+e) p_c`; `energetic` `W_n = (1 − e²) W_c`), and a
-//! second compression (jamb: `v_n` falls back to zero after compression ended; reported).
-//! Each is located on the discrete solution by re-stepping from the step's start
+//! `v_n = −e v_n⁻`; `poisson` `p_n = (1+e) p_c`, or after a jamb the point where the
+//! restitution impulse reaches `e` times the compression impulse of every phase — see
+//! [`Termination::Poisson`]; `energetic` `W_n = (1 − e²) W_c`), and a second compression
+//! (jamb: `v_n` falls back to zero after compression ended; reported; for `poisson` every
+//! return to compression and its end). Each is located on the discrete solution by re-stepping from the step's start
 //! (Illinois iteration, seeded by the seventh-order dense output of the step and started
 //! on a bracket of ±1e-9 of the step around the seed), to near machine precision; in the
 //! linear stages they are exact.
@@ -71,7 +73,13 @@ use crate::planar::BreakdownReason;
 pub enum Termination {
     /// `v_n(p_f) = −e v_n⁻`.
     Newton,
-    /// `p_f = (1 + e) p_c`.
+    /// Poisson's kinetic restitution: the impulse of restitution is `e` times that of
+    /// compression, `P_r(p_f) = e P_c(p_f)`, with `P_c` the normal impulse over which
+    /// `v_n < 0` and `P_r` that over which `v_n ≥ 0` — `p_f = (1 + e) p_c` unless `v_n`
+    /// falls back below zero after the end of compression (a jamb, Batlle 1996), whose
+    /// phases then add to the compression (Stronge, *Impact Mechanics*, 2000, treats the
+    /// kinetic coefficient through such a second compression). The end is always reached
+    /// with `v_n ≥ 0` (`P_r` grows only there): an impact does not end approaching.
     Poisson,
     /// `W_n(p_f) = (1 − e²) W_c`.
     Energetic,
@@ -164,17 +172,36 @@ struct Events {
     pc: Option<f64>,
     wc: f64,
     second: Option<f64>,
+    /// Poisson: the normal impulse of the compression phases after the first (`v_n < 0`
+    /// again after a jamb) that have ended.
+    recompressed: f64,
+    /// Poisson: where the current compression phase after the first began, while in one.
+    again: Option<f64>,
 }
 
 impl Events {
     /// The termination function, increasing through zero at the end (only after `p_c`).
+    ///
+    /// Poisson's: the restitution impulse (where `v_n ≥ 0`) reaches `e` times the
+    /// compression impulse (where `v_n < 0`), `p − C ≥ e C`, i.e. `p − (1+e) C` with
+    /// `C = p_c + recompressed` the compression impulse so far; constant (and negative)
+    /// during a later compression phase, which adds to `C` when it ends.
     #[inline]
     fn terminal(&self, pt: &Point) -> f64 {
         match self.term {
             Termination::Newton => pt.vn - self.target,
-            Termination::Poisson => pt.p - (1.0 + self.e) * self.pc.unwrap_or(f64::INFINITY),
+            Termination::Poisson => {
+                let c = self.pc.unwrap_or(f64::INFINITY) + self.recompressed;
+                self.again.unwrap_or(pt.p) - (1.0 + self.e) * c
+            }
             Termination::Energetic => pt.wn - (1.0 - self.e * self.e) * self.wc,
         }
+    }
+
+    /// Whether every compression phase is tracked (Poisson: its termination counts them).
+    #[inline]
+    fn counts_compression(&self) -> bool {
+        self.term == Termination::Poisson
     }
 }
 
@@ -347,6 +374,8 @@ fn integrate_scaled(
         pc: None,
         wc: 0.0,
         second: None,
+        recompressed: 0.0,
+        again: None,
     };
     let scales = {
         let v = v0.norm();
@@ -607,7 +636,7 @@ fn linear_piece(
                 None
             }
         }
-        Termination::Poisson => Some(((1.0 + ev.e) * pc - start.p).max(0.0)),
+        Termination::Poisson => poisson_end(ev, &start, kn, piece.length),
         Termination::Energetic => {
             if pc >= start.p && kn > 0.0 {
                 // Compression ends inside this piece: from p_c (v_n = 0) the restitution
@@ -638,6 +667,44 @@ fn linear_piece(
     }
 }
 
+/// Where Poisson's law ends on a straight piece from `start` (`v_n` of slope `kn`, of
+/// normal-impulse length `length`), after the end of the first compression: `None` if not
+/// in the piece. The restitution impulse (where `v_n ≥ 0`) must reach `e` times the
+/// compression impulse `C` (where `v_n < 0`, every phase); so a later compression inside the
+/// piece is followed to its end, which adds to `C`, and the law never ends while `v_n < 0`.
+fn poisson_end(ev: &mut Events, start: &Point, kn: f64, length: f64) -> Option<f64> {
+    let pc = ev.pc.expect("after the first compression");
+    let mut from = 0.0;
+    if ev.again.is_none() && start.vn < 0.0 && start.p > pc {
+        // (Already in a later compression phase: its start was not seen.)
+        ev.again = Some(start.p);
+    }
+    if let Some(began) = ev.again {
+        // In a later compression phase (v_n ≤ 0): it ends where v_n is back to zero.
+        if kn <= 0.0 {
+            return None;
+        }
+        from = (-start.vn / kn).max(0.0);
+        if from > length {
+            return None;
+        }
+        ev.recompressed += start.p + from - began;
+        ev.again = None;
+    }
+    let c = pc + ev.recompressed;
+    let x = ((1.0 + ev.e) * c - start.p).max(from);
+    if kn < 0.0 && start.vn >= 0.0 {
+        // v_n falls back to zero inside the piece before the end: a later compression,
+        // v_n < 0 for the rest of the piece.
+        let back = -start.vn / kn;
+        if back < x && back <= length {
+            ev.again = Some(start.p + back);
+            return None;
+        }
+    }
+    Some(x)
+}
+
 fn finish(pt: &Point, ev: &Events, phases: Phases3, slip_halt: Option<f64>, steps: u32) -> PathEnd {
     let pc = ev.pc.filter(|&pc| pc <= pt.p);
     PathEnd {
@@ -649,7 +716,7 @@ fn finish(pt: &Point, ev: &Events, phases: Phases3, slip_halt: Option<f64>, step
         friction_work: pt.wt,
         phases,
         slip_halt: slip_halt.filter(|&s| s < pt.p),
-        second_compression: ev.second,
+        second_compression: ev.second.filter(|&s| s < pt.p),
         steps,
     }
 }
@@ -682,11 +749,12 @@ fn grow(en: f64) -> f64 {
 }
 
 /// The value of event `kind` (0 = compression end, 1 = termination, 2 = second
-/// compression) at `c`, increasing through zero at the event.
+/// compression, 3 = end of a later compression) at `c`, increasing through zero at the
+/// event.
 #[inline]
 fn event_value(ev: &Events, kind: u8, c: &Point) -> f64 {
     match kind {
-        0 => c.vn,
+        0 | 3 => c.vn,
         1 => ev.terminal(c),
         _ => -c.vn,
     }
@@ -710,6 +778,10 @@ fn locate_in_step<const N: usize>(
     ga: f64,
     gb: f64,
 ) -> (f64, [f64; N]) {
+    if ga >= 0.0 {
+        // (The end of a later compression that began at v_n = 0 exactly: at the start.)
+        return (x0, *y0);
+    }
     let dense = Dense::new(f, x0, y0, st, k1, h);
     let dense_g = |th: f64| event_value(ev, kind, &point(x0 + th * h, &dense.at(th)));
     let seed = dense_root(dense_g, ga, gb);
@@ -746,9 +818,19 @@ fn after_event(kind: u8, pt: &mut Point, ev: &mut Events, phi: f64) -> Option<Sl
             (ev.terminal(pt) >= 0.0).then_some(SlipEnd::Terminated { phi })
         }
         1 => Some(SlipEnd::Terminated { phi }),
-        _ => {
-            ev.second = Some(pt.p);
+        2 => {
+            ev.second.get_or_insert(pt.p);
+            if ev.counts_compression() {
+                ev.again = Some(pt.p);
+            }
             None
+        }
+        _ => {
+            // A later compression phase ended: its impulse adds to the compression.
+            if let Some(start) = ev.again.take() {
+                ev.recompressed += pt.p - start;
+            }
+            (ev.terminal(pt) >= 0.0).then_some(SlipEnd::Terminated { phi })
         }
     }
 }
@@ -760,7 +842,13 @@ enum SlipEnd {
 
 /// Check the events between two points (`a` before, `b` after a step); returns the first
 /// event's kind and a closure-free description: 0 = compression end, 1 = termination,
-/// 2 = second compression.
+/// 2 = second compression (`v_n` back to zero after `p_c`; for Poisson every such return),
+/// 3 = the end of a later compression phase (Poisson).
+///
+/// Where a later compression begins inside the step, Poisson's termination function is
+/// evaluated at `b` as if it had not (it stops growing there): the second compression is
+/// returned, and the caller relocates the termination if it lies before
+/// ([`poisson_ends_first`]).
 #[inline]
 fn first_event(ev: &Events, a: &Point, b: &Point) -> Option<(u8, f64, f64)> {
     if ev.pc.is_none() {
@@ -769,14 +857,28 @@ fn first_event(ev: &Events, a: &Point, b: &Point) -> Option<(u8, f64, f64)> {
         }
         return None;
     }
+    if ev.again.is_some() {
+        // In a later compression phase: its end (from a located start at v_n = 0 exactly,
+        // an end inside the step is at its start).
+        let ends = (a.vn < 0.0 && b.vn >= 0.0) || (a.vn == 0.0 && b.vn > 0.0);
+        return ends.then_some((3, a.vn, b.vn));
+    }
     let (ga, gb) = (ev.terminal(a), ev.terminal(b));
     let term = ga < 0.0 && gb >= 0.0;
-    let second = ev.second.is_none() && a.vn > 0.0 && b.vn <= 0.0;
+    let second = (ev.second.is_none() || ev.counts_compression()) && a.vn > 0.0 && b.vn <= 0.0;
     match (term, second) {
+        (true, true) if ev.counts_compression() => Some((2, -a.vn, -b.vn)),
         (true, _) => Some((1, ga, gb)),
         (false, true) => Some((2, -a.vn, -b.vn)),
         _ => None,
     }
+}
+
+/// Whether Poisson's termination lies before a later compression located at `c` (kind 2)
+/// in the same step: its function, still growing with `p_n`, is already `≥ 0` there.
+#[inline]
+fn poisson_ends_first(ev: &Events, kind: u8, c: &Point) -> bool {
+    kind == 2 && ev.counts_compression() && ev.terminal(c) >= 0.0
 }
 
 /// `|v|` without overflow or underflow of the squares (`hypot` only where they would).
@@ -926,10 +1028,11 @@ fn series_tail(
         return None;
     }
     let halt_phi = ser.dir.y.atan2(ser.dir.x);
-    // At most three events lie ahead (compression end and a second compression once each,
-    // then the termination, which ends the loop).
+    // A few events lie ahead (v_n is monotone on the rest: the compression end or a
+    // return to compression, the end of a later compression, then the termination, which
+    // ends the loop).
     loop {
-        let Some((kind, ga, gb)) = first_event(ev, pt, &end) else {
+        let Some((mut kind, ga, gb)) = first_event(ev, pt, &end) else {
             *pt = end;
             observe(pt.p, Vec3::new(0.0, 0.0, pt.vn));
             return Some(SlipEnd::Halted { phi: halt_phi });
@@ -948,13 +1051,24 @@ fn series_tail(
                 s_from + (-th).ln_1p()
             }
         };
-        let th = illinois(
-            |th| event_value(ev, kind, &light(s_of(th))),
-            0.0,
-            ga,
-            1.0,
-            gb,
-        );
+        let find = |kind: u8, ga: f64, gb: f64| {
+            if ga >= 0.0 {
+                // (A later compression that began at v_n = 0 exactly ends at once.)
+                return 0.0;
+            }
+            illinois(
+                |th| event_value(ev, kind, &light(s_of(th))),
+                0.0,
+                ga,
+                1.0,
+                gb,
+            )
+        };
+        let mut th = find(kind, ga, gb);
+        if poisson_ends_first(ev, kind, &light(s_of(th))) {
+            kind = 1;
+            th = find(kind, ev.terminal(pt), ev.terminal(&end));
+        }
         *pt = if th >= 1.0 { end } else { at(s_of(th)) };
         observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
         let phi = if th >= 1.0 {
@@ -1041,8 +1155,13 @@ fn advance<const N: usize>(
     }
     let b = point(*x + h, &y1);
     let k1 = f(*x + h, &y1);
-    if let Some((kind, ga, gb)) = first_event(ev, pt, &b) {
-        let (xe, ye) = locate_in_step(f, point, ev, kind, *x, y, k, h, &st, &k1, ga, gb);
+    if let Some((mut kind, ga, gb)) = first_event(ev, pt, &b) {
+        let (mut xe, mut ye) = locate_in_step(f, point, ev, kind, *x, y, k, h, &st, &k1, ga, gb);
+        if poisson_ends_first(ev, kind, &point(xe, &ye)) {
+            kind = 1;
+            let (ga, gb) = (ev.terminal(pt), ev.terminal(&b));
+            (xe, ye) = locate_in_step(f, point, ev, kind, *x, y, k, h, &st, &k1, ga, gb);
+        }
         *x = xe;
         *y = ye;
         *pt = point(xe, &ye);

@@ -253,7 +253,25 @@ fn darboux_keller(
         second_compression: end.second_compression,
         steps: end.steps,
     };
-    Ok(assemble(problem, law, &end, detail, None))
+    Ok(assemble(
+        problem,
+        law,
+        &end,
+        detail,
+        still_approaching(problem, &end),
+    ))
+}
+
+/// [`Inconsistency::StillApproaching`] if the impact ends with `v_n⁺` below zero by more
+/// than the round-off of `v_n⁻ + (W p)_n`, `16 ε (|v_n⁻| + (|W| |p|)_n)`.
+pub(crate) fn still_approaching(problem: &ContactProblem3, end: &PathEnd) -> Option<Inconsistency> {
+    let vn = end.velocity.z;
+    let round_off = 16.0
+        * f64::EPSILON
+        * (problem.velocity().z.abs() + (problem.w().abs() * end.impulse.abs()).z);
+    (vn < -round_off).then_some(Inconsistency::StillApproaching {
+        normal_velocity: vn,
+    })
 }
 
 /// Resolve a spatial problem with a law (`two-phase`, `smith` and `smith-centre` are planar

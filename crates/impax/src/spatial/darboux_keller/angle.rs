@@ -45,8 +45,8 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 use super::{
-    after_event, event_value, first_event, linear_piece, series_tail, Events, Linear, Point,
-    Scales, SlipEnd, TailSeries, Termination,
+    after_event, event_value, first_event, linear_piece, poisson_ends_first, series_tail, Events,
+    Linear, Point, Scales, SlipEnd, TailSeries, Termination,
 };
 use crate::math::{Mat2, Vec2, Vec3};
 use crate::planar::BreakdownReason;
@@ -715,30 +715,41 @@ pub(super) fn run(
         for j in 1..M {
             let mut bj = point(j, &dense);
             let mut lo = lb.t[j - 1];
-            while let Some((kind, ga, gb)) = first_event(ev, &prev, &bj) {
+            while let Some((mut kind, ga, gb)) = first_event(ev, &prev, &bj) {
                 let w = *dense.get_or_insert_with(all_dense);
                 bj = point(j, &dense);
                 // The event function's rate: its integrand's interpolant (v_n for the end
                 // of compression, a second compression and Newton's termination).
-                let (rate, sign) = match (kind, ev.term) {
-                    (1, Termination::Energetic) => (&dn, 1.0),
-                    (1, Termination::Poisson) => (&dp, 1.0),
-                    (2, _) => (&dv, -1.0),
-                    _ => (&dv, 1.0),
+                let at_crossing = |kind: u8, ga: f64, gb: f64| {
+                    let (rate, sign) = match (kind, ev.term) {
+                        (1, Termination::Energetic) => (&dn, 1.0),
+                        (1, Termination::Poisson) => (&dp, 1.0),
+                        (2, _) => (&dv, -1.0),
+                        _ => (&dv, 1.0),
+                    };
+                    if ga >= 0.0 {
+                        // (A later compression that began at v_n = 0 exactly ends at once.)
+                        return lo;
+                    }
+                    crossing(
+                        |t| {
+                            let l = lb.basis(t);
+                            (
+                                event_value(ev, kind, &light(&l, &w)),
+                                sign * half * dot(&l, rate),
+                            )
+                        },
+                        lo,
+                        ga,
+                        lb.t[j],
+                        gb,
+                    )
                 };
-                let t = crossing(
-                    |t| {
-                        let l = lb.basis(t);
-                        (
-                            event_value(ev, kind, &light(&l, &w)),
-                            sign * half * dot(&l, rate),
-                        )
-                    },
-                    lo,
-                    ga,
-                    lb.t[j],
-                    gb,
-                );
+                let mut t = at_crossing(kind, ga, gb);
+                if poisson_ends_first(ev, kind, &light(&lb.basis(t), &w)) {
+                    kind = 1;
+                    t = at_crossing(kind, ev.terminal(&prev), ev.terminal(&bj));
+                }
                 // The whole state at the event.
                 let l = lb.basis(t);
                 let (c1, c2) = (lb.cumulative(&d1), lb.cumulative(&d2));
