@@ -42,6 +42,57 @@ pub(crate) fn unit_factor(x: f64, entries: &[f64]) -> f64 {
     2f64.powi((-exponent(x)).max(lo).min(hi))
 }
 
+/// The binary exponent `E` of a finite nonzero `x = m 2^E`, `1 ≤ |m| < 2` (exact, from the
+/// bits; subnormals too). `0` for zero or a non-finite `x`.
+pub(crate) fn binary_exponent(x: f64) -> i32 {
+    if x == 0.0 || !x.is_finite() {
+        return 0;
+    }
+    let biased = ((x.to_bits() >> 52) & 0x7ff) as i32;
+    if biased == 0 {
+        // Subnormal: bring it into the normal range first (exactly).
+        return binary_exponent(x * 2f64.powi(64)) - 64;
+    }
+    biased - 1023
+}
+
+/// The power of two `2^−E(x)` that brings `x ≠ 0` into `[1, 2)` (`E` its exact binary
+/// exponent), limited so that every nonzero entry of `entries`, scaled by it, stays within
+/// `[2⁻¹⁰⁰⁰, 2¹⁰⁰⁰]`. Unlike [`unit_factor`] it depends on `x` only through its exponent,
+/// exactly: `x 2^k` gets the factor `2^−k` times that of `x`, so a problem and any
+/// power-of-two multiple of it are brought to the same units, bit for bit.
+pub(crate) fn exact_unit_factor(x: f64, entries: &[f64]) -> f64 {
+    let (mut lo, mut hi) = (i32::MIN, i32::MAX);
+    for &y in entries.iter().filter(|y| **y != 0.0) {
+        lo = lo.max(-1000 - binary_exponent(y));
+        hi = hi.min(1000 - binary_exponent(y));
+    }
+    let k = (-binary_exponent(x)).max(lo).min(hi).clamp(-1000, 1000);
+    2f64.powi(k)
+}
+
+/// `|v|` without overflow or underflow of the squares (`hypot` only where they would).
+#[inline]
+pub(crate) fn norm_of(v: Vec2) -> f64 {
+    let n = v.norm();
+    if n.is_finite() && n > 1e-150 {
+        n
+    } else {
+        v.x.hypot(v.y)
+    }
+}
+
+/// `|v|` of a 3-vector without overflow or underflow of the squares.
+#[inline]
+pub(crate) fn norm3_of(v: Vec3) -> f64 {
+    let n = v.norm();
+    if n.is_finite() && n > 1e-150 {
+        n
+    } else {
+        v.x.hypot(v.y).hypot(v.z)
+    }
+}
+
 /// Planar cross product `a × b = a.x b.y − a.y b.x` (the z component).
 #[inline]
 pub fn cross2(a: Vec2, b: Vec2) -> f64 {
@@ -239,6 +290,35 @@ impl Dd {
         let r = r.sub(o.mul(Dd::from(q2)));
         let q3 = r.hi / o.hi;
         Dd::renormalised(quick_two_sum(q1, q2)).add(Dd::from(q3))
+    }
+}
+
+#[cfg(test)]
+mod exponent_tests {
+    use super::{binary_exponent, exact_unit_factor};
+
+    #[test]
+    fn exponents_are_exact_and_shift_with_powers_of_two() {
+        assert_eq!(binary_exponent(1.0), 0);
+        assert_eq!(binary_exponent(1.999), 0);
+        assert_eq!(binary_exponent(-0.75), -1);
+        assert_eq!(binary_exponent(f64::MIN_POSITIVE), -1022);
+        assert_eq!(binary_exponent(f64::MIN_POSITIVE / 8.0), -1025);
+        assert_eq!(binary_exponent(f64::MAX), 1023);
+        for x in [0.7, 3.3e-200, 1.0e250, 5e-320] {
+            for k in [-300, -1, 1, 40, 300] {
+                let y = x * 2f64.powi(k);
+                if y.is_finite() && y != 0.0 && y.abs() >= f64::MIN_POSITIVE {
+                    assert_eq!(binary_exponent(y), binary_exponent(x) + k, "{x} {k}");
+                    // (Within the limits of the factor, 2^±1000.)
+                    if binary_exponent(x).abs() <= 1000 && binary_exponent(y).abs() <= 1000 {
+                        let (fx, fy) = (exact_unit_factor(x, &[x]), exact_unit_factor(y, &[y]));
+                        assert_eq!(x * fx, y * fy);
+                        assert!((1.0..2.0).contains(&(x * fx)));
+                    }
+                }
+            }
+        }
     }
 }
 

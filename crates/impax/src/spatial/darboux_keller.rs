@@ -65,7 +65,7 @@ use super::outcome::{Phase3Kind, Phases3};
 use super::ray_series::{Field, RaySeries};
 use super::rk::{dop853_step, error_measure, Dense, Step};
 use super::ContactProblem3;
-use crate::math::{Mat2, Vec2, Vec3};
+use crate::math::{norm_of, Mat2, Vec2, Vec3};
 use crate::planar::BreakdownReason;
 
 /// The termination rule of a Darboux–Keller law.
@@ -165,6 +165,7 @@ struct Point {
 }
 
 /// Event bookkeeping shared by the stages.
+#[derive(Clone, Copy)]
 struct Events {
     term: Termination,
     e: f64,
@@ -290,12 +291,21 @@ fn dense_root(g: impl FnMut(f64) -> f64, g0: f64, g1: f64) -> f64 {
     illinois(g, 0.0, g0, 1.0, g1)
 }
 
-/// Scales for the error control: velocity, impulse, work, and the relative tolerance.
+/// Scales for the error control, each of its own quantity (the slip and the normal velocity
+/// can differ by hundreds of orders of magnitude: a grazing impact, a slip far below the
+/// normal velocity), and the relative tolerance.
 #[derive(Clone, Copy)]
 struct Scales {
-    v: f64,
+    /// Tangential velocity: `σ⁻` plus the most the impact can change it, `|g|_max p`.
+    vt: f64,
+    /// Normal velocity `|v_n⁻|`.
+    vn: f64,
+    /// Normal impulse `(1+e) |v_n⁻| / w_nn` (beyond it the relative part takes over).
     p: f64,
-    w: f64,
+    /// Normal work `vn p`.
+    wn: f64,
+    /// Friction work `vt p`.
+    wt: f64,
     rtol: f64,
 }
 
@@ -303,9 +313,14 @@ struct Scales {
 /// options `opts`, calling `observe(p_n, v)` at every accepted point (for hodographs).
 ///
 /// The equations are homogeneous: with `v' = a v` and `W' = b W` the path is the same with
-/// `p' = (a/b) p` and works `W' = (a²/b) W`. Velocities or a `W` of extreme magnitude
-/// (outside `[2⁻⁶⁰, 2⁶⁰]`, where squares under- or overflow) are integrated scaled by powers
-/// of two — exact — and the result scaled back.
+/// `p' = (a/b) p` and works `W' = (a²/b) W`. The path is integrated in units where `|v_n⁻|`
+/// and `w_nn` are in `[1, 2)` (powers of two from their binary exponents — exact, and the
+/// same units for any power-of-two multiple of the problem) and scaled back; a slip above
+/// `2⁴⁵⁰` there that the impact turns (its square would overflow) in units where it is
+/// below. Each quantity's error is controlled on its own scale (tangential and normal
+/// velocity, impulse, normal and friction work), so a slip hundreds of orders of magnitude
+/// above or below the normal velocity neither swamps nor is swamped by it; a slip too fast
+/// for the impact to turn is the straight path in closed form.
 pub fn integrate(
     problem: &ContactProblem3,
     term: Termination,
@@ -327,21 +342,52 @@ pub(crate) fn integrate_with(
 ) -> Result<PathEnd, BreakdownReason> {
     let v = problem.velocity();
     let w = problem.w();
-    // Units where v_n⁻ and W_nn are near one (the normal works ∝ v_n²/W_nn): a grazing
-    // impact, v_n⁻ = −1e-300 beside v_t⁻ = 0.5, keeps its restitution.
-    let in_range = |x: f64| (2f64.powi(-60)..=2f64.powi(60)).contains(&x);
-    if in_range(v.z.abs()) && in_range(w[(2, 2)]) && in_range(v.amax()) && in_range(w.amax()) {
-        return integrate_scaled(problem, term, opts, observing, observe);
+    // Units where v_n⁻ and W_nn are in [1, 2) (the normal works ∝ v_n²/W_nn; a grazing
+    // impact, v_n⁻ = −1e-300 beside v_t⁻ = 0.5, keeps its restitution): powers of two from
+    // their binary exponents, so that a problem and any power-of-two multiple of it are
+    // integrated as the same problem, bit for bit.
+    let a = crate::math::exact_unit_factor(v.z.abs(), v.as_slice());
+    let b = crate::math::exact_unit_factor(w[(2, 2)], w.as_slice());
+    let first = if a == 1.0 && b == 1.0 {
+        integrate_scaled(problem, term, opts, observing, observe)?
+    } else {
+        integrate_in_units(problem, a, b, term, opts, observing, observe)?
+    };
+    match first {
+        Integrated::End(end) => Ok(end),
+        // (A slip that the impact turns, far above the normal velocity: once more in units
+        // where its square is representable.)
+        Integrated::HugeSlip(k) => {
+            match integrate_in_units(problem, a * k, b, term, opts, observing, observe)? {
+                Integrated::End(end) => Ok(end),
+                Integrated::HugeSlip(_) => Err(BreakdownReason::Overflow),
+            }
+        }
     }
-    let a = crate::math::unit_factor(v.z.abs(), v.as_slice());
-    let b = crate::math::unit_factor(w[(2, 2)], w.as_slice());
+}
+
+/// [`integrate_scaled`] on `problem` with velocities times `a` and `W` times `b` (powers of
+/// two: exact), the result scaled back.
+fn integrate_in_units(
+    problem: &ContactProblem3,
+    a: f64,
+    b: f64,
+    term: Termination,
+    opts: &SpatialOptions,
+    observing: bool,
+    observe: &mut dyn FnMut(f64, Vec3),
+) -> Result<Integrated, BreakdownReason> {
     // Built without the checks of `new`: in these units the approach energy of a grazing
     // impact need not be representable, and nothing here reads it.
     let scaled = problem.in_units(a, b);
-    let (kp, kv, kw) = (b / a, 1.0 / a, b / (a * a));
-    let mut end = integrate_scaled(&scaled, term, opts, observing, &mut |p, v| {
+    // (Each factor a power of two: exact, and (b/a)/a without overflow of a².)
+    let (kp, kv, kw) = (b / a, 1.0 / a, (b / a) / a);
+    let mut end = match integrate_scaled(&scaled, term, opts, observing, &mut |p, v| {
         observe(p * kp, v * kv)
-    })?;
+    })? {
+        Integrated::End(end) => end,
+        huge => return Ok(huge),
+    };
     end.impulse *= kp;
     end.velocity *= kv;
     end.compression_impulse = end.compression_impulse.map(|x| x * kp);
@@ -351,8 +397,19 @@ pub(crate) fn integrate_with(
     end.phases.scale_impulse(kp);
     end.slip_halt = end.slip_halt.map(|x| x * kp);
     end.second_compression = end.second_compression.map(|x| x * kp);
-    Ok(end)
+    Ok(Integrated::End(end))
 }
+
+/// What [`integrate_scaled`] did: the end of the path, or nothing — a slip too fast for
+/// these units, to be integrated with velocities times the factor given.
+enum Integrated {
+    End(PathEnd),
+    HugeSlip(f64),
+}
+
+/// The largest slip speed integrated in units where `v_n⁻` is near one: `2⁴⁵⁰` (its square
+/// and products of it stay far from overflow).
+const HUGE_SLIP: f64 = 2.907_354_897_182_427_6e135;
 
 fn integrate_scaled(
     problem: &ContactProblem3,
@@ -360,7 +417,7 @@ fn integrate_scaled(
     opts: &SpatialOptions,
     observing: bool,
     observe: &mut impl FnMut(f64, Vec3),
-) -> Result<PathEnd, BreakdownReason> {
+) -> Result<Integrated, BreakdownReason> {
     let wtt: Mat2 = problem.wtt();
     let wtn = problem.wtn();
     let wnn = problem.wnn();
@@ -378,13 +435,15 @@ fn integrate_scaled(
         again: None,
     };
     let scales = {
-        let v = v0.norm();
-        let p = (1.0 + e) * (-v0.z) / wnn
-            + v0.xy().norm() / (mu * wtt.norm()).max(f64::MIN_POSITIVE).max(wnn);
+        let vn = -v0.z;
+        let p = (1.0 + e) * vn / wnn;
+        let vt = norm_of(v0.xy()) + (norm_of(wtn) + mu * wtt.norm()) * p;
         Scales {
-            v,
+            vt,
+            vn,
             p,
-            w: v * p,
+            wn: vn * p,
+            wt: vt * p,
             rtol: opts.effective_rtol(),
         }
     };
@@ -406,7 +465,7 @@ fn integrate_scaled(
         let vt = v0.xy() + wtn * pf;
         let vt0 = v0.xy();
         let through_zero = vt0.x * wtn.y - vt0.y * wtn.x == 0.0 && vt0.dot(&wtn) < 0.0;
-        let halt = vt0.norm() / wtn.norm();
+        let halt = norm_of(vt0) / norm_of(wtn);
         if through_zero && halt < pf {
             // The slip runs straight through zero and continues along w_tn.
             let a = vt0.y.atan2(vt0.x);
@@ -441,7 +500,7 @@ fn integrate_scaled(
         };
         observe(pf, Vec3::new(vt.x, vt.y, end.vn));
         let slip_halt = (through_zero && halt < pf).then_some(halt);
-        return Ok(finish(&end, &ev, phases, slip_halt, 0));
+        return Ok(Integrated::End(finish(&end, &ev, phases, slip_halt, 0)));
     }
     let mut steps = 0u32;
     let mut slip_halt = None;
@@ -449,6 +508,27 @@ fn integrate_scaled(
 
     // ---- Stage 1: initial slip ----
     if pt.vt.x != 0.0 || pt.vt.y != 0.0 {
+        if let Some(end) = rigid_slip(&wtt, wtn, wnn, mu, scales, &mut pt, &mut ev)? {
+            phases.push(
+                Phase3Kind::Slip {
+                    from: phi0,
+                    to: phi0,
+                },
+                pt.p,
+            );
+            observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
+            return Ok(Integrated::End(finish(&end, &ev, phases, None, 0)));
+        }
+        let sigma = norm_of(pt.vt);
+        if sigma > HUGE_SLIP {
+            // A slip that the impact does turn (it compresses the contact further while
+            // slipping, `w_nn − μ w_tn·ŝ ≤ 0`, or the law ends only after the slip has
+            // changed) and whose square would overflow in these units: to be integrated
+            // in units where it is below `2⁴⁵⁰`, the normal velocity smaller (its square
+            // still representable, and negligible beside the compression the slip drives).
+            let k = crate::math::exact_unit_factor(2.0 * sigma / HUGE_SLIP, &[sigma, v0.z]);
+            return Ok(Integrated::HugeSlip(k));
+        }
         // The centrifugal invariant ray, if any: the direction of resumption (theory §2).
         let centrifugal = resumption_direction(problem).map(|(dir, rate)| Centrifugal {
             dir,
@@ -477,7 +557,7 @@ fn integrate_scaled(
                     },
                     pt.p,
                 );
-                return Ok(finish(&pt, &ev, phases, None, steps));
+                return Ok(Integrated::End(finish(&pt, &ev, phases, None, steps)));
             }
             SlipEnd::Halted { phi } => {
                 phases.push(
@@ -525,7 +605,7 @@ fn integrate_scaled(
         true => {
             observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
             phases.push(kind, pt.p);
-            Ok(finish(&pt, &ev, phases, slip_halt, steps))
+            Ok(Integrated::End(finish(&pt, &ev, phases, slip_halt, steps)))
         }
         false => Err(BreakdownReason::NoSeparation),
     }
@@ -549,6 +629,47 @@ enum Settled {
     Centripetal { dir: Vec2, rate: f64 },
     /// Growing along the centrifugal ray.
     Centrifugal(Centrifugal),
+}
+
+/// A slip so fast beside the normal velocity that the impact cannot turn it: `|dv_t/dp_n| =
+/// |g| ≤ G = |w_tn| + μ ‖W_tt‖`, so over the normal impulse `L = ε σ⁻/(4G)` the direction
+/// turns by less than `ε/4` and the speed changes at the constant rate `ŝ·g` — the path is
+/// straight to round-off. If the law ends within `L` on it (every event in closed form),
+/// that is the end: the integration is not needed (and its squares of `σ` could overflow).
+/// Tried only where `4 G` times the normal impulse scale is below `ε σ⁻`; `None` if the law
+/// does not end within `L` (then the integration takes over).
+fn rigid_slip(
+    wtt: &Mat2,
+    wtn: Vec2,
+    wnn: f64,
+    mu: f64,
+    sc: Scales,
+    pt: &mut Point,
+    ev: &mut Events,
+) -> Result<Option<Point>, BreakdownReason> {
+    let sigma = norm_of(pt.vt);
+    let g_max = norm_of(wtn) + mu * wtt.norm();
+    let rigid = 4.0 * g_max * sc.p <= f64::EPSILON * sigma;
+    if !rigid {
+        return Ok(None);
+    }
+    let dir = pt.vt / sigma;
+    let piece = Linear {
+        kind: Phase3Kind::Slip { from: 0.0, to: 0.0 },
+        ratio: -mu * dir,
+        slope: wnn - mu * wtn.dot(&dir),
+        dir,
+        sigma,
+        dsigma: dir.dot(&(wtn - mu * (wtt * dir))),
+        length: f64::EPSILON * sigma / (4.0 * g_max),
+    };
+    let (mut end, mut events) = (*pt, *ev);
+    if linear_piece(&piece, &mut end, &mut events, mu)? {
+        (*pt, *ev) = (end, events);
+        Ok(Some(end))
+    } else {
+        Ok(None)
+    }
 }
 
 /// A straight piece of the path: friction ratio `ratio`, slip `σ dir` with `σ` changing at
@@ -657,6 +778,11 @@ fn linear_piece(
     match x_end {
         Some(x) if x <= piece.length => {
             *pt = at(x);
+            if ev.term == Termination::Newton && kn > 0.0 && start.vn <= ev.target {
+                // Newton's rule holds exactly at its end (not only to the round-off of the
+                // path's normal velocity, which after a long compression can exceed it).
+                pt.vn = ev.target;
+            }
             Ok(true)
         }
         _ if piece.length.is_finite() => {
@@ -881,17 +1007,6 @@ fn poisson_ends_first(ev: &Events, kind: u8, c: &Point) -> bool {
     kind == 2 && ev.counts_compression() && ev.terminal(c) >= 0.0
 }
 
-/// `|v|` without overflow or underflow of the squares (`hypot` only where they would).
-#[inline]
-fn norm_of(v: Vec2) -> f64 {
-    let n = v.norm();
-    if n.is_finite() && n > 1e-150 {
-        n
-    } else {
-        v.x.hypot(v.y)
-    }
-}
-
 /// The angle `φ` wrapped to `(−π, π]`.
 #[inline]
 fn wrap_angle(phi: f64) -> f64 {
@@ -927,7 +1042,7 @@ impl TailSeries {
 
     fn get(&mut self, field: &Field, wnn: f64, g: Vec2, vt: Vec2) -> Option<&RaySeries> {
         if !self.built {
-            let sigma = vt.norm();
+            let sigma = norm_of(vt);
             let (f, q) = (vt.x * g.y - vt.y * g.x, vt.dot(&g));
             if f.abs() > 0.15 * q.abs() {
                 return None;
@@ -964,7 +1079,7 @@ fn series_tail(
     ev: &mut Events,
     observe: &mut impl FnMut(f64, Vec3),
 ) -> Option<SlipEnd> {
-    let sigma0 = pt.vt.norm();
+    let sigma0 = norm_of(pt.vt);
     if !(sigma0 > 0.0 && sigma0.is_finite()) {
         return None;
     }
@@ -1042,7 +1157,7 @@ fn series_tail(
         let s_from = if from.vt == base.vt {
             0.0
         } else {
-            (from.vt.norm() / sigma0).ln()
+            (norm_of(from.vt) / sigma0).ln()
         };
         let s_of = |th: f64| {
             if th >= 1.0 {
@@ -1098,7 +1213,7 @@ fn turns_before_event(
     wtn: Vec2,
     mu: f64,
 ) -> bool {
-    let sigma = pt.vt.norm();
+    let sigma = norm_of(pt.vt);
     let s = pt.vt / sigma;
     let kn = wnn - mu * wtn.dot(&s);
     if kn.is_nan() || kn <= 0.0 {
@@ -1200,7 +1315,7 @@ fn slip_stage(
     // State in p-mode: [vt1, vt2, vn, pt1, pt2, wn, wt].
     let fp = |_p: f64, y: &[f64; 7]| -> [f64; 7] {
         let vt = Vec2::new(y[0], y[1]);
-        let sigma = vt.norm();
+        let sigma = norm_of(vt);
         let s = vt / sigma;
         let g = wtn - mu * (wtt * s);
         [
@@ -1217,7 +1332,7 @@ fn slip_stage(
     // smooth everywhere but at v_t = 0 itself (σ = |v_t|), which is reached only as τ → ∞.
     let ft = |_t: f64, z: &[f64; 8]| -> [f64; 8] {
         let (v1, v2) = (z[0], z[1]);
-        let sigma = (v1 * v1 + v2 * v2).sqrt();
+        let sigma = norm_of(Vec2::new(v1, v2));
         let wv1 = wtt[(0, 0)] * v1 + wtt[(0, 1)] * v2;
         let wv2 = wtt[(1, 0)] * v1 + wtt[(1, 1)] * v2;
         [
@@ -1287,41 +1402,41 @@ fn slip_stage(
     let atol_u = [
         sc.rtol,
         sc.rtol,
-        sc.rtol * sc.v,
+        sc.rtol * sc.vt,
         sc.rtol * sc.p,
-        sc.rtol * sc.v,
+        sc.rtol * sc.vn,
         sc.rtol * sc.p,
         sc.rtol * sc.p,
-        sc.rtol * sc.w,
-        sc.rtol * sc.w,
+        sc.rtol * sc.wn,
+        sc.rtol * sc.wt,
     ];
     let atol_t = [
-        sc.rtol * sc.v,
-        sc.rtol * sc.v,
-        sc.rtol * sc.v,
+        sc.rtol * sc.vt,
+        sc.rtol * sc.vt,
+        sc.rtol * sc.vn,
         sc.rtol * sc.p,
         sc.rtol * sc.p,
-        sc.rtol * sc.w,
-        sc.rtol * sc.w,
+        sc.rtol * sc.wn,
+        sc.rtol * sc.wt,
         sc.rtol * sc.p,
     ];
     let atol_p = [
-        sc.rtol * sc.v,
-        sc.rtol * sc.v,
-        sc.rtol * sc.v,
+        sc.rtol * sc.vt,
+        sc.rtol * sc.vt,
+        sc.rtol * sc.vn,
         sc.rtol * sc.p,
         sc.rtol * sc.p,
-        sc.rtol * sc.w,
-        sc.rtol * sc.w,
+        sc.rtol * sc.wn,
+        sc.rtol * sc.wt,
     ];
-    let sigma0 = pt.vt.norm();
+    let sigma0 = norm_of(pt.vt);
     let vn_start = pt.vn;
     let field = Field::new(wtt, wtn, mu);
     // The rest of the slip is a straight run into the origin when the direction is (to the
     // last bit of the result) on an invariant ray: the remaining impulse σ/|ŝ·g| times the
     // angular offset from the ray is below 1e-16 of the impulse scale. Returns (ŝ, ŝ·g).
     let straight_tail = |vt: Vec2| -> Option<(Vec2, f64)> {
-        let sigma = vt.norm();
+        let sigma = norm_of(vt);
         let s = vt / sigma;
         let g = wtn - mu * (wtt * s);
         let q = s.dot(&g);
@@ -1340,7 +1455,7 @@ fn slip_stage(
     // Run the straight tail in closed form to the halt (or to an event inside it).
     let run_tail =
         |pt: &mut Point, ev: &mut Events, s: Vec2, q: f64| -> Result<SlipEnd, BreakdownReason> {
-            let sigma = pt.vt.norm();
+            let sigma = norm_of(pt.vt);
             // From the unnormalised slip: bit-identical to φ0 when the tail starts at v⁻.
             let phi = pt.vt.y.atan2(pt.vt.x);
             let piece = Linear {
@@ -1380,7 +1495,7 @@ fn slip_stage(
     // is the root of `f` next to the direction (Newton's method); a centrifugal one is the
     // direction of resumption, with its rate and slope from `centrifugal`.
     let settled_on_ray = |vt: Vec2| -> Option<Settled> {
-        let sigma = vt.norm();
+        let sigma = norm_of(vt);
         let s = vt / sigma;
         // f' at the direction: df/dφ = s' × g − μ s × W_tt s', s' = (−s_y, s_x).
         let g = wtn - mu * (wtt * s);
@@ -1392,7 +1507,7 @@ fn slip_stage(
         (df < 0.0 && q.abs() <= 1e-3 * -df).then_some(())?;
         let dir = polish_ray(wtt, wtn, mu, s)?;
         let offset = (s.x * dir.y - s.y * dir.x).abs();
-        (offset * sigma <= 4.0 * sc.rtol * sc.v).then_some(())?;
+        (offset * sigma <= 4.0 * sc.rtol * sc.vt).then_some(())?;
         let q = dir.dot(&(wtn - mu * (wtt * dir)));
         if q < 0.0 {
             return Some(Settled::Centripetal { dir, rate: q });
@@ -1408,7 +1523,7 @@ fn slip_stage(
                 ratio: -mu * c.dir,
                 slope: c.slope,
                 dir: c.dir,
-                sigma: pt.vt.norm(),
+                sigma: norm_of(pt.vt),
                 dsigma: c.rate,
                 length: f64::INFINITY,
             };
@@ -1436,7 +1551,7 @@ fn slip_stage(
     let mut ht = 0.0f64;
     // The rate of change of the slip, `ŝ·g` and `|g|`, for the switches between modes.
     let rates = |vt: Vec2| -> (f64, f64) {
-        let s = vt / vt.norm();
+        let s = vt / norm_of(vt);
         let g = wtn - mu * (wtt * s);
         (s.dot(&g), norm_of(g))
     };
@@ -1488,14 +1603,16 @@ fn slip_stage(
                             }
                         }
                     }
-                    let sigma = pt.vt.norm();
+                    let sigma = norm_of(pt.vt);
                     let (q, gn) = rates(pt.vt);
                     // Go logarithmic as soon as the slip shrinks steadily (hysteresis: enter
                     // only where the shrink rate is nearly |g|): steps in p_n would have to
                     // shrink with σ. Once the slip is small otherwise, go to the
                     // pseudo-time τ, in which a swing of the direction near the origin
-                    // takes steps independent of σ.
-                    if q < -0.9 * gn {
+                    // takes steps independent of σ. (Only where the slip shrinks
+                    // appreciably before the next event: a slip far above the normal
+                    // velocity changes ln σ by less than its round-off over the impact.)
+                    if q < -0.9 * gn && turns_before_event(pt, ev, vn_start, &field, wnn, wtn, mu) {
                         mode = Mode::U;
                         hu = -(h * -q / sigma).min(0.25);
                         break;
@@ -1531,10 +1648,10 @@ fn slip_stage(
             }
             // ---------------- u-mode (u = ln σ, decreasing) ----------------
             Mode::U => {
-                let u_start = pt.vt.norm().ln();
+                let u_start = norm_of(pt.vt).ln();
                 let u_end = u_start - LOG_SPAN;
                 let mut u = u_start;
-                let sigma = pt.vt.norm();
+                let sigma = norm_of(pt.vt);
                 let mut z = [
                     pt.vt.x / sigma,
                     pt.vt.y / sigma,
@@ -1620,7 +1737,7 @@ fn slip_stage(
                 // Stability: the Lipschitz constant of the τ system in v_t is at most
                 // |w_tn| + μ |W_tt|, and DOP853 is stable on the real axis to about −6.
                 let h_stable = 3.0 / (wtn.norm() + mu * wtt.norm()).max(f64::MIN_POSITIVE);
-                let sigma_end = pt.vt.norm() * (-LOG_SPAN).exp();
+                let sigma_end = norm_of(pt.vt) * (-LOG_SPAN).exp();
                 while *steps < max_steps {
                     ht = ht.min(h_stable);
                     let adv = advance(
@@ -1650,7 +1767,7 @@ fn slip_stage(
                         return Ok(end);
                     }
                     ht *= grow(en);
-                    let sigma = pt.vt.norm();
+                    let sigma = norm_of(pt.vt);
                     let (q, gn) = rates(pt.vt);
                     if sigma <= sigma_end && q < 0.0 {
                         // σ has shrunk by e^-40: the rest is a straight run at the last bit
@@ -1659,7 +1776,7 @@ fn slip_stage(
                         observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
                         return Ok(end);
                     }
-                    if q < -0.9 * gn {
+                    if q < -0.9 * gn && turns_before_event(pt, ev, vn_start, &field, wnn, wtn, mu) {
                         mode = Mode::U;
                         hu = -(q.abs() * ht).min(0.25);
                         break;

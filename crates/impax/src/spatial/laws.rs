@@ -6,7 +6,7 @@ use super::darboux_keller::{integrate_with, PathEnd, SpatialOptions, Termination
 use super::outcome::{Detail3, Outcome3, Phase3Kind, Phases3, Resolution3};
 use super::ContactProblem3;
 use crate::law::LawId;
-use crate::math::{Vec2, Vec3};
+use crate::math::{norm_of, Vec2, Vec3};
 use crate::planar::laws::ENERGY_GAIN_ROUND_OFF;
 use crate::planar::{Breakdown, BreakdownReason, Inconsistency, Verdict, WorkSplit};
 
@@ -122,7 +122,7 @@ fn newton_pn(problem: &ContactProblem3, law: LawId, k: Vec2) -> Result<f64, Brea
 pub fn whittaker(problem: &ContactProblem3) -> Resolution3 {
     let law = LawId::Whittaker;
     let vt = problem.velocity().xy();
-    let sigma = vt.norm();
+    let sigma = norm_of(vt);
     let (s0, kind) = if sigma > 0.0 {
         let s = vt / sigma;
         let a = s.y.atan2(s.x);
@@ -158,7 +158,7 @@ pub fn brach(problem: &ContactProblem3) -> Resolution3 {
     let pt = star.xy();
     let sticking = star.z > 0.0;
     let ratio = if sticking {
-        pt.norm() / star.z
+        norm_of(pt) / star.z
     } else {
         f64::INFINITY
     };
@@ -177,15 +177,15 @@ pub fn brach(problem: &ContactProblem3) -> Resolution3 {
             None,
         ));
     }
-    let dir = if pt.norm() > 0.0 {
-        pt / pt.norm()
+    let dir = if norm_of(pt) > 0.0 {
+        pt / norm_of(pt)
     } else {
         Vec2::zeros()
     };
     let k = mu * dir;
     let pf = newton_pn(problem, law, k)?;
     let a = (-dir.y).atan2(-dir.x);
-    let kind = if mu > 0.0 && pt.norm() > 0.0 {
+    let kind = if mu > 0.0 && norm_of(pt) > 0.0 {
         Phase3Kind::Slip { from: a, to: a }
     } else if v.x != 0.0 || v.y != 0.0 {
         // Frictionless: label by the initial slip, as the planar law does.
@@ -282,7 +282,38 @@ pub fn resolve(law: LawId, problem: &ContactProblem3) -> Resolution3 {
 
 /// [`resolve`] with the options `opts` of the Darboux–Keller integration (the other laws
 /// ignore them).
+///
+/// Every law is resolved in the problem's canonical units (`|v_n⁻|` and `w_nn` in `[1, 2)`,
+/// powers of two: exact) and the result scaled back: invariant under scaling of the
+/// velocities and of `W` (bit for bit for powers of two) wherever its numbers are
+/// representable.
 pub fn resolve_with(law: LawId, problem: &ContactProblem3, opts: &SpatialOptions) -> Resolution3 {
+    // (The Darboux–Keller integration chooses its own units, the same way, and scales its
+    // path back to the problem's: its works need not be representable in the units of a
+    // grazing impact's normal velocity.)
+    let canonical = if law.is_darboux_keller() {
+        None
+    } else {
+        problem.canonical_units()
+    };
+    let out = match canonical {
+        None => resolve_in_units(law, problem, opts),
+        Some((scaled, u)) => resolve_in_units(law, &scaled, opts)
+            .map(|o| o.in_problem_units(u))
+            .map_err(|b| b.in_problem_units(u)),
+    }?;
+    if out.is_finite() {
+        Ok(out)
+    } else {
+        Err(Breakdown {
+            law,
+            reason: BreakdownReason::Overflow,
+        })
+    }
+}
+
+/// [`resolve_with`] in the units of `problem` as given.
+fn resolve_in_units(law: LawId, problem: &ContactProblem3, opts: &SpatialOptions) -> Resolution3 {
     let out = match law {
         LawId::Whittaker => whittaker(problem),
         LawId::Brach => brach(problem),

@@ -46,7 +46,7 @@ use super::laws::{assemble, straight};
 use super::outcome::{Detail3, Phase3Kind, Resolution3};
 use super::ContactProblem3;
 use crate::law::LawId;
-use crate::math::{cross2, Vec2, Vec3};
+use crate::math::{cross2, norm3_of, norm_of, Vec2, Vec3};
 use crate::planar::{Breakdown, BreakdownReason, Inconsistency};
 use std::f64::consts::TAU;
 
@@ -312,7 +312,7 @@ fn newton_target(problem: &ContactProblem3) -> f64 {
 fn stick(problem: &ContactProblem3, n: f64) -> Option<LcpSolution3> {
     let v = problem.velocity();
     let p = problem.w().cholesky()?.solve(&Vec3::new(-v.x, -v.y, n));
-    if !(p.z >= 0.0 && p.xy().norm() <= problem.friction() * p.z) {
+    if !(p.z >= 0.0 && norm_of(p.xy()) <= problem.friction() * p.z) {
         return None;
     }
     let velocity_after = Vec3::new(0.0, 0.0, newton_target(problem));
@@ -336,6 +336,24 @@ fn stick(problem: &ContactProblem3, n: f64) -> Option<LcpSolution3> {
 /// assert_eq!(lcp::solutions(&p).len(), 1);
 /// ```
 pub fn solutions(problem: &ContactProblem3) -> Vec<LcpSolution3> {
+    // In the problem's canonical units (powers of two, exact; the same as `resolve`'s), the
+    // solutions scaled back.
+    let Some((scaled, u)) = problem.canonical_units() else {
+        return solutions_in_units(problem);
+    };
+    solutions_in_units(&scaled)
+        .into_iter()
+        .map(|s| LcpSolution3 {
+            impulse: s.impulse.map(|x| u.impulse(x)),
+            velocity_after: s.velocity_after.map(|x| u.velocity(x)),
+            energy_change: u.work(s.energy_change),
+            ..s
+        })
+        .collect()
+}
+
+/// [`solutions`] in the units of `problem` as given.
+fn solutions_in_units(problem: &ContactProblem3) -> Vec<LcpSolution3> {
     let n = -(1.0 + problem.restitution()) * problem.velocity().z;
     let mut all: Vec<LcpSolution3> = stick(problem, n).into_iter().collect();
     if problem.friction() == 0.0 {
@@ -354,10 +372,10 @@ pub fn solutions(problem: &ContactProblem3) -> Vec<LcpSolution3> {
     }
     for theta in slip_angles(&Trig2::of(problem, n)) {
         if let Some(c) = slip_candidate(problem, n, theta) {
-            let scale = c.impulse.norm();
+            let scale = norm3_of(c.impulse);
             if all
                 .iter()
-                .all(|o| (o.impulse - c.impulse).norm() > 1e-10 * scale)
+                .all(|o| norm3_of(o.impulse - c.impulse) > 1e-10 * scale)
             {
                 let theta = if theta > std::f64::consts::PI {
                     theta - TAU

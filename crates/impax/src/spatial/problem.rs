@@ -203,6 +203,17 @@ impl ContactProblem3 {
         Self::new(m, Vec3::new(v.x, 0.0, v.y), p.friction(), p.restitution())
     }
 
+    /// The units in which the spatial laws resolve the problem: `v → a v`, `W → b W` with `a`,
+    /// `b` the powers of two that bring `|v_n⁻|` and `w_nn` into `[1, 2)` (limited so that no
+    /// nonzero entry leaves `[2⁻¹⁰⁰⁰, 2¹⁰⁰⁰]`). Exact, and the same problem in these units for
+    /// any power-of-two multiple of `v` and `W`: every law is invariant under such a change of
+    /// units, bit for bit, wherever its numbers are representable. `None` when `a = b = 1`.
+    pub(crate) fn canonical_units(&self) -> Option<(Self, crate::planar::Units)> {
+        let a = crate::math::exact_unit_factor(self.v.z.abs(), self.v.as_slice());
+        let b = crate::math::exact_unit_factor(self.w[(2, 2)], self.w.as_slice());
+        (a != 1.0 || b != 1.0).then(|| (self.in_units(a, b), crate::planar::Units { a, b }))
+    }
+
     /// The same problem with velocities times `a` and `W` times `b` (powers of two: exact),
     /// without the validation of [`ContactProblem3::new`] (the approach energy may not be
     /// representable in these units).

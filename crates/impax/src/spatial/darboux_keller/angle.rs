@@ -45,8 +45,8 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 use super::{
-    after_event, event_value, first_event, linear_piece, poisson_ends_first, series_tail, Events,
-    Linear, Point, Scales, SlipEnd, TailSeries, Termination,
+    after_event, event_value, first_event, linear_piece, norm_of, poisson_ends_first, series_tail,
+    Events, Linear, Point, Scales, SlipEnd, TailSeries, Termination,
 };
 use crate::math::{Mat2, Vec2, Vec3};
 use crate::planar::BreakdownReason;
@@ -510,7 +510,7 @@ pub(super) fn run(
     straight: &mut impl FnMut(&mut Point, &mut Events) -> Option<Result<SlipEnd, BreakdownReason>>,
 ) -> Result<Exit, BreakdownReason> {
     let field = cx.field;
-    let sigma0 = pt.vt.norm();
+    let sigma0 = norm_of(pt.vt);
     if !(sigma0 > 0.0 && sigma0.is_finite()) {
         return Ok(Exit::Handoff);
     }
@@ -569,7 +569,7 @@ pub(super) fn run(
         let kn = cx.wnn - cx.mu * cx.wtn.dot(&n0.s);
         if kn > 0.0 {
             let to_event = (base.vn.abs().max(cx.e * cx.vn0.abs())) / kn;
-            let rate = base.vt.norm() * n0.rho;
+            let rate = norm_of(base.vt) * n0.rho;
             if to_event > 0.0 && rate > 0.0 {
                 h = h.min(4.0 * to_event / rate);
             }
@@ -615,7 +615,7 @@ pub(super) fn run(
         let cu = lb.cumulative(&du);
         let sig: [f64; M] = std::array::from_fn(|j| {
             if j == 0 {
-                base.vt.norm()
+                norm_of(base.vt)
             } else {
                 (u0 + half * cu[j]).exp()
             }
@@ -788,7 +788,7 @@ pub(super) fn run(
                 return Ok(Exit::End(end));
             }
             if within(TAN_0_15) {
-                let g = cx.wtn - cx.mu * (cx.wtt * (pt.vt / pt.vt.norm()));
+                let g = cx.wtn - cx.mu * (cx.wtt * (pt.vt / norm_of(pt.vt)));
                 if let Some(ser) = series.get(field, cx.wnn, g, pt.vt) {
                     let sc = cx.sc;
                     if let Some(end) = series_tail(ser, cx.wtn, cx.wnn, cx.mu, sc, pt, ev, observe)
@@ -801,7 +801,7 @@ pub(super) fn run(
             // On the ray ahead to the last bit of the result: the rest is a straight run
             // along it.
             let s = fan.ahead.dir;
-            let sigma = pt.vt.norm();
+            let sigma = norm_of(pt.vt);
             let piece = Linear {
                 kind: Phase3Kind::Stick,
                 ratio: -cx.mu * s,
