@@ -22,7 +22,9 @@ pub enum LawId {
     Brach,
     /// `newton`: Darboux–Keller integration ended by kinematic restitution `v_n⁺ = −e v_n⁻`.
     Newton,
-    /// `poisson`: Darboux–Keller integration ended by kinetic restitution `p_f = (1+e) p_c`.
+    /// `poisson`: Darboux–Keller integration ended by kinetic restitution `p_f = (1+e) p_c`
+    /// (in 3D after a jamb: restitution impulse `e` times the impulse of every compression
+    /// phase).
     Poisson,
     /// `energetic`: Darboux–Keller integration ended by Stronge's energetic restitution
     /// `W_r = −e² W_c`.

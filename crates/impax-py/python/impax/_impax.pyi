@@ -91,7 +91,7 @@ class Outcome:
     @property
     def inconsistency(self) -> dict[str, str] | None:
         """``{"id", "message"}``: ``slip-reversed``, ``reversal-did-not-happen``,
-        ``multiple-solutions``."""
+        ``multiple-solutions``, ``still-approaching``."""
     @property
     def detail(self) -> dict[str, Any] | None:
         """Law-specific numbers (two-phase ``switch_impulse``; smith ``eta``, ``roots``,

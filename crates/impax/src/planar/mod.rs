@@ -12,4 +12,5 @@ pub use outcome::{
     Breakdown, BreakdownReason, BriefResolution, Inconsistency, LawDetail, Outcome, OutcomeBrief,
     Phase, PhaseKind, Phases, Resolution, SlipDirection, SmithReading, Verdict, WorkSplit,
 };
+pub(crate) use problem::Units;
 pub use problem::{ContactProblem, InverseInertia};

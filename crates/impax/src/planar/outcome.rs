@@ -207,15 +207,25 @@ pub enum Inconsistency {
         /// Number of distinct solutions (2 or 3).
         count: usize,
     },
+    /// The impact ended with the bodies still approaching (`v_n⁺ < 0` beyond round-off): no
+    /// impact law may end there. The Darboux–Keller laws are built never to (Poisson's
+    /// after a jamb ends only once the restitution impulse reaches `e` times the impulse of
+    /// every compression phase, with `v_n ≥ 0`); the check stays as a guard.
+    StillApproaching {
+        /// Normal contact velocity after the impact.
+        normal_velocity: f64,
+    },
 }
 
 impl Inconsistency {
-    /// Stable id: `slip-reversed`, `reversal-did-not-happen` or `multiple-solutions`.
+    /// Stable id: `slip-reversed`, `reversal-did-not-happen`, `multiple-solutions` or
+    /// `still-approaching`.
     pub fn id(&self) -> &'static str {
         match self {
             Inconsistency::SlipReversed { .. } => "slip-reversed",
             Inconsistency::ReversalDidNotHappen { .. } => "reversal-did-not-happen",
             Inconsistency::MultipleSolutions { .. } => "multiple-solutions",
+            Inconsistency::StillApproaching { .. } => "still-approaching",
         }
     }
 }
@@ -234,6 +244,10 @@ impl fmt::Display for Inconsistency {
             Inconsistency::MultipleSolutions { count } => write!(
                 f,
                 "the complementarity conditions have {count} solutions; the one of least kinetic energy after is shown"
+            ),
+            Inconsistency::StillApproaching { normal_velocity } => write!(
+                f,
+                "the impact ended with the bodies still approaching (v_n+ = {normal_velocity:.6e} < 0)"
             ),
         }
     }
@@ -350,6 +364,11 @@ impl Outcome {
             Inconsistency::ReversalDidNotHappen { slip_after } => {
                 Inconsistency::ReversalDidNotHappen {
                     slip_after: u.velocity(slip_after),
+                }
+            }
+            Inconsistency::StillApproaching { normal_velocity } => {
+                Inconsistency::StillApproaching {
+                    normal_velocity: u.velocity(normal_velocity),
                 }
             }
             other => other,

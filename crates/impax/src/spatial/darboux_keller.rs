@@ -49,21 +49,23 @@
 //!    `(λ' I + μ W_tt) ŝ = w_tn`, `λ' > 0` ([`resumption_direction`]): straight, linear.
 //!
 //! Events: the end of compression (`v_n = 0`), the termination of the law (`newton`
-//! `v_n = −e v_n⁻`; `poisson` `p_n = (1+e) p_c`; `energetic` `W_n = (1 − e²) W_c`), and a
-//! second compression (jamb: `v_n` falls back to zero after compression ended; reported).
-//! Each is located on the discrete solution by re-stepping from the step's start
+//! `v_n = −e v_n⁻`; `poisson` `p_n = (1+e) p_c`, or after a jamb the point where the
+//! restitution impulse reaches `e` times the compression impulse of every phase — see
+//! [`Termination::Poisson`]; `energetic` `W_n = (1 − e²) W_c`), and a second compression
+//! (jamb: `v_n` falls back to zero after compression ended; reported; for `poisson` every
+//! return to compression and its end). Each is located on the discrete solution by re-stepping from the step's start
 //! (Illinois iteration, seeded by the seventh-order dense output of the step and started
 //! on a bracket of ±1e-9 of the step around the seed), to near machine precision; in the
 //! linear stages they are exact.
 
 mod angle;
 
-use super::invariant::{resumption_direction, sticking_ratio};
+use super::invariant::{polish_ray, resumption_direction};
 use super::outcome::{Phase3Kind, Phases3};
 use super::ray_series::{Field, RaySeries};
 use super::rk::{dop853_step, error_measure, Dense, Step};
 use super::ContactProblem3;
-use crate::math::{Mat2, Vec2, Vec3};
+use crate::math::{norm_of, Mat2, Vec2, Vec3};
 use crate::planar::BreakdownReason;
 
 /// The termination rule of a Darboux–Keller law.
@@ -71,7 +73,13 @@ use crate::planar::BreakdownReason;
 pub enum Termination {
     /// `v_n(p_f) = −e v_n⁻`.
     Newton,
-    /// `p_f = (1 + e) p_c`.
+    /// Poisson's kinetic restitution: the impulse of restitution is `e` times that of
+    /// compression, `P_r(p_f) = e P_c(p_f)`, with `P_c` the normal impulse over which
+    /// `v_n < 0` and `P_r` that over which `v_n ≥ 0` — `p_f = (1 + e) p_c` unless `v_n`
+    /// falls back below zero after the end of compression (a jamb, Batlle 1996), whose
+    /// phases then add to the compression (Stronge, *Impact Mechanics*, 2000, treats the
+    /// kinetic coefficient through such a second compression). The end is always reached
+    /// with `v_n ≥ 0` (`P_r` grows only there): an impact does not end approaching.
     Poisson,
     /// `W_n(p_f) = (1 − e²) W_c`.
     Energetic,
@@ -157,6 +165,7 @@ struct Point {
 }
 
 /// Event bookkeeping shared by the stages.
+#[derive(Clone, Copy)]
 struct Events {
     term: Termination,
     e: f64,
@@ -164,17 +173,36 @@ struct Events {
     pc: Option<f64>,
     wc: f64,
     second: Option<f64>,
+    /// Poisson: the normal impulse of the compression phases after the first (`v_n < 0`
+    /// again after a jamb) that have ended.
+    recompressed: f64,
+    /// Poisson: where the current compression phase after the first began, while in one.
+    again: Option<f64>,
 }
 
 impl Events {
     /// The termination function, increasing through zero at the end (only after `p_c`).
+    ///
+    /// Poisson's: the restitution impulse (where `v_n ≥ 0`) reaches `e` times the
+    /// compression impulse (where `v_n < 0`), `p − C ≥ e C`, i.e. `p − (1+e) C` with
+    /// `C = p_c + recompressed` the compression impulse so far; constant (and negative)
+    /// during a later compression phase, which adds to `C` when it ends.
     #[inline]
     fn terminal(&self, pt: &Point) -> f64 {
         match self.term {
             Termination::Newton => pt.vn - self.target,
-            Termination::Poisson => pt.p - (1.0 + self.e) * self.pc.unwrap_or(f64::INFINITY),
+            Termination::Poisson => {
+                let c = self.pc.unwrap_or(f64::INFINITY) + self.recompressed;
+                self.again.unwrap_or(pt.p) - (1.0 + self.e) * c
+            }
             Termination::Energetic => pt.wn - (1.0 - self.e * self.e) * self.wc,
         }
+    }
+
+    /// Whether every compression phase is tracked (Poisson: its termination counts them).
+    #[inline]
+    fn counts_compression(&self) -> bool {
+        self.term == Termination::Poisson
     }
 }
 
@@ -263,12 +291,21 @@ fn dense_root(g: impl FnMut(f64) -> f64, g0: f64, g1: f64) -> f64 {
     illinois(g, 0.0, g0, 1.0, g1)
 }
 
-/// Scales for the error control: velocity, impulse, work, and the relative tolerance.
+/// Scales for the error control, each of its own quantity (the slip and the normal velocity
+/// can differ by hundreds of orders of magnitude: a grazing impact, a slip far below the
+/// normal velocity), and the relative tolerance.
 #[derive(Clone, Copy)]
 struct Scales {
-    v: f64,
+    /// Tangential velocity: `σ⁻` plus the most the impact can change it, `|g|_max p`.
+    vt: f64,
+    /// Normal velocity `|v_n⁻|`.
+    vn: f64,
+    /// Normal impulse `(1+e) |v_n⁻| / w_nn` (beyond it the relative part takes over).
     p: f64,
-    w: f64,
+    /// Normal work `vn p`.
+    wn: f64,
+    /// Friction work `vt p`.
+    wt: f64,
     rtol: f64,
 }
 
@@ -276,9 +313,14 @@ struct Scales {
 /// options `opts`, calling `observe(p_n, v)` at every accepted point (for hodographs).
 ///
 /// The equations are homogeneous: with `v' = a v` and `W' = b W` the path is the same with
-/// `p' = (a/b) p` and works `W' = (a²/b) W`. Velocities or a `W` of extreme magnitude
-/// (outside `[2⁻⁶⁰, 2⁶⁰]`, where squares under- or overflow) are integrated scaled by powers
-/// of two — exact — and the result scaled back.
+/// `p' = (a/b) p` and works `W' = (a²/b) W`. The path is integrated in units where `|v_n⁻|`
+/// and `w_nn` are in `[1, 2)` (powers of two from their binary exponents — exact, and the
+/// same units for any power-of-two multiple of the problem) and scaled back; a slip above
+/// `2⁴⁵⁰` there that the impact turns (its square would overflow) in units where it is
+/// below. Each quantity's error is controlled on its own scale (tangential and normal
+/// velocity, impulse, normal and friction work), so a slip hundreds of orders of magnitude
+/// above or below the normal velocity neither swamps nor is swamped by it; a slip too fast
+/// for the impact to turn is the straight path in closed form.
 pub fn integrate(
     problem: &ContactProblem3,
     term: Termination,
@@ -300,21 +342,52 @@ pub(crate) fn integrate_with(
 ) -> Result<PathEnd, BreakdownReason> {
     let v = problem.velocity();
     let w = problem.w();
-    // Units where v_n⁻ and W_nn are near one (the normal works ∝ v_n²/W_nn): a grazing
-    // impact, v_n⁻ = −1e-300 beside v_t⁻ = 0.5, keeps its restitution.
-    let in_range = |x: f64| (2f64.powi(-60)..=2f64.powi(60)).contains(&x);
-    if in_range(v.z.abs()) && in_range(w[(2, 2)]) && in_range(v.amax()) && in_range(w.amax()) {
-        return integrate_scaled(problem, term, opts, observing, observe);
+    // Units where v_n⁻ and W_nn are in [1, 2) (the normal works ∝ v_n²/W_nn; a grazing
+    // impact, v_n⁻ = −1e-300 beside v_t⁻ = 0.5, keeps its restitution): powers of two from
+    // their binary exponents, so that a problem and any power-of-two multiple of it are
+    // integrated as the same problem, bit for bit.
+    let a = crate::math::exact_unit_factor(v.z.abs(), v.as_slice());
+    let b = crate::math::exact_unit_factor(w[(2, 2)], w.as_slice());
+    let first = if a == 1.0 && b == 1.0 {
+        integrate_scaled(problem, term, opts, observing, observe)?
+    } else {
+        integrate_in_units(problem, a, b, term, opts, observing, observe)?
+    };
+    match first {
+        Integrated::End(end) => Ok(end),
+        // (A slip that the impact turns, far above the normal velocity: once more in units
+        // where its square is representable.)
+        Integrated::HugeSlip(k) => {
+            match integrate_in_units(problem, a * k, b, term, opts, observing, observe)? {
+                Integrated::End(end) => Ok(end),
+                Integrated::HugeSlip(_) => Err(BreakdownReason::Overflow),
+            }
+        }
     }
-    let a = crate::math::unit_factor(v.z.abs(), v.as_slice());
-    let b = crate::math::unit_factor(w[(2, 2)], w.as_slice());
+}
+
+/// [`integrate_scaled`] on `problem` with velocities times `a` and `W` times `b` (powers of
+/// two: exact), the result scaled back.
+fn integrate_in_units(
+    problem: &ContactProblem3,
+    a: f64,
+    b: f64,
+    term: Termination,
+    opts: &SpatialOptions,
+    observing: bool,
+    observe: &mut dyn FnMut(f64, Vec3),
+) -> Result<Integrated, BreakdownReason> {
     // Built without the checks of `new`: in these units the approach energy of a grazing
     // impact need not be representable, and nothing here reads it.
     let scaled = problem.in_units(a, b);
-    let (kp, kv, kw) = (b / a, 1.0 / a, b / (a * a));
-    let mut end = integrate_scaled(&scaled, term, opts, observing, &mut |p, v| {
+    // (Each factor a power of two: exact, and (b/a)/a without overflow of a².)
+    let (kp, kv, kw) = (b / a, 1.0 / a, (b / a) / a);
+    let mut end = match integrate_scaled(&scaled, term, opts, observing, &mut |p, v| {
         observe(p * kp, v * kv)
-    })?;
+    })? {
+        Integrated::End(end) => end,
+        huge => return Ok(huge),
+    };
     end.impulse *= kp;
     end.velocity *= kv;
     end.compression_impulse = end.compression_impulse.map(|x| x * kp);
@@ -324,8 +397,19 @@ pub(crate) fn integrate_with(
     end.phases.scale_impulse(kp);
     end.slip_halt = end.slip_halt.map(|x| x * kp);
     end.second_compression = end.second_compression.map(|x| x * kp);
-    Ok(end)
+    Ok(Integrated::End(end))
 }
+
+/// What [`integrate_scaled`] did: the end of the path, or nothing — a slip too fast for
+/// these units, to be integrated with velocities times the factor given.
+enum Integrated {
+    End(PathEnd),
+    HugeSlip(f64),
+}
+
+/// The largest slip speed integrated in units where `v_n⁻` is near one: `2⁴⁵⁰` (its square
+/// and products of it stay far from overflow).
+const HUGE_SLIP: f64 = 2.907_354_897_182_427_6e135;
 
 fn integrate_scaled(
     problem: &ContactProblem3,
@@ -333,7 +417,7 @@ fn integrate_scaled(
     opts: &SpatialOptions,
     observing: bool,
     observe: &mut impl FnMut(f64, Vec3),
-) -> Result<PathEnd, BreakdownReason> {
+) -> Result<Integrated, BreakdownReason> {
     let wtt: Mat2 = problem.wtt();
     let wtn = problem.wtn();
     let wnn = problem.wnn();
@@ -347,15 +431,19 @@ fn integrate_scaled(
         pc: None,
         wc: 0.0,
         second: None,
+        recompressed: 0.0,
+        again: None,
     };
     let scales = {
-        let v = v0.norm();
-        let p = (1.0 + e) * (-v0.z) / wnn
-            + v0.xy().norm() / (mu * wtt.norm()).max(f64::MIN_POSITIVE).max(wnn);
+        let vn = -v0.z;
+        let p = (1.0 + e) * vn / wnn;
+        let vt = norm_of(v0.xy()) + (norm_of(wtn) + mu * wtt.norm()) * p;
         Scales {
-            v,
+            vt,
+            vn,
             p,
-            w: v * p,
+            wn: vn * p,
+            wt: vt * p,
             rtol: opts.effective_rtol(),
         }
     };
@@ -377,7 +465,7 @@ fn integrate_scaled(
         let vt = v0.xy() + wtn * pf;
         let vt0 = v0.xy();
         let through_zero = vt0.x * wtn.y - vt0.y * wtn.x == 0.0 && vt0.dot(&wtn) < 0.0;
-        let halt = vt0.norm() / wtn.norm();
+        let halt = norm_of(vt0) / norm_of(wtn);
         if through_zero && halt < pf {
             // The slip runs straight through zero and continues along w_tn.
             let a = vt0.y.atan2(vt0.x);
@@ -412,7 +500,7 @@ fn integrate_scaled(
         };
         observe(pf, Vec3::new(vt.x, vt.y, end.vn));
         let slip_halt = (through_zero && halt < pf).then_some(halt);
-        return Ok(finish(&end, &ev, phases, slip_halt, 0));
+        return Ok(Integrated::End(finish(&end, &ev, phases, slip_halt, 0)));
     }
     let mut steps = 0u32;
     let mut slip_halt = None;
@@ -420,8 +508,45 @@ fn integrate_scaled(
 
     // ---- Stage 1: initial slip ----
     if pt.vt.x != 0.0 || pt.vt.y != 0.0 {
+        if let Some(end) = rigid_slip(&wtt, wtn, wnn, mu, scales, &mut pt, &mut ev)? {
+            phases.push(
+                Phase3Kind::Slip {
+                    from: phi0,
+                    to: phi0,
+                },
+                pt.p,
+            );
+            observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
+            return Ok(Integrated::End(finish(&end, &ev, phases, None, 0)));
+        }
+        let sigma = norm_of(pt.vt);
+        if sigma > HUGE_SLIP {
+            // A slip that the impact does turn (it compresses the contact further while
+            // slipping, `w_nn − μ w_tn·ŝ ≤ 0`, or the law ends only after the slip has
+            // changed) and whose square would overflow in these units: to be integrated
+            // in units where it is below `2⁴⁵⁰`, the normal velocity smaller (its square
+            // still representable, and negligible beside the compression the slip drives).
+            let k = crate::math::exact_unit_factor(2.0 * sigma / HUGE_SLIP, &[sigma, v0.z]);
+            return Ok(Integrated::HugeSlip(k));
+        }
+        // The centrifugal invariant ray, if any: the direction of resumption (theory §2).
+        let centrifugal = resumption_direction(problem).map(|(dir, rate)| Centrifugal {
+            dir,
+            rate,
+            slope: problem.resumed_slope(rate),
+        });
         let stage = slip_stage(
-            &wtt, wtn, wnn, mu, scales, &mut pt, &mut ev, &mut steps, observing, observe,
+            &wtt,
+            wtn,
+            wnn,
+            mu,
+            centrifugal,
+            scales,
+            &mut pt,
+            &mut ev,
+            &mut steps,
+            observing,
+            observe,
         )?;
         match stage {
             SlipEnd::Terminated { phi } => {
@@ -432,7 +557,7 @@ fn integrate_scaled(
                     },
                     pt.p,
                 );
-                return Ok(finish(&pt, &ev, phases, None, steps));
+                return Ok(Integrated::End(finish(&pt, &ev, phases, None, steps)));
             }
             SlipEnd::Halted { phi } => {
                 phases.push(
@@ -448,11 +573,14 @@ fn integrate_scaled(
     }
 
     // ---- Stage 2: stick or resumed slip, linear in p_n ----
-    let lambda = sticking_ratio(problem);
+    // The ratio and the slope of stick from W = L D Lᵀ: the slope is the last pivot, accurate
+    // where w_nn + w_tn·λ would cancel (an ill-conditioned W).
+    let (lambda, stick_slope) = problem.stick();
     let piece = if lambda.norm() <= mu {
         Linear {
             kind: Phase3Kind::Stick,
             ratio: lambda,
+            slope: stick_slope,
             dir: Vec2::zeros(),
             sigma: 0.0,
             dsigma: 0.0,
@@ -465,6 +593,7 @@ fn integrate_scaled(
                 angle: s.y.atan2(s.x),
             },
             ratio: -mu * s,
+            slope: problem.resumed_slope(rate),
             dir: s,
             sigma: 0.0,
             dsigma: rate,
@@ -472,13 +601,74 @@ fn integrate_scaled(
         }
     };
     let kind = piece.kind;
-    match linear_piece(&piece, &mut pt, &mut ev, wnn, wtn, mu)? {
+    match linear_piece(&piece, &mut pt, &mut ev, mu)? {
         true => {
             observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
             phases.push(kind, pt.p);
-            Ok(finish(&pt, &ev, phases, slip_halt, steps))
+            Ok(Integrated::End(finish(&pt, &ev, phases, slip_halt, steps)))
         }
         false => Err(BreakdownReason::NoSeparation),
+    }
+}
+
+/// The centrifugal invariant ray: there is at most one, the solution `ŝ` of
+/// `(λ' I + μ W_tt) ŝ = w_tn` with `λ' > 0` ([`resumption_direction`]), along which the
+/// slip grows at the rate `λ'` and `v_n` changes at `slope` ([`ContactProblem3`]'s
+/// `resumed_slope`).
+#[derive(Clone, Copy)]
+struct Centrifugal {
+    dir: Vec2,
+    rate: f64,
+    slope: f64,
+}
+
+/// A slip settled on an invariant ray (see `slip_stage`).
+#[derive(Clone, Copy)]
+enum Settled {
+    /// Shrinking along `dir` at the rate `rate < 0`, to a halt.
+    Centripetal { dir: Vec2, rate: f64 },
+    /// Growing along the centrifugal ray.
+    Centrifugal(Centrifugal),
+}
+
+/// A slip so fast beside the normal velocity that the impact cannot turn it: `|dv_t/dp_n| =
+/// |g| ≤ G = |w_tn| + μ ‖W_tt‖`, so over the normal impulse `L = ε σ⁻/(4G)` the direction
+/// turns by less than `ε/4` and the speed changes at the constant rate `ŝ·g` — the path is
+/// straight to round-off. If the law ends within `L` on it (every event in closed form),
+/// that is the end: the integration is not needed (and its squares of `σ` could overflow).
+/// Tried only where `4 G` times the normal impulse scale is below `ε σ⁻`; `None` if the law
+/// does not end within `L` (then the integration takes over).
+fn rigid_slip(
+    wtt: &Mat2,
+    wtn: Vec2,
+    wnn: f64,
+    mu: f64,
+    sc: Scales,
+    pt: &mut Point,
+    ev: &mut Events,
+) -> Result<Option<Point>, BreakdownReason> {
+    let sigma = norm_of(pt.vt);
+    let g_max = norm_of(wtn) + mu * wtt.norm();
+    let rigid = 4.0 * g_max * sc.p <= f64::EPSILON * sigma;
+    if !rigid {
+        return Ok(None);
+    }
+    let dir = pt.vt / sigma;
+    let piece = Linear {
+        kind: Phase3Kind::Slip { from: 0.0, to: 0.0 },
+        ratio: -mu * dir,
+        slope: wnn - mu * wtn.dot(&dir),
+        dir,
+        sigma,
+        dsigma: dir.dot(&(wtn - mu * (wtt * dir))),
+        length: f64::EPSILON * sigma / (4.0 * g_max),
+    };
+    let (mut end, mut events) = (*pt, *ev);
+    if linear_piece(&piece, &mut end, &mut events, mu)? {
+        (*pt, *ev) = (end, events);
+        Ok(Some(end))
+    } else {
+        Ok(None)
     }
 }
 
@@ -487,6 +677,8 @@ fn integrate_scaled(
 struct Linear {
     kind: Phase3Kind,
     ratio: Vec2,
+    /// `dv_n/dp_n` on the piece, `w_nn + w_tn·ratio`.
+    slope: f64,
     dir: Vec2,
     sigma: f64,
     dsigma: f64,
@@ -500,11 +692,9 @@ fn linear_piece(
     piece: &Linear,
     pt: &mut Point,
     ev: &mut Events,
-    wnn: f64,
-    wtn: Vec2,
     mu: f64,
 ) -> Result<bool, BreakdownReason> {
-    let kn = wnn + wtn.dot(&piece.ratio);
+    let kn = piece.slope;
     let start = *pt;
     let at = |x: f64| -> Point {
         Point {
@@ -567,7 +757,7 @@ fn linear_piece(
                 None
             }
         }
-        Termination::Poisson => Some(((1.0 + ev.e) * pc - start.p).max(0.0)),
+        Termination::Poisson => poisson_end(ev, &start, kn, piece.length),
         Termination::Energetic => {
             if pc >= start.p && kn > 0.0 {
                 // Compression ends inside this piece: from p_c (v_n = 0) the restitution
@@ -588,6 +778,11 @@ fn linear_piece(
     match x_end {
         Some(x) if x <= piece.length => {
             *pt = at(x);
+            if ev.term == Termination::Newton && kn > 0.0 && start.vn <= ev.target {
+                // Newton's rule holds exactly at its end (not only to the round-off of the
+                // path's normal velocity, which after a long compression can exceed it).
+                pt.vn = ev.target;
+            }
             Ok(true)
         }
         _ if piece.length.is_finite() => {
@@ -596,6 +791,44 @@ fn linear_piece(
         }
         _ => Err(BreakdownReason::NoSeparation),
     }
+}
+
+/// Where Poisson's law ends on a straight piece from `start` (`v_n` of slope `kn`, of
+/// normal-impulse length `length`), after the end of the first compression: `None` if not
+/// in the piece. The restitution impulse (where `v_n ≥ 0`) must reach `e` times the
+/// compression impulse `C` (where `v_n < 0`, every phase); so a later compression inside the
+/// piece is followed to its end, which adds to `C`, and the law never ends while `v_n < 0`.
+fn poisson_end(ev: &mut Events, start: &Point, kn: f64, length: f64) -> Option<f64> {
+    let pc = ev.pc.expect("after the first compression");
+    let mut from = 0.0;
+    if ev.again.is_none() && start.vn < 0.0 && start.p > pc {
+        // (Already in a later compression phase: its start was not seen.)
+        ev.again = Some(start.p);
+    }
+    if let Some(began) = ev.again {
+        // In a later compression phase (v_n ≤ 0): it ends where v_n is back to zero.
+        if kn <= 0.0 {
+            return None;
+        }
+        from = (-start.vn / kn).max(0.0);
+        if from > length {
+            return None;
+        }
+        ev.recompressed += start.p + from - began;
+        ev.again = None;
+    }
+    let c = pc + ev.recompressed;
+    let x = ((1.0 + ev.e) * c - start.p).max(from);
+    if kn < 0.0 && start.vn >= 0.0 {
+        // v_n falls back to zero inside the piece before the end: a later compression,
+        // v_n < 0 for the rest of the piece.
+        let back = -start.vn / kn;
+        if back < x && back <= length {
+            ev.again = Some(start.p + back);
+            return None;
+        }
+    }
+    Some(x)
 }
 
 fn finish(pt: &Point, ev: &Events, phases: Phases3, slip_halt: Option<f64>, steps: u32) -> PathEnd {
@@ -609,7 +842,7 @@ fn finish(pt: &Point, ev: &Events, phases: Phases3, slip_halt: Option<f64>, step
         friction_work: pt.wt,
         phases,
         slip_halt: slip_halt.filter(|&s| s < pt.p),
-        second_compression: ev.second,
+        second_compression: ev.second.filter(|&s| s < pt.p),
         steps,
     }
 }
@@ -642,11 +875,12 @@ fn grow(en: f64) -> f64 {
 }
 
 /// The value of event `kind` (0 = compression end, 1 = termination, 2 = second
-/// compression) at `c`, increasing through zero at the event.
+/// compression, 3 = end of a later compression) at `c`, increasing through zero at the
+/// event.
 #[inline]
 fn event_value(ev: &Events, kind: u8, c: &Point) -> f64 {
     match kind {
-        0 => c.vn,
+        0 | 3 => c.vn,
         1 => ev.terminal(c),
         _ => -c.vn,
     }
@@ -670,6 +904,10 @@ fn locate_in_step<const N: usize>(
     ga: f64,
     gb: f64,
 ) -> (f64, [f64; N]) {
+    if ga >= 0.0 {
+        // (The end of a later compression that began at v_n = 0 exactly: at the start.)
+        return (x0, *y0);
+    }
     let dense = Dense::new(f, x0, y0, st, k1, h);
     let dense_g = |th: f64| event_value(ev, kind, &point(x0 + th * h, &dense.at(th)));
     let seed = dense_root(dense_g, ga, gb);
@@ -706,9 +944,19 @@ fn after_event(kind: u8, pt: &mut Point, ev: &mut Events, phi: f64) -> Option<Sl
             (ev.terminal(pt) >= 0.0).then_some(SlipEnd::Terminated { phi })
         }
         1 => Some(SlipEnd::Terminated { phi }),
-        _ => {
-            ev.second = Some(pt.p);
+        2 => {
+            ev.second.get_or_insert(pt.p);
+            if ev.counts_compression() {
+                ev.again = Some(pt.p);
+            }
             None
+        }
+        _ => {
+            // A later compression phase ended: its impulse adds to the compression.
+            if let Some(start) = ev.again.take() {
+                ev.recompressed += pt.p - start;
+            }
+            (ev.terminal(pt) >= 0.0).then_some(SlipEnd::Terminated { phi })
         }
     }
 }
@@ -720,7 +968,13 @@ enum SlipEnd {
 
 /// Check the events between two points (`a` before, `b` after a step); returns the first
 /// event's kind and a closure-free description: 0 = compression end, 1 = termination,
-/// 2 = second compression.
+/// 2 = second compression (`v_n` back to zero after `p_c`; for Poisson every such return),
+/// 3 = the end of a later compression phase (Poisson).
+///
+/// Where a later compression begins inside the step, Poisson's termination function is
+/// evaluated at `b` as if it had not (it stops growing there): the second compression is
+/// returned, and the caller relocates the termination if it lies before
+/// ([`poisson_ends_first`]).
 #[inline]
 fn first_event(ev: &Events, a: &Point, b: &Point) -> Option<(u8, f64, f64)> {
     if ev.pc.is_none() {
@@ -729,25 +983,28 @@ fn first_event(ev: &Events, a: &Point, b: &Point) -> Option<(u8, f64, f64)> {
         }
         return None;
     }
+    if ev.again.is_some() {
+        // In a later compression phase: its end (from a located start at v_n = 0 exactly,
+        // an end inside the step is at its start).
+        let ends = (a.vn < 0.0 && b.vn >= 0.0) || (a.vn == 0.0 && b.vn > 0.0);
+        return ends.then_some((3, a.vn, b.vn));
+    }
     let (ga, gb) = (ev.terminal(a), ev.terminal(b));
     let term = ga < 0.0 && gb >= 0.0;
-    let second = ev.second.is_none() && a.vn > 0.0 && b.vn <= 0.0;
+    let second = (ev.second.is_none() || ev.counts_compression()) && a.vn > 0.0 && b.vn <= 0.0;
     match (term, second) {
+        (true, true) if ev.counts_compression() => Some((2, -a.vn, -b.vn)),
         (true, _) => Some((1, ga, gb)),
         (false, true) => Some((2, -a.vn, -b.vn)),
         _ => None,
     }
 }
 
-/// `|v|` without overflow or underflow of the squares (`hypot` only where they would).
+/// Whether Poisson's termination lies before a later compression located at `c` (kind 2)
+/// in the same step: its function, still growing with `p_n`, is already `≥ 0` there.
 #[inline]
-fn norm_of(v: Vec2) -> f64 {
-    let n = v.norm();
-    if n.is_finite() && n > 1e-150 {
-        n
-    } else {
-        v.x.hypot(v.y)
-    }
+fn poisson_ends_first(ev: &Events, kind: u8, c: &Point) -> bool {
+    kind == 2 && ev.counts_compression() && ev.terminal(c) >= 0.0
 }
 
 /// The angle `φ` wrapped to `(−π, π]`.
@@ -785,7 +1042,7 @@ impl TailSeries {
 
     fn get(&mut self, field: &Field, wnn: f64, g: Vec2, vt: Vec2) -> Option<&RaySeries> {
         if !self.built {
-            let sigma = vt.norm();
+            let sigma = norm_of(vt);
             let (f, q) = (vt.x * g.y - vt.y * g.x, vt.dot(&g));
             if f.abs() > 0.15 * q.abs() {
                 return None;
@@ -822,7 +1079,7 @@ fn series_tail(
     ev: &mut Events,
     observe: &mut impl FnMut(f64, Vec3),
 ) -> Option<SlipEnd> {
-    let sigma0 = pt.vt.norm();
+    let sigma0 = norm_of(pt.vt);
     if !(sigma0 > 0.0 && sigma0.is_finite()) {
         return None;
     }
@@ -886,10 +1143,11 @@ fn series_tail(
         return None;
     }
     let halt_phi = ser.dir.y.atan2(ser.dir.x);
-    // At most three events lie ahead (compression end and a second compression once each,
-    // then the termination, which ends the loop).
+    // A few events lie ahead (v_n is monotone on the rest: the compression end or a
+    // return to compression, the end of a later compression, then the termination, which
+    // ends the loop).
     loop {
-        let Some((kind, ga, gb)) = first_event(ev, pt, &end) else {
+        let Some((mut kind, ga, gb)) = first_event(ev, pt, &end) else {
             *pt = end;
             observe(pt.p, Vec3::new(0.0, 0.0, pt.vn));
             return Some(SlipEnd::Halted { phi: halt_phi });
@@ -899,7 +1157,7 @@ fn series_tail(
         let s_from = if from.vt == base.vt {
             0.0
         } else {
-            (from.vt.norm() / sigma0).ln()
+            (norm_of(from.vt) / sigma0).ln()
         };
         let s_of = |th: f64| {
             if th >= 1.0 {
@@ -908,13 +1166,24 @@ fn series_tail(
                 s_from + (-th).ln_1p()
             }
         };
-        let th = illinois(
-            |th| event_value(ev, kind, &light(s_of(th))),
-            0.0,
-            ga,
-            1.0,
-            gb,
-        );
+        let find = |kind: u8, ga: f64, gb: f64| {
+            if ga >= 0.0 {
+                // (A later compression that began at v_n = 0 exactly ends at once.)
+                return 0.0;
+            }
+            illinois(
+                |th| event_value(ev, kind, &light(s_of(th))),
+                0.0,
+                ga,
+                1.0,
+                gb,
+            )
+        };
+        let mut th = find(kind, ga, gb);
+        if poisson_ends_first(ev, kind, &light(s_of(th))) {
+            kind = 1;
+            th = find(kind, ev.terminal(pt), ev.terminal(&end));
+        }
         *pt = if th >= 1.0 { end } else { at(s_of(th)) };
         observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
         let phi = if th >= 1.0 {
@@ -944,7 +1213,7 @@ fn turns_before_event(
     wtn: Vec2,
     mu: f64,
 ) -> bool {
-    let sigma = pt.vt.norm();
+    let sigma = norm_of(pt.vt);
     let s = pt.vt / sigma;
     let kn = wnn - mu * wtn.dot(&s);
     if kn.is_nan() || kn <= 0.0 {
@@ -1001,8 +1270,13 @@ fn advance<const N: usize>(
     }
     let b = point(*x + h, &y1);
     let k1 = f(*x + h, &y1);
-    if let Some((kind, ga, gb)) = first_event(ev, pt, &b) {
-        let (xe, ye) = locate_in_step(f, point, ev, kind, *x, y, k, h, &st, &k1, ga, gb);
+    if let Some((mut kind, ga, gb)) = first_event(ev, pt, &b) {
+        let (mut xe, mut ye) = locate_in_step(f, point, ev, kind, *x, y, k, h, &st, &k1, ga, gb);
+        if poisson_ends_first(ev, kind, &point(xe, &ye)) {
+            kind = 1;
+            let (ga, gb) = (ev.terminal(pt), ev.terminal(&b));
+            (xe, ye) = locate_in_step(f, point, ev, kind, *x, y, k, h, &st, &k1, ga, gb);
+        }
         *x = xe;
         *y = ye;
         *pt = point(xe, &ye);
@@ -1030,6 +1304,7 @@ fn slip_stage(
     wtn: Vec2,
     wnn: f64,
     mu: f64,
+    centrifugal: Option<Centrifugal>,
     sc: Scales,
     pt: &mut Point,
     ev: &mut Events,
@@ -1040,7 +1315,7 @@ fn slip_stage(
     // State in p-mode: [vt1, vt2, vn, pt1, pt2, wn, wt].
     let fp = |_p: f64, y: &[f64; 7]| -> [f64; 7] {
         let vt = Vec2::new(y[0], y[1]);
-        let sigma = vt.norm();
+        let sigma = norm_of(vt);
         let s = vt / sigma;
         let g = wtn - mu * (wtt * s);
         [
@@ -1057,7 +1332,7 @@ fn slip_stage(
     // smooth everywhere but at v_t = 0 itself (σ = |v_t|), which is reached only as τ → ∞.
     let ft = |_t: f64, z: &[f64; 8]| -> [f64; 8] {
         let (v1, v2) = (z[0], z[1]);
-        let sigma = (v1 * v1 + v2 * v2).sqrt();
+        let sigma = norm_of(Vec2::new(v1, v2));
         let wv1 = wtt[(0, 0)] * v1 + wtt[(0, 1)] * v2;
         let wv2 = wtt[(1, 0)] * v1 + wtt[(1, 1)] * v2;
         [
@@ -1127,41 +1402,41 @@ fn slip_stage(
     let atol_u = [
         sc.rtol,
         sc.rtol,
-        sc.rtol * sc.v,
+        sc.rtol * sc.vt,
         sc.rtol * sc.p,
-        sc.rtol * sc.v,
+        sc.rtol * sc.vn,
         sc.rtol * sc.p,
         sc.rtol * sc.p,
-        sc.rtol * sc.w,
-        sc.rtol * sc.w,
+        sc.rtol * sc.wn,
+        sc.rtol * sc.wt,
     ];
     let atol_t = [
-        sc.rtol * sc.v,
-        sc.rtol * sc.v,
-        sc.rtol * sc.v,
+        sc.rtol * sc.vt,
+        sc.rtol * sc.vt,
+        sc.rtol * sc.vn,
         sc.rtol * sc.p,
         sc.rtol * sc.p,
-        sc.rtol * sc.w,
-        sc.rtol * sc.w,
+        sc.rtol * sc.wn,
+        sc.rtol * sc.wt,
         sc.rtol * sc.p,
     ];
     let atol_p = [
-        sc.rtol * sc.v,
-        sc.rtol * sc.v,
-        sc.rtol * sc.v,
+        sc.rtol * sc.vt,
+        sc.rtol * sc.vt,
+        sc.rtol * sc.vn,
         sc.rtol * sc.p,
         sc.rtol * sc.p,
-        sc.rtol * sc.w,
-        sc.rtol * sc.w,
+        sc.rtol * sc.wn,
+        sc.rtol * sc.wt,
     ];
-    let sigma0 = pt.vt.norm();
+    let sigma0 = norm_of(pt.vt);
     let vn_start = pt.vn;
     let field = Field::new(wtt, wtn, mu);
     // The rest of the slip is a straight run into the origin when the direction is (to the
     // last bit of the result) on an invariant ray: the remaining impulse σ/|ŝ·g| times the
     // angular offset from the ray is below 1e-16 of the impulse scale. Returns (ŝ, ŝ·g).
     let straight_tail = |vt: Vec2| -> Option<(Vec2, f64)> {
-        let sigma = vt.norm();
+        let sigma = norm_of(vt);
         let s = vt / sigma;
         let g = wtn - mu * (wtt * s);
         let q = s.dot(&g);
@@ -1180,18 +1455,19 @@ fn slip_stage(
     // Run the straight tail in closed form to the halt (or to an event inside it).
     let run_tail =
         |pt: &mut Point, ev: &mut Events, s: Vec2, q: f64| -> Result<SlipEnd, BreakdownReason> {
-            let sigma = pt.vt.norm();
+            let sigma = norm_of(pt.vt);
             // From the unnormalised slip: bit-identical to φ0 when the tail starts at v⁻.
             let phi = pt.vt.y.atan2(pt.vt.x);
             let piece = Linear {
                 kind: Phase3Kind::Stick,
                 ratio: -mu * s,
+                slope: wnn - mu * wtn.dot(&s),
                 dir: s,
                 sigma,
                 dsigma: q,
                 length: sigma / -q,
             };
-            if linear_piece(&piece, pt, ev, wnn, wtn, mu)? {
+            if linear_piece(&piece, pt, ev, mu)? {
                 Ok(SlipEnd::Terminated { phi })
             } else {
                 pt.vt = Vec2::zeros();
@@ -1207,6 +1483,65 @@ fn slip_stage(
                 Ok(SlipEnd::Halted { phi: ray })
             }
         };
+    // A slip that has settled on an invariant ray that attracts the direction (`f' < 0`
+    // there: an offset δ obeys `dδ/dp_n = f' δ/σ`) runs straight along it, its speed
+    // changing at the ray's rate `q = ŝ·g`. Where `|q|` is small beside `|f'|` (a nearly
+    // neutral ray, near the stick limit of an ill-conditioned W) the steps in p_n, τ or the
+    // angle variable are held to the decay length `σ/|f'|` of the offset while the impulse
+    // to the next event or the halt is of order `σ/|q|`: millions of steps. There, once the
+    // offset is at the integration's own noise (`σ δ` within 4 rtol of the velocity scale,
+    // what the error control leaves in v_t), the rest is the straight run along the ray in
+    // closed form: the offset changes the result as little as one more step would. The ray
+    // is the root of `f` next to the direction (Newton's method); a centrifugal one is the
+    // direction of resumption, with its rate and slope from `centrifugal`.
+    let settled_on_ray = |vt: Vec2| -> Option<Settled> {
+        let sigma = norm_of(vt);
+        let s = vt / sigma;
+        // f' at the direction: df/dφ = s' × g − μ s × W_tt s', s' = (−s_y, s_x).
+        let g = wtn - mu * (wtt * s);
+        let sp = Vec2::new(-s.y, s.x);
+        let h = wtt * sp;
+        let df = sp.x * g.y - sp.y * g.x - mu * (s.x * h.y - s.y * h.x);
+        // (Each test fails on a NaN.)
+        let q = s.dot(&g);
+        (df < 0.0 && q.abs() <= 1e-3 * -df).then_some(())?;
+        let dir = polish_ray(wtt, wtn, mu, s)?;
+        let offset = (s.x * dir.y - s.y * dir.x).abs();
+        (offset * sigma <= 4.0 * sc.rtol * sc.vt).then_some(())?;
+        let q = dir.dot(&(wtn - mu * (wtt * dir)));
+        if q < 0.0 {
+            return Some(Settled::Centripetal { dir, rate: q });
+        }
+        let c = centrifugal?;
+        (c.dir.dot(&dir) > 1.0 - 1e-9).then_some(Settled::Centrifugal(c))
+    };
+    // Run the slip along the centrifugal ray in closed form to the termination.
+    let run_centrifugal =
+        |pt: &mut Point, ev: &mut Events, c: Centrifugal| -> Result<SlipEnd, BreakdownReason> {
+            let piece = Linear {
+                kind: Phase3Kind::Stick,
+                ratio: -mu * c.dir,
+                slope: c.slope,
+                dir: c.dir,
+                sigma: norm_of(pt.vt),
+                dsigma: c.rate,
+                length: f64::INFINITY,
+            };
+            if linear_piece(&piece, pt, ev, mu)? {
+                Ok(SlipEnd::Terminated {
+                    phi: c.dir.y.atan2(c.dir.x),
+                })
+            } else {
+                Err(BreakdownReason::NoSeparation)
+            }
+        };
+    let run_settled =
+        |pt: &mut Point, ev: &mut Events, s: Settled| -> Result<SlipEnd, BreakdownReason> {
+            match s {
+                Settled::Centripetal { dir, rate } => run_tail(pt, ev, dir, rate),
+                Settled::Centrifugal(c) => run_centrifugal(pt, ev, c),
+            }
+        };
     let max_steps = 200_000u32;
     // The angle variable is tried first, and again a few steps after a start on a ray.
     let mut angle_retry = Some(0u32);
@@ -1216,7 +1551,7 @@ fn slip_stage(
     let mut ht = 0.0f64;
     // The rate of change of the slip, `ŝ·g` and `|g|`, for the switches between modes.
     let rates = |vt: Vec2| -> (f64, f64) {
-        let s = vt / vt.norm();
+        let s = vt / norm_of(vt);
         let g = wtn - mu * (wtt * s);
         (s.dot(&g), norm_of(g))
     };
@@ -1229,6 +1564,11 @@ fn slip_stage(
                 while *steps < max_steps {
                     if let Some((s, q)) = straight_tail(pt.vt) {
                         let end = run_tail(pt, ev, s, q)?;
+                        observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
+                        return Ok(end);
+                    }
+                    if let Some(c) = settled_on_ray(pt.vt) {
+                        let end = run_settled(pt, ev, c)?;
                         observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
                         return Ok(end);
                     }
@@ -1263,14 +1603,16 @@ fn slip_stage(
                             }
                         }
                     }
-                    let sigma = pt.vt.norm();
+                    let sigma = norm_of(pt.vt);
                     let (q, gn) = rates(pt.vt);
                     // Go logarithmic as soon as the slip shrinks steadily (hysteresis: enter
                     // only where the shrink rate is nearly |g|): steps in p_n would have to
                     // shrink with σ. Once the slip is small otherwise, go to the
                     // pseudo-time τ, in which a swing of the direction near the origin
-                    // takes steps independent of σ.
-                    if q < -0.9 * gn {
+                    // takes steps independent of σ. (Only where the slip shrinks
+                    // appreciably before the next event: a slip far above the normal
+                    // velocity changes ln σ by less than its round-off over the impact.)
+                    if q < -0.9 * gn && turns_before_event(pt, ev, vn_start, &field, wnn, wtn, mu) {
                         mode = Mode::U;
                         hu = -(h * -q / sigma).min(0.25);
                         break;
@@ -1306,10 +1648,10 @@ fn slip_stage(
             }
             // ---------------- u-mode (u = ln σ, decreasing) ----------------
             Mode::U => {
-                let u_start = pt.vt.norm().ln();
+                let u_start = norm_of(pt.vt).ln();
                 let u_end = u_start - LOG_SPAN;
                 let mut u = u_start;
-                let sigma = pt.vt.norm();
+                let sigma = norm_of(pt.vt);
                 let mut z = [
                     pt.vt.x / sigma,
                     pt.vt.y / sigma,
@@ -1395,7 +1737,7 @@ fn slip_stage(
                 // Stability: the Lipschitz constant of the τ system in v_t is at most
                 // |w_tn| + μ |W_tt|, and DOP853 is stable on the real axis to about −6.
                 let h_stable = 3.0 / (wtn.norm() + mu * wtt.norm()).max(f64::MIN_POSITIVE);
-                let sigma_end = pt.vt.norm() * (-LOG_SPAN).exp();
+                let sigma_end = norm_of(pt.vt) * (-LOG_SPAN).exp();
                 while *steps < max_steps {
                     ht = ht.min(h_stable);
                     let adv = advance(
@@ -1419,8 +1761,13 @@ fn slip_stage(
                         observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
                         return Ok(end);
                     }
+                    if let Some(c) = settled_on_ray(pt.vt) {
+                        let end = run_settled(pt, ev, c)?;
+                        observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
+                        return Ok(end);
+                    }
                     ht *= grow(en);
-                    let sigma = pt.vt.norm();
+                    let sigma = norm_of(pt.vt);
                     let (q, gn) = rates(pt.vt);
                     if sigma <= sigma_end && q < 0.0 {
                         // σ has shrunk by e^-40: the rest is a straight run at the last bit
@@ -1429,7 +1776,7 @@ fn slip_stage(
                         observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
                         return Ok(end);
                     }
-                    if q < -0.9 * gn {
+                    if q < -0.9 * gn && turns_before_event(pt, ev, vn_start, &field, wnn, wtn, mu) {
                         mode = Mode::U;
                         hu = -(q.abs() * ht).min(0.25);
                         break;

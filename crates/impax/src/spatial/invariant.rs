@@ -212,16 +212,12 @@ pub fn invariant_rays(problem: &ContactProblem3) -> InvariantRays {
 }
 
 /// The stick test (theory §2): the friction ratio that keeps `v_t = 0` is
-/// `λ = −W_tt⁻¹ w_tn`; stick holds iff `|λ| ≤ μ`. Returns `λ`.
+/// `λ = −W_tt⁻¹ w_tn`; stick holds iff `|λ| ≤ μ`. Returns `λ`, from the factorisation
+/// `W = L D Lᵀ` (order `t1, t2, n`): `λ = −(l31 − l21 l32, l32)` (backward stable, where the
+/// explicit inverse of an ill-conditioned `W_tt` is not).
 #[inline]
 pub fn sticking_ratio(problem: &ContactProblem3) -> Vec2 {
-    let wtt = problem.wtt();
-    let w = problem.wtn();
-    let det = wtt[(0, 0)] * wtt[(1, 1)] - wtt[(0, 1)] * wtt[(1, 0)];
-    -Vec2::new(
-        (wtt[(1, 1)] * w.x - wtt[(0, 1)] * w.y) / det,
-        (-wtt[(1, 0)] * w.x + wtt[(0, 0)] * w.y) / det,
-    )
+    problem.stick().0
 }
 
 /// The direction `ŝ` along which slip resumes when stick cannot hold (`|W_tt⁻¹ w_tn| > μ`),
@@ -272,5 +268,48 @@ pub fn resumption_direction(problem: &ContactProblem3) -> Option<(Vec2, f64)> {
     let m = Mat2::identity() * l + mu * wtt;
     let s = m.try_inverse()? * w;
     let s = s / s.norm();
-    Some((s, l))
+    // The solve loses κ(λ' I + μ W_tt) ε in the direction, much where λ' is small beside
+    // μ W_tt (near the stick limit of an ill-conditioned W); the ray is a root of
+    // f(φ) = ŝ × g(ŝ), which Newton's method on f (evaluated to round-off of its
+    // coefficients) polishes to the last bits.
+    Some((polish_ray(&wtt, w, mu, s).unwrap_or(s), l))
+}
+
+/// The root of `f(ŝ) = ŝ × (w_tn − μ W_tt ŝ)` next to the direction `s` (an accurate start),
+/// by at most three Newton steps in the angle, each a rotation of the unit vector (`f` and
+/// `df/dφ` from its components: an `s` with `f(s) = 0`, e.g. `(±1, 0)` of a planar problem,
+/// stays exactly as it is). `None` if the steps turn by more than 1e-6 rad (`s` is not next
+/// to a ray); `s` itself if they do not reduce `|f|` (it is on the ray to round-off).
+pub(crate) fn polish_ray(wtt: &Mat2, w: Vec2, mu: f64, s: Vec2) -> Option<Vec2> {
+    // f(s) = s × g(s) and df/dφ = s' × g(s) − μ s × W_tt s', s' = (−s_y, s_x).
+    let f_df = |s: Vec2| {
+        let g = slip_rate(wtt, w, mu, s);
+        let sp = Vec2::new(-s.y, s.x);
+        let h = wtt * sp;
+        (
+            s.x * g.y - s.y * g.x,
+            sp.x * g.y - sp.y * g.x - mu * (s.x * h.y - s.y * h.x),
+        )
+    };
+    let (f0, _) = f_df(s);
+    let mut x = s;
+    let mut turned = 0.0f64;
+    for _ in 0..3 {
+        let (f, df) = f_df(x);
+        if f == 0.0 || df == 0.0 {
+            break;
+        }
+        let d = -f / df;
+        turned += d;
+        let (sd, cd) = d.sin_cos();
+        x = Vec2::new(x.x * cd - x.y * sd, x.y * cd + x.x * sd);
+        x /= x.norm();
+    }
+    if turned.is_nan() || turned.abs() > 1e-6 {
+        None
+    } else if f_df(x).0.abs() < f0.abs() {
+        Some(x)
+    } else {
+        Some(s)
+    }
 }

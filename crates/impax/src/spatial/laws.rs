@@ -6,7 +6,7 @@ use super::darboux_keller::{integrate_with, PathEnd, SpatialOptions, Termination
 use super::outcome::{Detail3, Outcome3, Phase3Kind, Phases3, Resolution3};
 use super::ContactProblem3;
 use crate::law::LawId;
-use crate::math::{Vec2, Vec3};
+use crate::math::{norm_of, Vec2, Vec3};
 use crate::planar::laws::ENERGY_GAIN_ROUND_OFF;
 use crate::planar::{Breakdown, BreakdownReason, Inconsistency, Verdict, WorkSplit};
 
@@ -72,18 +72,18 @@ pub(crate) fn straight(
     let w = problem.w();
     let v = problem.velocity();
     let slope = w * Vec3::new(k.x, k.y, 1.0);
-    let normal_work = pf * (v.z + 0.5 * slope.z * pf);
-    // Every straight law ends by Newton's rule, v_n(p_f) = −e v_n⁻ ≥ 0: compression has
-    // ended by p_f (at p_f when e = 0, whatever the round-off of p_f).
-    let (pc, wc) = if slope.z > 0.0 {
-        let pc = if problem.restitution() == 0.0 {
-            pf
-        } else {
-            (-v.z / slope.z).min(pf)
-        };
-        (Some(pc), pc * (v.z + 0.5 * slope.z * pc))
+    // Every straight law ends by Newton's rule, v_n(p_f) = −e v_n⁻ ≥ 0, and v_n is linear in
+    // p_n: its slope is (1+e)|v_n⁻|/p_f, compression ends at p_c = p_f/(1+e) (at p_f when
+    // e = 0), and the normal works are W_c = ½ v_n⁻ p_c and W_n = ½ (1 − e) v_n⁻ p_f — no
+    // use of the slope w_nn + w_tn·k, a small difference of large terms for a grazing
+    // impact on a strongly coupled W (6 % off in the example of
+    // `tests/regression_spatial_lcp_grazing.rs`).
+    let e = problem.restitution();
+    let (pc, wc, normal_work) = if pf > 0.0 {
+        let pc = pf / (1.0 + e);
+        (Some(pc), 0.5 * v.z * pc, 0.5 * (1.0 - e) * v.z * pf)
     } else {
-        (None, normal_work)
+        (None, 0.0, 0.0)
     };
     let friction_work = pf * (k.x * (v.x + 0.5 * slope.x * pf) + k.y * (v.y + 0.5 * slope.y * pf));
     let mut phases = Phases3::new();
@@ -122,7 +122,7 @@ fn newton_pn(problem: &ContactProblem3, law: LawId, k: Vec2) -> Result<f64, Brea
 pub fn whittaker(problem: &ContactProblem3) -> Resolution3 {
     let law = LawId::Whittaker;
     let vt = problem.velocity().xy();
-    let sigma = vt.norm();
+    let sigma = norm_of(vt);
     let (s0, kind) = if sigma > 0.0 {
         let s = vt / sigma;
         let a = s.y.atan2(s.x);
@@ -158,7 +158,7 @@ pub fn brach(problem: &ContactProblem3) -> Resolution3 {
     let pt = star.xy();
     let sticking = star.z > 0.0;
     let ratio = if sticking {
-        pt.norm() / star.z
+        norm_of(pt) / star.z
     } else {
         f64::INFINITY
     };
@@ -177,15 +177,15 @@ pub fn brach(problem: &ContactProblem3) -> Resolution3 {
             None,
         ));
     }
-    let dir = if pt.norm() > 0.0 {
-        pt / pt.norm()
+    let dir = if norm_of(pt) > 0.0 {
+        pt / norm_of(pt)
     } else {
         Vec2::zeros()
     };
     let k = mu * dir;
     let pf = newton_pn(problem, law, k)?;
     let a = (-dir.y).atan2(-dir.x);
-    let kind = if mu > 0.0 && pt.norm() > 0.0 {
+    let kind = if mu > 0.0 && norm_of(pt) > 0.0 {
         Phase3Kind::Slip { from: a, to: a }
     } else if v.x != 0.0 || v.y != 0.0 {
         // Frictionless: label by the initial slip, as the planar law does.
@@ -253,7 +253,25 @@ fn darboux_keller(
         second_compression: end.second_compression,
         steps: end.steps,
     };
-    Ok(assemble(problem, law, &end, detail, None))
+    Ok(assemble(
+        problem,
+        law,
+        &end,
+        detail,
+        still_approaching(problem, &end),
+    ))
+}
+
+/// [`Inconsistency::StillApproaching`] if the impact ends with `v_n⁺` below zero by more
+/// than the round-off of `v_n⁻ + (W p)_n`, `16 ε (|v_n⁻| + (|W| |p|)_n)`.
+pub(crate) fn still_approaching(problem: &ContactProblem3, end: &PathEnd) -> Option<Inconsistency> {
+    let vn = end.velocity.z;
+    let round_off = 16.0
+        * f64::EPSILON
+        * (problem.velocity().z.abs() + (problem.w().abs() * end.impulse.abs()).z);
+    (vn < -round_off).then_some(Inconsistency::StillApproaching {
+        normal_velocity: vn,
+    })
 }
 
 /// Resolve a spatial problem with a law (`two-phase`, `smith` and `smith-centre` are planar
@@ -264,7 +282,38 @@ pub fn resolve(law: LawId, problem: &ContactProblem3) -> Resolution3 {
 
 /// [`resolve`] with the options `opts` of the Darboux–Keller integration (the other laws
 /// ignore them).
+///
+/// Every law is resolved in the problem's canonical units (`|v_n⁻|` and `w_nn` in `[1, 2)`,
+/// powers of two: exact) and the result scaled back: invariant under scaling of the
+/// velocities and of `W` (bit for bit for powers of two) wherever its numbers are
+/// representable.
 pub fn resolve_with(law: LawId, problem: &ContactProblem3, opts: &SpatialOptions) -> Resolution3 {
+    // (The Darboux–Keller integration chooses its own units, the same way, and scales its
+    // path back to the problem's: its works need not be representable in the units of a
+    // grazing impact's normal velocity.)
+    let canonical = if law.is_darboux_keller() {
+        None
+    } else {
+        problem.canonical_units()
+    };
+    let out = match canonical {
+        None => resolve_in_units(law, problem, opts),
+        Some((scaled, u)) => resolve_in_units(law, &scaled, opts)
+            .map(|o| o.in_problem_units(u))
+            .map_err(|b| b.in_problem_units(u)),
+    }?;
+    if out.is_finite() {
+        Ok(out)
+    } else {
+        Err(Breakdown {
+            law,
+            reason: BreakdownReason::Overflow,
+        })
+    }
+}
+
+/// [`resolve_with`] in the units of `problem` as given.
+fn resolve_in_units(law: LawId, problem: &ContactProblem3, opts: &SpatialOptions) -> Resolution3 {
     let out = match law {
         LawId::Whittaker => whittaker(problem),
         LawId::Brach => brach(problem),

@@ -21,7 +21,12 @@
 //! F(θ) = D(θ) ŝ × u + N ŝ × (w − μ A ŝ)        (= D ŝ × v_t⁺)
 //! ```
 //!
-//! with `D(θ) > 0` and `σ = ŝ·v_t⁺ > 0`. `F` is a trigonometric polynomial of degree 2
+//! with `D(θ) > 0` and `σ = ŝ·v_t⁺ > 0`. At a root `p_n` is also `−(ŝ × u)/(ŝ × g)`
+//! (`g = w − μ A ŝ`; `v_t⁺` has no component across `ŝ`); the expression with the smaller
+//! estimated round-off is used — for a grazing impact on a strongly coupled `W`, `D` is a
+//! small difference of large terms and `N/D` can be off by percents. The solution is
+//! reported with `v_n⁺ = −e v_n⁻` and `v_t⁺ = σ ŝ` exactly (`v⁻ + W p` meets them to the
+//! round-off of its terms). `F` is a trigonometric polynomial of degree 2
 //! (`ŝ × Aŝ = A_12 cos 2θ + ½ (A_22 − A_11) sin 2θ`), so it has at most four roots on the
 //! circle. They are found to the last bit: `F` (in the coefficient form below) is sampled at
 //! 256 angles, each sign change is refined by safeguarded Newton steps inside the bracket,
@@ -41,7 +46,7 @@ use super::laws::{assemble, straight};
 use super::outcome::{Detail3, Phase3Kind, Resolution3};
 use super::ContactProblem3;
 use crate::law::LawId;
-use crate::math::{cross2, Vec2, Vec3};
+use crate::math::{cross2, norm3_of, norm_of, Vec2, Vec3};
 use crate::planar::{Breakdown, BreakdownReason, Inconsistency};
 use std::f64::consts::TAU;
 
@@ -52,7 +57,9 @@ pub struct LcpSolution3 {
     pub kind: Phase3Kind,
     /// Impulse on body A, `(p_t1, p_t2, p_n)`.
     pub impulse: Vec3,
-    /// Contact velocity after, `v⁻ + W p` (tangential part exactly zero for stick).
+    /// Contact velocity after: `v⁻ + W p` to the round-off of its terms, reported as the
+    /// conditions give it — `v_n⁺ = −e v_n⁻`, and `v_t⁺ = 0` (stick) or `σ ŝ` along the
+    /// slip direction `ŝ` with `σ = ŝ·(v⁻ + W p)_t > 0` (slip).
     pub velocity_after: Vec3,
     /// `ΔT = ½ (v⁻ + v⁺)·p`.
     pub energy_change: f64,
@@ -228,22 +235,60 @@ fn slip_angles(trig: &Trig2) -> Vec<f64> {
     roots
 }
 
-/// The slip candidate at `θ` (direction `ŝ = (cos θ, sin θ)`), if `D(θ) = w_nn − μ w_tn·ŝ > 0`
-/// and `σ = ŝ·v_t⁺ > 0`: `p = p_n (−μ ŝ, 1)`, `p_n = N / D`.
+/// The slip candidate at a root `θ` of `F` (direction `ŝ = (cos θ, sin θ)`), if its normal
+/// impulse is positive (at a root, `p_n > 0` iff `D(θ) = w_nn − μ w_tn·ŝ > 0`) and
+/// `σ = ŝ·v_t⁺ > 0`: `p = p_n (−μ ŝ, 1)`.
+///
+/// At a root the normal impulse has two expressions: `p_n = N / D` from the normal row and
+/// `p_n = −(ŝ × u)/(ŝ × g)` (`g = w − μ A ŝ`) from the tangential row across `ŝ` (the slip
+/// velocity has no component across its own direction). Each is a quotient of sums whose
+/// round-off, and whose change over the round-off of `θ` itself, can be large beside the
+/// value: `D` is a small difference of large terms for a grazing impact on a strongly
+/// coupled `W` (`D = 5e-9` beside `w_nn = 2e5`, where `N/D` was 6 % off and the true
+/// solution was rejected with `σ < 0`), and `ŝ × u = ŝ × g = 0` for a slip along `u` on
+/// an invariant ray. The one of smaller estimated relative error is used.
 fn slip_candidate(problem: &ContactProblem3, n: f64, theta: f64) -> Option<LcpSolution3> {
     let (sn, cs) = theta.sin_cos();
     let s = Vec2::new(cs, sn);
+    let sp = Vec2::new(-sn, cs);
     let mu = problem.friction();
-    let d = problem.wnn() - mu * problem.wtn().dot(&s);
-    if d <= 0.0 {
+    let (c, w, a) = (problem.wnn(), problem.wtn(), problem.wtt());
+    let u = problem.velocity().xy();
+    let eps = f64::EPSILON;
+    // The round-off of θ (in [0, 2π]).
+    let dtheta = 4.0 * eps * theta.abs().max(1.0);
+    // Normal row: D and dD/dθ = −μ w·ŝ'.
+    let d = c - mu * w.dot(&s);
+    let d_err = eps * (c.abs() + mu * (w.x * s.x).abs() + mu * (w.y * s.y).abs())
+        + mu * w.dot(&sp).abs() * dtheta;
+    // Tangential row across ŝ: ŝ × u and f = ŝ × g, with d/dθ (ŝ × u) = ŝ' × u and
+    // df/dθ = ŝ' × g − μ ŝ × A ŝ'.
+    let as_ = a * s;
+    let g = w - mu * as_;
+    let cu = cross2(s, u);
+    let f = cross2(s, g);
+    let df = cross2(sp, g) - mu * cross2(s, a * sp);
+    let cu_err = eps * (u.x.abs() + u.y.abs()) + cross2(sp, u).abs() * dtheta;
+    let f_err =
+        eps * (w.x.abs() + w.y.abs() + mu * (as_.x.abs() + as_.y.abs())) + df.abs() * dtheta;
+    let rel_normal = d_err / d.abs();
+    let rel_across = cu_err / cu.abs() + f_err / f.abs();
+    let pn = if rel_across < rel_normal {
+        -cu / f
+    } else {
+        n / d
+    };
+    if pn.is_nan() || pn <= 0.0 || pn.is_infinite() {
         return None;
     }
-    let pn = n / d;
     let impulse = Vec3::new(-mu * pn * s.x, -mu * pn * s.y, pn);
-    let velocity_after = problem.velocity_after(impulse);
-    if velocity_after.xy().dot(&s) <= 0.0 || !pn.is_finite() {
+    let sigma = problem.velocity_after(impulse).xy().dot(&s);
+    if sigma.is_nan() || sigma <= 0.0 {
         return None;
     }
+    // The conditions hold exactly for what is reported: v_t⁺ = σ ŝ against p_t = −μ p_n ŝ,
+    // and v_n⁺ = −e v_n⁻ (v⁻ + W p meets them to the round-off of its terms).
+    let velocity_after = Vec3::new(sigma * s.x, sigma * s.y, newton_target(problem));
     Some(LcpSolution3 {
         kind: Phase3Kind::Slip {
             from: theta,
@@ -255,16 +300,22 @@ fn slip_candidate(problem: &ContactProblem3, n: f64, theta: f64) -> Option<LcpSo
     })
 }
 
+/// `v_n⁺ = −e v_n⁻`, which every solution meets exactly (`p_n > 0`): reported as such
+/// rather than as `v_n⁻ + (W p)_n`, whose round-off (of the size of `|W||p|`) can be large
+/// beside it for a grazing impact.
+#[inline]
+fn newton_target(problem: &ContactProblem3) -> f64 {
+    -problem.restitution() * problem.velocity().z
+}
+
 /// The sticking candidate: `W p = (−u, N)`, if `p_n ≥ 0` and `|p_t| ≤ μ p_n`.
 fn stick(problem: &ContactProblem3, n: f64) -> Option<LcpSolution3> {
     let v = problem.velocity();
     let p = problem.w().cholesky()?.solve(&Vec3::new(-v.x, -v.y, n));
-    if !(p.z >= 0.0 && p.xy().norm() <= problem.friction() * p.z) {
+    if !(p.z >= 0.0 && norm_of(p.xy()) <= problem.friction() * p.z) {
         return None;
     }
-    let mut velocity_after = problem.velocity_after(p);
-    velocity_after.x = 0.0;
-    velocity_after.y = 0.0;
+    let velocity_after = Vec3::new(0.0, 0.0, newton_target(problem));
     Some(LcpSolution3 {
         kind: Phase3Kind::Stick,
         impulse: p,
@@ -285,12 +336,31 @@ fn stick(problem: &ContactProblem3, n: f64) -> Option<LcpSolution3> {
 /// assert_eq!(lcp::solutions(&p).len(), 1);
 /// ```
 pub fn solutions(problem: &ContactProblem3) -> Vec<LcpSolution3> {
+    // In the problem's canonical units (powers of two, exact; the same as `resolve`'s), the
+    // solutions scaled back.
+    let Some((scaled, u)) = problem.canonical_units() else {
+        return solutions_in_units(problem);
+    };
+    solutions_in_units(&scaled)
+        .into_iter()
+        .map(|s| LcpSolution3 {
+            impulse: s.impulse.map(|x| u.impulse(x)),
+            velocity_after: s.velocity_after.map(|x| u.velocity(x)),
+            energy_change: u.work(s.energy_change),
+            ..s
+        })
+        .collect()
+}
+
+/// [`solutions`] in the units of `problem` as given.
+fn solutions_in_units(problem: &ContactProblem3) -> Vec<LcpSolution3> {
     let n = -(1.0 + problem.restitution()) * problem.velocity().z;
     let mut all: Vec<LcpSolution3> = stick(problem, n).into_iter().collect();
     if problem.friction() == 0.0 {
         // Frictionless: p = (0, 0, N/c) whatever the slip.
         let impulse = Vec3::new(0.0, 0.0, n / problem.wnn());
-        let velocity_after = problem.velocity_after(impulse);
+        let mut velocity_after = problem.velocity_after(impulse);
+        velocity_after.z = newton_target(problem);
         let t = velocity_after.xy();
         let a = t.y.atan2(t.x);
         return vec![LcpSolution3 {
@@ -302,10 +372,10 @@ pub fn solutions(problem: &ContactProblem3) -> Vec<LcpSolution3> {
     }
     for theta in slip_angles(&Trig2::of(problem, n)) {
         if let Some(c) = slip_candidate(problem, n, theta) {
-            let scale = c.impulse.norm();
+            let scale = norm3_of(c.impulse);
             if all
                 .iter()
-                .all(|o| (o.impulse - c.impulse).norm() > 1e-10 * scale)
+                .all(|o| norm3_of(o.impulse - c.impulse) > 1e-10 * scale)
             {
                 let theta = if theta > std::f64::consts::PI {
                     theta - TAU

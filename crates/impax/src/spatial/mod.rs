@@ -25,4 +25,4 @@ pub use invariant::{
     invariant_rays, resumption_direction, sticking_ratio, InvariantRay, InvariantRays, RayKind,
 };
 pub use outcome::{Detail3, Outcome3, Phase3, Phase3Kind, Phases3, Resolution3};
-pub use problem::ContactProblem3;
+pub use problem::{ContactProblem3, PIVOT_TOL};

@@ -2,7 +2,7 @@
 
 use crate::law::LawId;
 use crate::math::Vec3;
-use crate::planar::{Inconsistency, Verdict, WorkSplit};
+use crate::planar::{Inconsistency, Units, Verdict, WorkSplit};
 use std::fmt;
 
 /// A regime of the contact during a spatial impact.
@@ -165,6 +165,42 @@ pub struct Outcome3 {
 }
 
 impl Outcome3 {
+    /// The outcome of the problem in `u` ([`super::ContactProblem3`]'s canonical units)
+    /// in the problem's own units (every factor a power of two: exact).
+    pub(crate) fn in_problem_units(mut self, u: Units) -> Self {
+        self.impulse = self.impulse.map(|x| u.impulse(x));
+        self.velocity_after = self.velocity_after.map(|x| u.velocity(x));
+        self.compression_impulse = self.compression_impulse.map(|x| u.impulse(x));
+        self.work = WorkSplit {
+            compression: u.work(self.work.compression),
+            restitution: u.work(self.work.restitution),
+            friction: u.work(self.work.friction),
+        };
+        self.energy_change = u.work(self.energy_change);
+        self.phases.scale_impulse(u.impulse(1.0));
+        self.inconsistency = self.inconsistency.map(|i| match i {
+            Inconsistency::SlipReversed { slip_after } => Inconsistency::SlipReversed {
+                slip_after: u.velocity(slip_after),
+            },
+            Inconsistency::StillApproaching { normal_velocity } => {
+                Inconsistency::StillApproaching {
+                    normal_velocity: u.velocity(normal_velocity),
+                }
+            }
+            other => other,
+        });
+        if let Detail3::DarbouxKeller {
+            slip_halt,
+            second_compression,
+            ..
+        } = &mut self.detail
+        {
+            *slip_halt = slip_halt.map(|x| u.impulse(x));
+            *second_compression = second_compression.map(|x| u.impulse(x));
+        }
+        self
+    }
+
     /// Whether every number of the outcome is finite.
     pub fn is_finite(&self) -> bool {
         crate::planar::record_is_finite(

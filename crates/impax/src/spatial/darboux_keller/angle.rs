@@ -45,8 +45,8 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 use super::{
-    after_event, event_value, first_event, linear_piece, series_tail, Events, Linear, Point,
-    Scales, SlipEnd, TailSeries, Termination,
+    after_event, event_value, first_event, linear_piece, norm_of, poisson_ends_first, series_tail,
+    Events, Linear, Point, Scales, SlipEnd, TailSeries, Termination,
 };
 use crate::math::{Mat2, Vec2, Vec3};
 use crate::planar::BreakdownReason;
@@ -510,7 +510,7 @@ pub(super) fn run(
     straight: &mut impl FnMut(&mut Point, &mut Events) -> Option<Result<SlipEnd, BreakdownReason>>,
 ) -> Result<Exit, BreakdownReason> {
     let field = cx.field;
-    let sigma0 = pt.vt.norm();
+    let sigma0 = norm_of(pt.vt);
     if !(sigma0 > 0.0 && sigma0.is_finite()) {
         return Ok(Exit::Handoff);
     }
@@ -569,7 +569,7 @@ pub(super) fn run(
         let kn = cx.wnn - cx.mu * cx.wtn.dot(&n0.s);
         if kn > 0.0 {
             let to_event = (base.vn.abs().max(cx.e * cx.vn0.abs())) / kn;
-            let rate = base.vt.norm() * n0.rho;
+            let rate = norm_of(base.vt) * n0.rho;
             if to_event > 0.0 && rate > 0.0 {
                 h = h.min(4.0 * to_event / rate);
             }
@@ -615,7 +615,7 @@ pub(super) fn run(
         let cu = lb.cumulative(&du);
         let sig: [f64; M] = std::array::from_fn(|j| {
             if j == 0 {
-                base.vt.norm()
+                norm_of(base.vt)
             } else {
                 (u0 + half * cu[j]).exp()
             }
@@ -715,30 +715,41 @@ pub(super) fn run(
         for j in 1..M {
             let mut bj = point(j, &dense);
             let mut lo = lb.t[j - 1];
-            while let Some((kind, ga, gb)) = first_event(ev, &prev, &bj) {
+            while let Some((mut kind, ga, gb)) = first_event(ev, &prev, &bj) {
                 let w = *dense.get_or_insert_with(all_dense);
                 bj = point(j, &dense);
                 // The event function's rate: its integrand's interpolant (v_n for the end
                 // of compression, a second compression and Newton's termination).
-                let (rate, sign) = match (kind, ev.term) {
-                    (1, Termination::Energetic) => (&dn, 1.0),
-                    (1, Termination::Poisson) => (&dp, 1.0),
-                    (2, _) => (&dv, -1.0),
-                    _ => (&dv, 1.0),
+                let at_crossing = |kind: u8, ga: f64, gb: f64| {
+                    let (rate, sign) = match (kind, ev.term) {
+                        (1, Termination::Energetic) => (&dn, 1.0),
+                        (1, Termination::Poisson) => (&dp, 1.0),
+                        (2, _) => (&dv, -1.0),
+                        _ => (&dv, 1.0),
+                    };
+                    if ga >= 0.0 {
+                        // (A later compression that began at v_n = 0 exactly ends at once.)
+                        return lo;
+                    }
+                    crossing(
+                        |t| {
+                            let l = lb.basis(t);
+                            (
+                                event_value(ev, kind, &light(&l, &w)),
+                                sign * half * dot(&l, rate),
+                            )
+                        },
+                        lo,
+                        ga,
+                        lb.t[j],
+                        gb,
+                    )
                 };
-                let t = crossing(
-                    |t| {
-                        let l = lb.basis(t);
-                        (
-                            event_value(ev, kind, &light(&l, &w)),
-                            sign * half * dot(&l, rate),
-                        )
-                    },
-                    lo,
-                    ga,
-                    lb.t[j],
-                    gb,
-                );
+                let mut t = at_crossing(kind, ga, gb);
+                if poisson_ends_first(ev, kind, &light(&lb.basis(t), &w)) {
+                    kind = 1;
+                    t = at_crossing(kind, ev.terminal(&prev), ev.terminal(&bj));
+                }
                 // The whole state at the event.
                 let l = lb.basis(t);
                 let (c1, c2) = (lb.cumulative(&d1), lb.cumulative(&d2));
@@ -777,7 +788,7 @@ pub(super) fn run(
                 return Ok(Exit::End(end));
             }
             if within(TAN_0_15) {
-                let g = cx.wtn - cx.mu * (cx.wtt * (pt.vt / pt.vt.norm()));
+                let g = cx.wtn - cx.mu * (cx.wtt * (pt.vt / norm_of(pt.vt)));
                 if let Some(ser) = series.get(field, cx.wnn, g, pt.vt) {
                     let sc = cx.sc;
                     if let Some(end) = series_tail(ser, cx.wtn, cx.wnn, cx.mu, sc, pt, ev, observe)
@@ -790,17 +801,18 @@ pub(super) fn run(
             // On the ray ahead to the last bit of the result: the rest is a straight run
             // along it.
             let s = fan.ahead.dir;
-            let sigma = pt.vt.norm();
+            let sigma = norm_of(pt.vt);
             let piece = Linear {
                 kind: Phase3Kind::Stick,
                 ratio: -cx.mu * s,
+                slope: cx.wnn - cx.mu * cx.wtn.dot(&s),
                 dir: s,
                 sigma,
                 dsigma: qa,
                 length: f64::INFINITY,
             };
             let phi = pt.vt.y.atan2(pt.vt.x);
-            return if linear_piece(&piece, pt, ev, cx.wnn, cx.wtn, cx.mu)? {
+            return if linear_piece(&piece, pt, ev, cx.mu)? {
                 observe(pt.p, Vec3::new(pt.vt.x, pt.vt.y, pt.vn));
                 Ok(Exit::End(SlipEnd::Terminated { phi }))
             } else {
