@@ -4,8 +4,8 @@
 //   IMPAX_BIN=target/release/impax node --test web/test/e2e.test.mjs
 //
 // Environment: IMPAX_BIN (the binary, required), CHROMIUM (default /usr/bin/chromium),
-// SCREENSHOT (default target/explorer.png beside the repository root; the README's picture
-// docs/img/explorer.png is refreshed with SCREENSHOT=docs/img/explorer.png).
+// SCREENSHOT (default target/explorer.png beside the repository root; the book's picture
+// docs/src/img/explorer.png is refreshed with SCREENSHOT=docs/src/img/explorer.png).
 import { test, before, after } from "node:test";
 import assert from "node:assert/strict";
 import { spawn, execFileSync } from "node:child_process";

@@ -36,7 +36,7 @@ pub const ENGINE_RULES: [LawId; 2] = [LawId::Lcp, LawId::Whittaker];
 pub const REFERENCE: LawId = LawId::Energetic;
 
 /// The built-in scenarios and their default coefficients `(μ, e)`: the seed's sphere
-/// (30° from the normal, no spin), the rod of docs/engine-audit.md (50° to the floor, translating at
+/// (30° from the normal, no spin), the rod of docs/src/engine-audit.md (50° to the floor, translating at
 /// (0.5, −1)) and Kane & Levinson's double pendulum.
 const BUILT_INS: [(&str, f64, f64); 3] = [
     ("sphere", 0.4, 0.7),
@@ -358,7 +358,7 @@ fn role(law: LawId) -> &'static str {
 }
 
 /// Every verdict id of an engine-style rule (`engine_rules[].verdict.id` of `--json`), each
-/// documented in the README ("Engine audit").
+/// documented in the book (`docs/src/reference/ids.md`, "Audit verdicts").
 pub const VERDICT_IDS: [&str; 6] = [
     "gains-energy",
     "matches",
@@ -626,13 +626,13 @@ fn table(audit: &Audit) -> String {
 mod tests {
     use super::VERDICT_IDS;
 
-    /// `no-reference` was printed by `--json` but missing from the README's list of ids.
+    /// `no-reference` was printed by `--json` but missing from the documented list of ids.
     #[test]
     fn every_verdict_id_is_documented() {
-        let readme = include_str!("../../../README.md");
-        let start = readme.find("## Engine audit").expect("the audit section");
-        let end = start + readme[start..].find("\n## ").expect("the next section");
-        let section = &readme[start..end];
+        let ids = include_str!("../../../docs/src/reference/ids.md");
+        let start = ids.find("## Audit verdicts").expect("the audit verdicts");
+        let end = start + ids[start..].find("\n## ").expect("the next section");
+        let section = &ids[start..end];
         for id in VERDICT_IDS {
             assert!(
                 section.contains(&format!("`{id}`")),

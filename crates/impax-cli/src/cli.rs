@@ -59,7 +59,7 @@ pub struct ExploreArgs {
 /// The points of a sweep and the scenario they vary (shared by `sweep` and `map`).
 #[derive(Debug, Args)]
 pub struct SpaceArgs {
-    /// A TOML scenario file (see README: "Scenario files"); default: the seed's sphere.
+    /// A TOML scenario file (the book: docs/src/scenarios.md); default: the seed's sphere.
     pub scenario: Option<PathBuf>,
     /// A grid axis: COUNT values of field NAME from START to STOP inclusive (repeatable; the
     /// first axis varies slowest). E.g. `--grid alpha-deg=0:90:901`.
@@ -101,7 +101,7 @@ pub struct SweepArgs {
     #[arg(long, default_value = "csv")]
     pub format: String,
     /// CSV/Parquet output columns after the swept fields and `law`, comma separated
-    /// (default: all; see README: "Sweeps").
+    /// (default: all; the book: docs/src/sweeps.md).
     #[arg(long, value_delimiter = ',')]
     pub columns: Vec<String>,
     /// Write to FILE instead of stdout.
@@ -127,7 +127,7 @@ pub struct MapArgs {
 
 #[derive(Debug, Args)]
 pub struct CompareArgs {
-    /// A TOML scenario file (see README: "Scenario files"), or a built-in mechanism:
+    /// A TOML scenario file (the book: docs/src/scenarios.md), or a built-in mechanism:
     /// `double-pendulum` (θ1, θ2 from the downward vertical; the tip of rod 2 strikes the
     /// floor), `ring-pendulum`, `cart-pendulum`; default: the seed's sphere.
     pub scenario: Option<PathBuf>,

@@ -1,5 +1,5 @@
 //! `impax compare scenario.toml` for spatial (3D) bodies: a scenario file with
-//! `space = "3d"` (see README, "3D scenario files").
+//! `space = "3d"` (see the book, docs/src/scenarios.md, "Spatial bodies").
 //!
 //! ```toml
 //! space = "3d"

@@ -1,4 +1,4 @@
-//! JSON records of outcomes (the schema is documented in README.md, "JSON output").
+//! JSON records of outcomes (the schema is documented in the book, docs/src/reference/json.md).
 
 use impax::bodies::BodyOutcome;
 use impax::planar::{Breakdown, ContactProblem, LawDetail, Outcome, SmithReading};

@@ -117,3 +117,9 @@ where
         },
     }
 }
+
+/// The Rust examples of the book's chapter "The Rust library" (`docs/src/library.md`),
+/// compiled and run as doctests so that the book cannot drift from the library.
+#[cfg(doctest)]
+#[doc = include_str!("../../../docs/src/library.md")]
+pub struct BookLibraryChapter;

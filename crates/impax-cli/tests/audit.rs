@@ -248,7 +248,7 @@ fn docs_rod() -> String {
     )
 }
 
-/// The gain region of `lcp` drawn in docs/engine-audit.md: where the rod sticks at e = 1,
+/// The gain region of `lcp` drawn in docs/src/engine-audit.md: where the rod sticks at e = 1,
 /// ΔT = ½ v_t⁻ p_t > 0 exactly when 12 sin θ cos θ > 1 + 3 cos² θ (W_tn = −3 sin θ cos θ,
 /// W_nn = 1 + 3 cos² θ for m = l = 1, v⁻ = (0.5, −1)), whatever μ.
 #[test]

@@ -98,7 +98,7 @@ fn double_pendulum_is_kanes_paradox() {
     let w = &results[0];
     assert_eq!(w["law"], "whittaker");
     assert_eq!(w["verdict"], "energy-gained");
-    // T⁺/T⁻ = 1.26087 (README, Kane & Levinson's pendulum).
+    // T⁺/T⁻ = 1.26087 (the book's Mechanisms chapter: Kane & Levinson's pendulum).
     assert!((w["energy_ratio"].as_f64().unwrap() - 1.26087).abs() < 5e-6);
     above_the_floor(&v["animation"]);
     let frames = v["animation"]["before"].as_array().unwrap();
