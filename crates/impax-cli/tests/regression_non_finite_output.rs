@@ -39,50 +39,18 @@ fn refused(args: &[&str], field: &str) {
     );
 }
 
-/// Keys whose value is documented as possibly null in a law's entry that did not break down.
-const NULLABLE: [&str; 7] = [
-    "detail",
-    "inconsistency",
-    "breakdown",
-    "compression_impulse",
-    "slip_halt",
-    "second_compression",
-    "other_body_velocity_after",
-];
-
-/// No null under a key where a number is documented (entries of laws that broke down carry
-/// nulls by contract and are skipped).
-fn no_null_numbers(v: &Value, key: &str, path: &str) {
-    match v {
-        Value::Null => assert!(NULLABLE.contains(&key), "null at {path}"),
-        Value::Array(a) => {
-            for (i, x) in a.iter().enumerate() {
-                no_null_numbers(x, key, &format!("{path}[{i}]"));
-            }
-        }
-        Value::Object(m) => {
-            if m.get("verdict").and_then(Value::as_str) == Some("breakdown")
-                || m.get("breakdown").is_some_and(|b| !b.is_null())
-            {
-                return;
-            }
-            for (k, x) in m {
-                no_null_numbers(x, k, &format!("{path}.{k}"));
-            }
-        }
-        _ => {}
-    }
-}
-
-/// Exit 0, no `inf` or `NaN` in stdout, and (for JSON) no null number.
+/// Exit 0 and the command line's contract (`impax_cli::contract`): no NaN or infinity shown
+/// as a number, and no null in JSON where a number is documented.
 fn finite(args: &[&str]) -> String {
     let (code, out, err) = impax(args);
     assert_eq!(code, Some(0), "impax {args:?}: {err}");
-    for bad in ["inf", "NaN"] {
-        assert!(!out.contains(bad), "impax {args:?} prints `{bad}`:\n{out}");
-    }
-    if let Ok(doc) = serde_json::from_str::<Value>(&out) {
-        no_null_numbers(&doc, "", "");
+    let run = impax_cli::Invocation {
+        code: 0,
+        stdout: out.clone().into_bytes(),
+        stderr: err,
+    };
+    if let Err(why) = impax_cli::contract::check(&run) {
+        panic!("impax {args:?}: {why}");
     }
     out
 }

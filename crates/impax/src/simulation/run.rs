@@ -395,18 +395,9 @@ pub fn simulate<M: Mechanism + ?Sized>(
                         };
                         return Ok(stop_at(rec, impacts, events, stop, t, &y, &ode));
                     }
-                    if let Some(body) = m.round_on_floor() {
-                        if m.contacts()[k].surface.normal == Vec2::new(0.0, 1.0) {
-                            let state = Rolling {
-                                t0: t,
-                                x: y[0],
-                                vx: y[n],
-                                theta: y[2],
-                                omega: y[n + 2],
-                            };
-                            let (stop, end) = roll(m, &body, state, options, &mut rec, &mut events);
-                            return Ok(finish(rec, impacts, events, stop, end, &ode));
-                        }
+                    if let Some((body, state)) = rolling_from(m, k, t, &y) {
+                        let (stop, end) = roll(m, &body, state, options, &mut rec, &mut events);
+                        return Ok(finish(rec, impacts, events, stop, end, &ode));
                     }
                     let stop = StopReason::PersistentContact { contact: k };
                     return Ok(stop_at(rec, impacts, events, stop, t, &y, &ode));
@@ -549,20 +540,11 @@ pub fn simulate<M: Mechanism + ?Sized>(
                     }
                 }
                 if let Some(t_contact) = persistent {
-                    let stop = match m.round_on_floor() {
-                        Some(body) if m.contacts()[k].surface.normal == Vec2::new(0.0, 1.0) => {
-                            let state = Rolling {
-                                t0: t_contact,
-                                x: y[0],
-                                vx: y[n],
-                                theta: y[2],
-                                omega: y[n + 2],
-                            };
-                            let (stop, end) = roll(m, &body, state, options, &mut rec, &mut events);
-                            return Ok(finish(rec, impacts, events, stop, end, &ode));
-                        }
-                        _ => StopReason::PersistentContact { contact: k },
-                    };
+                    if let Some((body, state)) = rolling_from(m, k, t_contact, &y) {
+                        let (stop, end) = roll(m, &body, state, options, &mut rec, &mut events);
+                        return Ok(finish(rec, impacts, events, stop, end, &ode));
+                    }
+                    let stop = StopReason::PersistentContact { contact: k };
                     // Leave the state with zero normal contact velocity (plastic, frictionless).
                     let (q, u) = y.split_at(n);
                     let imp = MechanismImpact::new(m, q, u, k)?;
@@ -688,6 +670,28 @@ pub fn simulate<M: Mechanism + ?Sized>(
             rec.next += 1;
         }
     }
+}
+
+/// Persistent contact of contact `k` at `(t, y)` that the closed form continues: a round body
+/// on a horizontal floor, with its state `(x, ẋ, θ, θ̇)`.
+fn rolling_from<M: Mechanism + ?Sized>(
+    m: &M,
+    k: usize,
+    t: f64,
+    y: &[f64],
+) -> Option<(crate::mechanism::RoundOnFloor, Rolling)> {
+    let n = m.dof();
+    let body = m.round_on_floor()?;
+    (m.contacts()[k].surface.normal == Vec2::new(0.0, 1.0)).then_some((
+        body,
+        Rolling {
+            t0: t,
+            x: y[0],
+            vx: y[n],
+            theta: y[2],
+            omega: y[n + 2],
+        },
+    ))
 }
 
 /// The end of a run at `(t, y)`, recorded as its last sample (so that the run's final energy
