@@ -93,6 +93,48 @@ pub(crate) fn norm3_of(v: Vec3) -> f64 {
     }
 }
 
+/// The change of units of `planar::ContactProblem::in_units` (and the spatial laws'): velocities times `a`, `W` times `b`,
+/// hence impulses times `a/b` and works times `a²/b` (the Darboux–Keller equations and every
+/// algebraic law are homogeneous in these units).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Units {
+    /// The factor of velocities.
+    pub a: f64,
+    /// The factor of `W`.
+    pub b: f64,
+}
+
+impl Units {
+    pub fn factor(x: f64, entries: &[f64]) -> f64 {
+        unit_factor(x, entries)
+    }
+
+    /// Impulses back to the problem's units.
+    #[inline]
+    pub fn impulse(&self, p: f64) -> f64 {
+        p * (self.b / self.a)
+    }
+
+    /// Velocities back to the problem's units.
+    #[inline]
+    pub fn velocity(&self, v: f64) -> f64 {
+        v / self.a
+    }
+
+    /// Works and energies back to the problem's units.
+    #[inline]
+    pub fn work(&self, w: f64) -> f64 {
+        // (b / a) / a: each factor a power of two, so exact.
+        w * (self.b / self.a) / self.a
+    }
+
+    /// A quantity with the units of `W` (velocity per impulse) back to the problem's units.
+    #[inline]
+    pub fn inverse_inertia(&self, w: f64) -> f64 {
+        w / self.b
+    }
+}
+
 /// Planar cross product `a × b = a.x b.y − a.y b.x` (the z component).
 #[inline]
 pub fn cross2(a: Vec2, b: Vec2) -> f64 {

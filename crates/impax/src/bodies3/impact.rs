@@ -2,9 +2,9 @@
 
 use super::rigid::{BodyState3, EnergyParts3, RigidBody3};
 use crate::error::Result;
+use crate::law::Breakdown;
 use crate::law::LawId;
 use crate::math::{Mat3, Vec3};
-use crate::planar::Breakdown;
 use crate::spatial::{ContactProblem3, Outcome3};
 
 /// A law applied to a [`SpatialImpact`]: the contact-space outcome and the bodies after.

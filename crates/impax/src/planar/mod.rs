@@ -7,10 +7,10 @@ mod outcome;
 pub mod path;
 mod problem;
 
-pub(crate) use outcome::record_is_finite;
+// The shared vocabulary, also at `impax::law` (re-exported here, where it always was).
+pub use crate::law::{Breakdown, BreakdownReason, Inconsistency, Verdict, WorkSplit};
 pub use outcome::{
-    Breakdown, BreakdownReason, BriefResolution, Inconsistency, LawDetail, Outcome, OutcomeBrief,
-    Phase, PhaseKind, Phases, Resolution, SlipDirection, SmithReading, Verdict, WorkSplit,
+    BriefResolution, LawDetail, Outcome, OutcomeBrief, Phase, PhaseKind, Phases, Resolution,
+    SlipDirection, SmithReading,
 };
-pub(crate) use problem::Units;
 pub use problem::{ContactProblem, InverseInertia};

@@ -1,8 +1,7 @@
 //! What every planar law returns: the impulse, velocities, work split, phases and a verdict.
 
-use super::problem::Units;
-use crate::law::LawId;
-use crate::math::Vec2;
+use crate::law::{record_is_finite, Breakdown, Inconsistency, LawId, Verdict, WorkSplit};
+use crate::math::{Units, Vec2};
 use std::fmt;
 
 /// Direction of tangential slip, `sign(v_t)`.
@@ -138,118 +137,6 @@ impl Phases {
 impl Default for Phases {
     fn default() -> Self {
         Self::new()
-    }
-}
-
-/// The energy audit of an impact: `ΔT = W_c + W_r + W_t` (theory §1).
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct WorkSplit {
-    /// Normal work during compression `W_c = ∫₀^{p_c} v_n dp_n ≤ 0`.
-    pub compression: f64,
-    /// Normal work during restitution `W_r = ∫_{p_c}^{p_f} v_n dp_n`.
-    pub restitution: f64,
-    /// Friction work `W_t = ∫ v_t dp_t`.
-    pub friction: f64,
-}
-
-impl WorkSplit {
-    /// Total normal work `W_n = W_c + W_r`.
-    pub fn normal(&self) -> f64 {
-        self.compression + self.restitution
-    }
-    /// `W_n + W_t`, which equals `ΔT`.
-    pub fn total(&self) -> f64 {
-        self.normal() + self.friction
-    }
-}
-
-/// The overall judgement of a law's result.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum Verdict {
-    /// No energy gained and the law's assumptions hold.
-    Consistent,
-    /// The kinetic energy rose: Kane's paradox.
-    EnergyGained,
-    /// The law's own assumption is contradicted by its result (see [`Inconsistency`]).
-    InconsistentAssumption,
-}
-
-impl Verdict {
-    /// Stable id used in JSON: `consistent`, `energy-gained`, `inconsistent-assumption`.
-    pub fn id(self) -> &'static str {
-        match self {
-            Verdict::Consistent => "consistent",
-            Verdict::EnergyGained => "energy-gained",
-            Verdict::InconsistentAssumption => "inconsistent-assumption",
-        }
-    }
-}
-
-/// An assumption of a law that its own result contradicts.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Inconsistency {
-    /// Friction was held against the initial slip but the slip reversed during the impact
-    /// (Whittaker, Smith at `η = ±1`): friction did positive work in the end part.
-    SlipReversed {
-        /// Tangential contact velocity after the impact.
-        slip_after: f64,
-    },
-    /// The two-phase scheme assumed the slip reverses after it halts, but the final slip
-    /// has the initial direction (paper A §3: `v_Px⁺ > 0`).
-    ReversalDidNotHappen {
-        /// Tangential contact velocity after the impact.
-        slip_after: f64,
-    },
-    /// The velocity-level LCP (`lcp`, spatial) has several solutions: the rule alone does not
-    /// say which one an engine returns (it depends on the engine's iteration). The one of
-    /// least kinetic energy after is reported.
-    MultipleSolutions {
-        /// Number of distinct solutions (2 or 3).
-        count: usize,
-    },
-    /// The impact ended with the bodies still approaching (`v_n⁺ < 0` beyond round-off): no
-    /// impact law may end there. The Darboux–Keller laws are built never to (Poisson's
-    /// after a jamb ends only once the restitution impulse reaches `e` times the impulse of
-    /// every compression phase, with `v_n ≥ 0`); the check stays as a guard.
-    StillApproaching {
-        /// Normal contact velocity after the impact.
-        normal_velocity: f64,
-    },
-}
-
-impl Inconsistency {
-    /// Stable id: `slip-reversed`, `reversal-did-not-happen`, `multiple-solutions` or
-    /// `still-approaching`.
-    pub fn id(&self) -> &'static str {
-        match self {
-            Inconsistency::SlipReversed { .. } => "slip-reversed",
-            Inconsistency::ReversalDidNotHappen { .. } => "reversal-did-not-happen",
-            Inconsistency::MultipleSolutions { .. } => "multiple-solutions",
-            Inconsistency::StillApproaching { .. } => "still-approaching",
-        }
-    }
-}
-
-impl fmt::Display for Inconsistency {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            Inconsistency::SlipReversed { slip_after } => write!(
-                f,
-                "friction kept against the initial slip, but the slip reversed (v_t+ = {slip_after:.6})"
-            ),
-            Inconsistency::ReversalDidNotHappen { slip_after } => write!(
-                f,
-                "assumed the slip reverses after it halts, but v_t+ = {slip_after:.6} keeps the initial direction"
-            ),
-            Inconsistency::MultipleSolutions { count } => write!(
-                f,
-                "the complementarity conditions have {count} solutions; the one of least kinetic energy after is shown"
-            ),
-            Inconsistency::StillApproaching { normal_velocity } => write!(
-                f,
-                "the impact ended with the bodies still approaching (v_n+ = {normal_velocity:.6e} < 0)"
-            ),
-        }
     }
 }
 
@@ -405,49 +292,6 @@ impl Phases {
     }
 }
 
-impl Breakdown {
-    /// The breakdown with its numbers in the problem's own units.
-    pub(crate) fn in_problem_units(mut self, u: Units) -> Self {
-        self.reason = match self.reason {
-            BreakdownReason::NegativeNormalImpulse { denominator } => {
-                BreakdownReason::NegativeNormalImpulse {
-                    denominator: u.inverse_inertia(denominator),
-                }
-            }
-            BreakdownReason::NoConsistentSplit {
-                switch_impulse,
-                total_impulse,
-            } => BreakdownReason::NoConsistentSplit {
-                switch_impulse: u.impulse(switch_impulse),
-                total_impulse: u.impulse(total_impulse),
-            },
-            other => other,
-        };
-        self
-    }
-}
-
-/// Whether the numbers of an outcome record (impulse and velocity components, the work
-/// split, `ΔT`, the compression impulse) are all finite; shared by the planar and spatial
-/// records.
-pub(crate) fn record_is_finite<'a>(
-    components: impl IntoIterator<Item = &'a f64>,
-    work: &WorkSplit,
-    energy_change: f64,
-    compression_impulse: Option<f64>,
-) -> bool {
-    components.into_iter().all(|x| x.is_finite())
-        && [
-            work.compression,
-            work.restitution,
-            work.friction,
-            energy_change,
-        ]
-        .iter()
-        .all(|x| x.is_finite())
-        && compression_impulse.is_none_or(f64::is_finite)
-}
-
 /// The part of an [`Outcome`] a reduction over many impacts reads (e.g.
 /// [`Tally`](crate::analysis::Tally)): the verdict, the phase sequence and `ΔT`.
 ///
@@ -525,105 +369,6 @@ impl Outcome {
         }
         points.push(self.impulse);
         points
-    }
-}
-
-/// Why a law produced no admissible result.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum BreakdownReason {
-    /// The law's normal impulse would be negative (or unbounded): the denominator of
-    /// `p_n = −(1+e) v_n⁻ / denominator` is not positive.
-    NegativeNormalImpulse {
-        /// The denominator, e.g. `W_nn − μ s0 W_tn` for Whittaker.
-        denominator: f64,
-    },
-    /// The two-phase scheme finds no split: the switch would come after the impact ends.
-    NoConsistentSplit {
-        /// The switch impulse `p'`.
-        switch_impulse: f64,
-        /// The total normal impulse the second phase would need.
-        total_impulse: f64,
-    },
-    /// Smith's equation for `η` has no admissible root.
-    NoEtaRoot,
-    /// The normal velocity cannot reach the termination: the bodies would not separate
-    /// (a numerically degenerate problem).
-    NoSeparation,
-    /// The law is defined for planar problems only (`two-phase`, `smith`, `smith-centre`).
-    PlanarOnly,
-    /// The law reads a body's centre velocity (`smith-centre`) and was given only a
-    /// contact-space problem.
-    NeedsBody,
-    /// The complementarity conditions of `lcp` have no solution (not observed for a
-    /// positive definite `W`; reported rather than guessed).
-    NoSolution,
-    /// The law's impulse, velocity or energy is not representable in double precision
-    /// (e.g. `whittaker` with `μ = 1e200`: `|p_t| = μ p_n` and `ΔT ≈ ½ W_tt p_t²` overflow).
-    /// Reported rather than returning infinities as numbers.
-    Overflow,
-}
-
-impl BreakdownReason {
-    /// Stable id.
-    pub fn id(&self) -> &'static str {
-        match self {
-            BreakdownReason::NegativeNormalImpulse { .. } => "negative-normal-impulse",
-            BreakdownReason::NoConsistentSplit { .. } => "no-consistent-split",
-            BreakdownReason::NoEtaRoot => "no-eta-root",
-            BreakdownReason::NeedsBody => "needs-body",
-            BreakdownReason::NoSeparation => "no-separation",
-            BreakdownReason::PlanarOnly => "planar-only",
-            BreakdownReason::NoSolution => "no-solution",
-            BreakdownReason::Overflow => "overflow",
-        }
-    }
-}
-
-impl fmt::Display for BreakdownReason {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            BreakdownReason::NegativeNormalImpulse { denominator } => write!(
-                f,
-                "the rule needs a negative normal impulse (denominator {denominator:.6} ≤ 0)"
-            ),
-            BreakdownReason::NoConsistentSplit {
-                switch_impulse,
-                total_impulse,
-            } => write!(
-                f,
-                "no consistent two-phase split (switch at p_n = {switch_impulse:.6}, total {total_impulse:.6})"
-            ),
-            BreakdownReason::NoEtaRoot => f.write_str("Smith's η equation has no admissible root"),
-            BreakdownReason::NoSeparation => {
-                f.write_str("the normal velocity cannot reach the termination: no separation")
-            }
-            BreakdownReason::PlanarOnly => f.write_str("the law is defined for planar impacts only"),
-            BreakdownReason::NeedsBody => {
-                f.write_str("the law reads a body's centre velocity; contact space has none")
-            }
-            BreakdownReason::NoSolution => {
-                f.write_str("the complementarity conditions have no solution")
-            }
-            BreakdownReason::Overflow => f.write_str(
-                "the result is not representable in double precision (overflow)",
-            ),
-        }
-    }
-}
-
-/// A law that cannot produce a physical result for this problem. Reported as such, never
-/// as numbers.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Breakdown {
-    /// Which law broke down.
-    pub law: LawId,
-    /// Why.
-    pub reason: BreakdownReason,
-}
-
-impl fmt::Display for Breakdown {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}: {}", self.law, self.reason)
     }
 }
 

@@ -1,7 +1,7 @@
 //! The planar contact-space impact problem `(W, v⁻, μ, e)`.
 
 use crate::error::{finite, Error, Num, Result};
-use crate::math::{Mat2, Vec2};
+use crate::math::{Mat2, Units, Vec2};
 
 /// A validated planar impact problem in contact space.
 ///
@@ -341,47 +341,5 @@ impl ContactProblem {
             b: self.b,
             c: self.c,
         }
-    }
-}
-
-/// The change of units of [`ContactProblem::in_units`]: velocities times `a`, `W` times `b`,
-/// hence impulses times `a/b` and works times `a²/b` (the Darboux–Keller equations and every
-/// algebraic law are homogeneous in these units).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) struct Units {
-    /// The factor of velocities.
-    pub a: f64,
-    /// The factor of `W`.
-    pub b: f64,
-}
-
-impl Units {
-    fn factor(x: f64, entries: &[f64]) -> f64 {
-        crate::math::unit_factor(x, entries)
-    }
-
-    /// Impulses back to the problem's units.
-    #[inline]
-    pub fn impulse(&self, p: f64) -> f64 {
-        p * (self.b / self.a)
-    }
-
-    /// Velocities back to the problem's units.
-    #[inline]
-    pub fn velocity(&self, v: f64) -> f64 {
-        v / self.a
-    }
-
-    /// Works and energies back to the problem's units.
-    #[inline]
-    pub fn work(&self, w: f64) -> f64 {
-        // (b / a) / a: each factor a power of two, so exact.
-        w * (self.b / self.a) / self.a
-    }
-
-    /// A quantity with the units of `W` (velocity per impulse) back to the problem's units.
-    #[inline]
-    pub fn inverse_inertia(&self, w: f64) -> f64 {
-        w / self.b
     }
 }

@@ -65,8 +65,8 @@ use super::outcome::{Phase3Kind, Phases3};
 use super::ray_series::{Field, RaySeries};
 use super::rk::{dop853_step, error_measure, Dense, Step};
 use super::ContactProblem3;
+use crate::law::BreakdownReason;
 use crate::math::{norm_of, Mat2, Vec2, Vec3};
-use crate::planar::BreakdownReason;
 
 /// The termination rule of a Darboux–Keller law.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -5,10 +5,10 @@
 use super::darboux_keller::{integrate_with, PathEnd, SpatialOptions, Termination};
 use super::outcome::{Detail3, Outcome3, Phase3Kind, Phases3, Resolution3};
 use super::ContactProblem3;
+use crate::law::energy::ENERGY_GAIN_ROUND_OFF;
 use crate::law::LawId;
+use crate::law::{Breakdown, BreakdownReason, Inconsistency, Verdict, WorkSplit};
 use crate::math::{norm_of, Vec2, Vec3};
-use crate::planar::laws::ENERGY_GAIN_ROUND_OFF;
-use crate::planar::{Breakdown, BreakdownReason, Inconsistency, Verdict, WorkSplit};
 
 /// Whether `ΔT` is a real gain: it exceeds the round-off of its evaluation
 /// `½ (v⁻ + v⁺)·p`, `16 ε Σ_i (|v⁻_i| + |v⁺_i| + (|W| |p|)_i) |p_i|` (the problem's own

@@ -46,8 +46,8 @@ use super::laws::{assemble, straight};
 use super::outcome::{Detail3, Phase3Kind, Resolution3};
 use super::ContactProblem3;
 use crate::law::LawId;
+use crate::law::{Breakdown, BreakdownReason, Inconsistency};
 use crate::math::{cross2, norm3_of, norm_of, Vec2, Vec3};
-use crate::planar::{Breakdown, BreakdownReason, Inconsistency};
 use std::f64::consts::TAU;
 
 /// One solution of the spatial complementarity conditions.

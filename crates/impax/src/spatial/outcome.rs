@@ -1,8 +1,9 @@
 //! What every spatial law returns.
 
 use crate::law::LawId;
+use crate::law::{Inconsistency, Verdict, WorkSplit};
+use crate::math::Units;
 use crate::math::Vec3;
-use crate::planar::{Inconsistency, Units, Verdict, WorkSplit};
 use std::fmt;
 
 /// A regime of the contact during a spatial impact.
@@ -203,7 +204,7 @@ impl Outcome3 {
 
     /// Whether every number of the outcome is finite.
     pub fn is_finite(&self) -> bool {
-        crate::planar::record_is_finite(
+        crate::law::record_is_finite(
             self.impulse.iter().chain(self.velocity_after.iter()),
             &self.work,
             self.energy_change,

@@ -213,10 +213,10 @@ impl ContactProblem3 {
     /// nonzero entry leaves `[2⁻¹⁰⁰⁰, 2¹⁰⁰⁰]`). Exact, and the same problem in these units for
     /// any power-of-two multiple of `v` and `W`: every law is invariant under such a change of
     /// units, bit for bit, wherever its numbers are representable. `None` when `a = b = 1`.
-    pub(crate) fn canonical_units(&self) -> Option<(Self, crate::planar::Units)> {
+    pub(crate) fn canonical_units(&self) -> Option<(Self, crate::math::Units)> {
         let a = crate::math::exact_unit_factor(self.v.z.abs(), self.v.as_slice());
         let b = crate::math::exact_unit_factor(self.w[(2, 2)], self.w.as_slice());
-        (a != 1.0 || b != 1.0).then(|| (self.in_units(a, b), crate::planar::Units { a, b }))
+        (a != 1.0 || b != 1.0).then(|| (self.in_units(a, b), crate::math::Units { a, b }))
     }
 
     /// The same problem with velocities times `a` and `W` times `b` (powers of two: exact),

@@ -31,18 +31,14 @@ pub use smith::Smith;
 pub use two_phase::TwoPhase;
 pub use whittaker::Whittaker;
 
-use super::outcome::{
-    Breakdown, BreakdownReason, BriefResolution, Inconsistency, LawDetail, Outcome, OutcomeBrief,
-    PhaseKind, Resolution, Verdict, WorkSplit,
-};
+use super::outcome::{BriefResolution, LawDetail, Outcome, OutcomeBrief, PhaseKind, Resolution};
 use super::path::{line_summary, ImpulsePath, PathSummary};
 use super::ContactProblem;
 use crate::law::LawId;
+use crate::law::{Breakdown, BreakdownReason, Inconsistency, Verdict, WorkSplit};
 use crate::math::Vec2;
 
-/// The factor of `ε` in the round-off bound of `ΔT` above which a rise of kinetic energy is
-/// reported as a gain (see [`is_energy_gain`]).
-pub const ENERGY_GAIN_ROUND_OFF: f64 = 16.0 * f64::EPSILON;
+pub use crate::law::energy::ENERGY_GAIN_ROUND_OFF;
 
 /// Whether `energy_change = ΔT` of the impulse `p` (taking `v⁻` to `v⁺`) is a real gain: it
 /// exceeds the round-off of its own evaluation.

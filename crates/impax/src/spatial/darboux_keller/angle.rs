@@ -48,8 +48,8 @@ use super::{
     after_event, event_value, first_event, linear_piece, norm_of, poisson_ends_first, series_tail,
     Events, Linear, Point, Scales, SlipEnd, TailSeries, Termination,
 };
+use crate::law::BreakdownReason;
 use crate::math::{Mat2, Vec2, Vec3};
-use crate::planar::BreakdownReason;
 use crate::spatial::chebyshev::{dot, lobatto, M, N};
 use crate::spatial::outcome::Phase3Kind;
 use crate::spatial::ray_series::{polish_in_bracket, Field};

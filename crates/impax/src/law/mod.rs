@@ -1,4 +1,17 @@
-//! Impact-law ids and the [`ImpactLaw`] capability trait.
+//! The vocabulary every law shares, planar and spatial alike: the stable ids ([`LawId`]),
+//! the capability trait ([`ImpactLaw`]), the energy audit ([`WorkSplit`]), the judgement of a
+//! result ([`Verdict`], [`Inconsistency`], the energy-gain test of [`energy`]) and the
+//! breakdowns ([`Breakdown`], [`BreakdownReason`]).
+
+mod breakdown;
+pub mod energy;
+mod verdict;
+mod work;
+
+pub use breakdown::{Breakdown, BreakdownReason};
+pub use verdict::{Inconsistency, Verdict};
+pub(crate) use work::record_is_finite;
+pub use work::WorkSplit;
 
 use crate::error::{Error, Result};
 use crate::planar::{BriefResolution, ContactProblem, OutcomeBrief, Resolution};
@@ -99,7 +112,7 @@ impl LawId {
     /// Resolve a contact-space problem with this law.
     ///
     /// `smith-centre` needs a body's centre velocity, which contact space does not have: it
-    /// returns [`BreakdownReason::NeedsBody`](crate::planar::BreakdownReason::NeedsBody). Use
+    /// returns [`BreakdownReason::NeedsBody`]. Use
     /// [`crate::bodies::PlanarImpact::resolve`] (or [`crate::planar::laws::Smith::centre`]).
     #[inline]
     pub fn resolve(self, problem: &ContactProblem) -> Resolution {
