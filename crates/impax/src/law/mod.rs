@@ -121,9 +121,9 @@ impl LawId {
             LawId::Whittaker => Whittaker.resolve(problem),
             LawId::TwoPhase => TwoPhase.resolve(problem),
             LawId::Smith => Smith::SLIP.resolve(problem),
-            LawId::SmithCentre => Err(crate::planar::Breakdown {
+            LawId::SmithCentre => Err(Breakdown {
                 law: self,
-                reason: crate::planar::BreakdownReason::NeedsBody,
+                reason: BreakdownReason::NeedsBody,
             }),
             LawId::Brach => Brach.resolve(problem),
             LawId::Newton => Newton.resolve(problem),

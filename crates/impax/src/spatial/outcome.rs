@@ -214,4 +214,4 @@ impl Outcome3 {
 }
 
 /// What a spatial law returns.
-pub type Resolution3 = Result<Outcome3, crate::planar::Breakdown>;
+pub type Resolution3 = Result<Outcome3, crate::law::Breakdown>;
