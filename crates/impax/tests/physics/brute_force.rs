@@ -23,7 +23,7 @@
 //! energies, relative to the size of the terms they are sums of (`|v⁻| + |W||p|`,
 //! `|v⁻||p| + ½|p|ᵀ|W||p|`, at least 1), which exceed the value by up to `cond W` and set
 //! the round-off of any evaluation. The largest deviation is printed
-//! (`cargo test --test brute_force -- --nocapture`).
+//! (`cargo test -p impax --test physics brute_force -- --nocapture`).
 
 use impax::math::SplitMix64;
 use impax::planar::{ContactProblem, LawDetail, Outcome};

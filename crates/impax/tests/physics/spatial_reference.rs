@@ -57,7 +57,7 @@
 //! zero (turned > 10° after σ fell below 1e-3 σ0), passed near zero (σ below 1e-3 σ0, then
 //! grew tenfold without a halt), second compression, no initial slip; each must reach its
 //! minimum. Counts and the largest deviations are printed
-//! (`cargo test --test spatial_reference -- --nocapture`). Debug-build cost: most of the
+//! (`cargo test -p impax --test physics spatial_reference -- --nocapture`). Debug-build cost: most of the
 //! time is the library's own integration (about 5 ms per law and problem unoptimised).
 
 use impax::math::SplitMix64;
