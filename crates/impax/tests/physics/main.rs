@@ -43,4 +43,5 @@ mod spatial_planar_embedding;
 mod spatial_properties;
 mod spatial_reference;
 mod spatial_validation;
+mod support;
 mod validation;

@@ -29,6 +29,7 @@
 //! round-off of evaluating it) — and agrees with the 60-digit solution to its conditioning.
 //! A randomized search over grazing strongly coupled problems finds a solution for every one.
 
+use crate::support::rotation;
 use impax::math::{Mat3, SplitMix64, Vec2, Vec3};
 use impax::planar::BreakdownReason;
 use impax::spatial::lcp::{solutions, LcpSolution3};
@@ -129,35 +130,6 @@ fn the_issue_problem_has_its_solution() {
     let terms = p.velocity().abs().dot(&pa) + 0.5 * pa.dot(&(p.w().abs() * pa));
     assert!((o.energy_change - p.energy_change(o.impulse)).abs() <= 1e-12 * terms);
     assert!(o.energy_change < 0.0);
-}
-
-/// A uniformly random rotation (from a random unit quaternion).
-fn rotation(rng: &mut SplitMix64) -> Mat3 {
-    loop {
-        let q = [
-            rng.range(-1.0, 1.0),
-            rng.range(-1.0, 1.0),
-            rng.range(-1.0, 1.0),
-            rng.range(-1.0, 1.0),
-        ];
-        let n2: f64 = q.iter().map(|x| x * x).sum();
-        if !(1e-3..=1.0).contains(&n2) {
-            continue;
-        }
-        let n = n2.sqrt();
-        let (w, x, y, z) = (q[0] / n, q[1] / n, q[2] / n, q[3] / n);
-        return Mat3::new(
-            1.0 - 2.0 * (y * y + z * z),
-            2.0 * (x * y - z * w),
-            2.0 * (x * z + y * w),
-            2.0 * (x * y + z * w),
-            1.0 - 2.0 * (x * x + z * z),
-            2.0 * (y * z - x * w),
-            2.0 * (x * z - y * w),
-            2.0 * (y * z + x * w),
-            1.0 - 2.0 * (x * x + y * y),
-        );
-    }
 }
 
 /// Grazing (`|v_n⁻|` from 1e-12 to 1e-3 of the slip) and strongly coupled (`W` one large
