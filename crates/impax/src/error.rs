@@ -112,6 +112,15 @@ pub enum Error {
         /// What went wrong.
         reason: String,
     },
+    /// A description that cannot be read (malformed TOML, a missing key, a value of the wrong
+    /// type, an unknown key), with the line and column of the problem when known.
+    #[error("{}{message}", .at.map_or(String::new(), |(l, c)| format!("{l}:{c}: ")))]
+    Syntax {
+        /// Line and column (1-based) of the problem.
+        at: Option<(usize, usize)>,
+        /// What is wrong.
+        message: String,
+    },
     /// Any other invalid description, e.g. a body shape with a missing parameter.
     #[error("{field}: {reason}")]
     Invalid {
@@ -135,6 +144,66 @@ impl Error {
             | Error::Invalid { field, .. } => field,
             Error::UnknownLaw { .. } => "law",
             Error::Integration { .. } => "integration",
+            Error::Syntax { .. } => "syntax",
+        }
+    }
+}
+
+impl Error {
+    /// The same error with its field named inside `prefix` (`mass` → `body.mass`): the field
+    /// as a file spells it when the error comes from one of its sections.
+    pub fn prefixed(self, prefix: &str) -> Self {
+        let name = |field: String| format!("{prefix}.{field}");
+        match self {
+            Error::NotFinite { field, value } => Error::NotFinite {
+                field: name(field),
+                value,
+            },
+            Error::OutOfRange {
+                field,
+                value,
+                reason,
+            } => Error::OutOfRange {
+                field: name(field),
+                value,
+                reason,
+            },
+            Error::NotSymmetric {
+                field,
+                upper,
+                lower,
+            } => Error::NotSymmetric {
+                field: name(field),
+                upper,
+                lower,
+            },
+            Error::NotPositiveDefinite { field, reason } => Error::NotPositiveDefinite {
+                field: name(field),
+                reason,
+            },
+            Error::NotApproaching { field, value } => Error::NotApproaching {
+                field: name(field),
+                value,
+            },
+            Error::Invalid { field, reason } => Error::Invalid {
+                field: name(field),
+                reason,
+            },
+            other => other,
+        }
+    }
+
+    /// A TOML error of `text` as [`Error::Syntax`], with the line and column of its span.
+    pub(crate) fn syntax(text: &str, err: &toml::de::Error) -> Self {
+        let at = err.span().map(|span| {
+            let before = &text[..span.start.min(text.len())];
+            let line = before.matches('\n').count() + 1;
+            let col = before.len() - before.rfind('\n').map_or(0, |i| i + 1) + 1;
+            (line, col)
+        });
+        Error::Syntax {
+            at,
+            message: err.message().replace('\n', " "),
         }
     }
 }

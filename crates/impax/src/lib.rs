@@ -37,6 +37,7 @@ pub mod mechanism;
 pub mod ode;
 pub mod paper;
 pub mod planar;
+pub mod scenario;
 pub mod simulation;
 pub mod spatial;
 

@@ -1,0 +1,41 @@
+//! Descriptions of systems as users write them (TOML files, command-line flags, Python and
+//! explorer arguments), read and checked once, here, for every front end.
+//!
+//! Today: the planar body scenario of `impax compare` — one striking body against a fixed
+//! surface, or two free bodies — with its TOML format ([`PlanarScenario::from_toml`]) and the
+//! builder of each body ([`BodySpec::build`]). The command line, the sweeps, the Python
+//! bindings and the explorer adapt these types rather than reading shapes themselves.
+//!
+//! ```toml
+//! friction = 0.4          # μ
+//! restitution = 0.7       # e
+//! laws = ["whittaker", "energetic"]   # optional; default: every law
+//!
+//! [body]                  # the striking body A (contact at its lowest point)
+//! shape = "sphere"        # sphere | disc | rod | ellipse | rigid
+//! mass = 1.0
+//! radius = 1.0            # sphere, disc
+//! # length = 2.0; angle_deg = 50        (rod: angle from the surface)
+//! # semi_axes = [2.0, 1.0]; angle_deg = 20   (ellipse: its a axis from the surface)
+//! # inertia = 0.5; contact = [0.3, -1.0]     (rigid: contact point from the centre, (t, n))
+//! speed = 1.0             # round bodies: v0, α, γ as in paper A …
+//! alpha_deg = 30.0
+//! spin_ratio = 0.0
+//! # velocity = [0.5, -0.866]; omega = 0.0   # … or the state directly (any shape)
+//!
+//! [other]                 # optional: a second free body B, struck at its highest point
+//! shape = "disc"
+//! mass = 2.0
+//! radius = 1.0
+//! velocity = [0.0, 0.0]
+//! omega = 0.0
+//! ```
+//!
+//! Unknown keys are errors; every error names its field as the file spells it (`body.radius`,
+//! `other.velocity`).
+
+mod body;
+mod planar;
+
+pub use body::{BodySpec, BuiltBody, Scale};
+pub use planar::{BuiltPlanar, PlanarScenario, SEED_TOML};
