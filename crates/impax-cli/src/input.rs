@@ -106,7 +106,7 @@ pub fn finite_flag(flag: &str, x: f64) -> CliResult<f64> {
     } else {
         Err(CliError::input(format!(
             "--{flag}: must be a finite number, got {}",
-            crate::fmt::Plain(x)
+            crate::output::fmt::Plain(x)
         )))
     }
 }

@@ -10,34 +10,13 @@
 //! page in the browser).
 //! Bad input of any kind prints one line on stderr and exits with code 2.
 
-mod animation;
-mod audit;
 mod cli;
-mod columns;
-mod compare;
-mod compare3;
-mod compare_mech;
-mod conserved;
+mod commands;
 pub mod contract;
-mod csv_rows;
-mod evaluate;
-mod explore;
-mod fmt;
 pub mod input;
-mod json;
-mod map;
-mod mechanism;
-mod paper;
-#[cfg(feature = "parquet")]
-mod parquet_out;
-mod plot;
-mod progress;
-mod resolve;
-mod scenario;
-mod simulate;
-mod space;
-mod sweep;
-mod template;
+mod output;
+mod pipeline;
+mod sources;
 
 use clap::Parser;
 use std::ffi::OsString;
@@ -91,15 +70,15 @@ where
     };
     let mut out = Vec::new();
     let result = match &cli.command {
-        cli::Command::Compare(args) => compare::run(args, &mut out),
-        cli::Command::Resolve(args) => resolve::run(args, &mut out),
-        cli::Command::Paper(args) => paper::run(args, &mut out),
-        cli::Command::Sweep(args) => sweep::run(args),
-        cli::Command::Map(args) => map::run(args, &mut out),
-        cli::Command::Explore(args) => explore::run(args, &mut out),
-        cli::Command::Conserved(args) => conserved::run(args, &mut out),
-        cli::Command::Simulate(args) => simulate::run(args, &mut out),
-        cli::Command::Audit(args) => audit::run(args, &mut out),
+        cli::Command::Compare(args) => commands::compare::run(args, &mut out),
+        cli::Command::Resolve(args) => commands::resolve::run(args, &mut out),
+        cli::Command::Paper(args) => commands::paper::run(args, &mut out),
+        cli::Command::Sweep(args) => commands::sweep::run(args),
+        cli::Command::Map(args) => commands::map::run(args, &mut out),
+        cli::Command::Explore(args) => commands::explore::run(args, &mut out),
+        cli::Command::Conserved(args) => commands::conserved::run(args, &mut out),
+        cli::Command::Simulate(args) => commands::simulate::run(args, &mut out),
+        cli::Command::Audit(args) => commands::audit::run(args, &mut out),
     };
     match result {
         Ok(()) => Invocation {

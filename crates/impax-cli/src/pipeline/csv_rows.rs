@@ -9,8 +9,8 @@
 //! the fast axis of a grid is formatted once per sweep ([`AxisTable`]). The bytes are the
 //! same as formatting every number anew.
 
-use crate::columns::{body_after, Column};
-use crate::evaluate::PointView;
+use crate::pipeline::columns::{body_after, Column};
+use crate::pipeline::evaluate::PointView;
 use impax::analysis::{ImpactSummary, Sequence, Space, Status};
 
 /// Bytes of a cell: the longest shortest-form `f64` (24 bytes, e.g.

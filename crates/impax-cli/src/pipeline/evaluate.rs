@@ -1,6 +1,6 @@
 //! One chunk of a sweep: points → contact problems → every law through the batch API.
 
-use crate::space::Setup;
+use crate::pipeline::space::Setup;
 use impax::analysis::{for_each_brief, resolve_problems, ImpactSummary, Tally};
 use impax::bodies::PlanarImpact;
 use impax::planar::ContactProblem;

@@ -12,10 +12,10 @@
 //! files as `impax compare` reads them.
 
 use crate::cli::{AuditArgs, CompareArgs};
-use crate::fmt::{signed, Table};
 use crate::input::{finite_flag, CliError, CliResult};
-use crate::json::{self, num};
-use crate::mechanism::{self, MechanismSpec};
+use crate::output::fmt::{signed, Table};
+use crate::output::json::{self, num};
+use crate::sources::mechanism::{self, MechanismSpec};
 use impax::mechanism::impact::MechanismImpact;
 use impax::mechanism::Mechanism;
 use impax::planar::{Breakdown, Verdict};
@@ -147,7 +147,7 @@ fn build(args: &AuditArgs) -> CliResult<Audit> {
             "--{flag}: only for a built-in scenario or a mechanism file; edit the body scenario file instead"
         )));
     }
-    if crate::compare3::is_spatial(&text) {
+    if crate::commands::compare::spatial::is_spatial(&text) {
         return spatial_audit(source, &text, args);
     }
     body_audit(source, args)
@@ -231,7 +231,7 @@ fn body_audit(source: &str, args: &AuditArgs) -> CliResult<Audit> {
         json: args.json,
         plot: None,
     };
-    let sc = crate::scenario::load(&compare)?;
+    let sc = crate::sources::scenario::load(&compare)?;
     let problem = sc.impact.problem(sc.friction, sc.restitution)?;
     let state = |s: &impax::bodies::BodyState2| vec![s.velocity.x, s.velocity.y, s.omega];
     let mut names: Vec<String> = ["vx", "vy", "omega"].map(String::from).to_vec();
@@ -270,7 +270,7 @@ fn body_audit(source: &str, args: &AuditArgs) -> CliResult<Audit> {
 
 /// A `space = "3d"` scenario file (`impax compare`'s format): the spatial laws.
 fn spatial_audit(source: &str, text: &str, args: &AuditArgs) -> CliResult<Audit> {
-    let (impact, desc, spec) = crate::compare3::load(source, text)?;
+    let (impact, desc, spec) = crate::commands::compare::spatial::load(source, text)?;
     let friction = args.friction.unwrap_or(spec.friction);
     let restitution = args.restitution.unwrap_or(spec.restitution);
     let problem = impact.problem(friction, restitution)?;
@@ -305,7 +305,7 @@ fn spatial_audit(source: &str, text: &str, args: &AuditArgs) -> CliResult<Audit>
         .iter()
         .map(|&law| {
             let r = impact.resolve(law, &problem);
-            let entry = crate::compare3::entry(&problem, law, &r, t0, two);
+            let entry = crate::commands::compare::spatial::entry(&problem, law, &r, t0, two);
             Row {
                 law,
                 result: r.map(|b| {
@@ -629,7 +629,7 @@ mod tests {
     /// `no-reference` was printed by `--json` but missing from the documented list of ids.
     #[test]
     fn every_verdict_id_is_documented() {
-        let ids = include_str!("../../../docs/src/reference/ids.md");
+        let ids = include_str!("../../../../docs/src/reference/ids.md");
         let start = ids.find("## Audit verdicts").expect("the audit verdicts");
         let end = start + ids[start..].find("\n## ").expect("the next section");
         let section = &ids[start..end];

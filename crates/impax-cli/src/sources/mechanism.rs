@@ -14,9 +14,9 @@
 //! position = [0.0]
 //! ```
 
-use crate::fmt::Plain;
+use crate::commands::simulate::MAX_ANGLE_DEG;
 use crate::input::{CliError, CliResult};
-use crate::simulate::MAX_ANGLE_DEG;
+use crate::output::fmt::Plain;
 use impax::mechanism::builtin::{
     BuiltIn, CartPendulum, DoublePendulum, RingPendulum, Rod, Sphere, STANDARD_GRAVITY,
 };

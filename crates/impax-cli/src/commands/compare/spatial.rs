@@ -22,10 +22,10 @@
 //! [other]                                # optional free body B, struck at its highest point
 //! ```
 
-use crate::fmt::{signed, Table};
 use crate::input::{CliError, CliResult};
-use crate::json::num;
-use crate::scenario::parse_laws;
+use crate::output::fmt::{signed, Table};
+use crate::output::json::num;
+use crate::sources::scenario::parse_laws;
 use impax::bodies::Side;
 use impax::bodies3::{self, BodyOutcome3, BodyState3, RigidBody3, SpatialImpact};
 use impax::math::{Mat3, Quat, UnitQuat, Vec3};
@@ -228,7 +228,7 @@ pub(crate) fn entry(
                 e["other_body_velocity_after"] = b.other_after.as_ref().map_or(Value::Null, state);
             }
             if law == LawId::Lcp {
-                e["all_solutions"] = crate::resolve::lcp_solutions(problem);
+                e["all_solutions"] = crate::commands::resolve::lcp_solutions(problem);
             }
             e
         }
@@ -315,7 +315,7 @@ pub fn run(
             }
         }
     }
-    let t0 = crate::scenario::reference_energy(
+    let t0 = crate::sources::scenario::reference_energy(
         &impax::bodies::EnergyParts {
             translational: ea.translational + eb.translational,
             rotational: ea.rotational + eb.rotational,

@@ -4,7 +4,7 @@
 
 use super::map::tick;
 use super::{err, text, DrawResult, Figure};
-use crate::simulate::Shape;
+use crate::commands::simulate::Shape;
 use impax::mechanism::builtin::BuiltIn;
 use impax::mechanism::{Mechanism, Pose};
 use impax::simulation::Run;

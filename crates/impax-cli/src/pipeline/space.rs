@@ -3,8 +3,8 @@
 
 use crate::cli::SpaceArgs;
 use crate::input::{CliError, CliResult};
-use crate::scenario::parse_laws;
-use crate::template::{Field, Template};
+use crate::pipeline::template::{Field, Template};
+use crate::sources::scenario::parse_laws;
 use impax::analysis::{Axis, Grid, RandomSamples, SampleRange, Space};
 use impax::LawId;
 

@@ -3,11 +3,11 @@
 //! value, its largest deviation and whether it is conserved (paper B).
 
 use crate::cli::ConservedArgs;
-use crate::fmt::{Plain, Table};
 use crate::input::{parse_numbers, CliError, CliResult};
-use crate::json::num;
-use crate::mechanism::{self, MechanismSpec};
-use crate::plot;
+use crate::output::fmt::{Plain, Table};
+use crate::output::json::num;
+use crate::output::plot;
+use crate::sources::mechanism::{self, MechanismSpec};
 use impax::math::Vec2;
 use impax::mechanism::conserved::{self, QuantityKind, Track, TrackOptions, Tracking};
 use impax::mechanism::Mechanism;

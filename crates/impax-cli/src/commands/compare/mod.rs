@@ -1,29 +1,33 @@
-//! `impax compare`: every law side by side on one body impact.
+//! `impax compare`: every law side by side on one body impact (planar here; a `space = "3d"`
+//! file in [`spatial`], a mechanism in [`mechanism`]).
+
+pub mod mechanism;
+pub mod spatial;
 
 use crate::cli::CompareArgs;
-use crate::fmt::{signed, Table};
 use crate::input::{CliError, CliResult};
-use crate::json;
-use crate::plot::{
+use crate::output::fmt::{signed, Table};
+use crate::output::json;
+use crate::output::plot::{
     self,
     energy::EnergyRow,
     routh::{LawPath, RouthFigure},
 };
-use crate::scenario::{self, Scenario};
+use crate::sources::scenario::{self, Scenario};
 use impax::planar::Verdict;
 use serde_json::json;
 
 pub fn run(args: &CompareArgs, out: &mut Vec<u8>) -> CliResult<()> {
     if let Some(path) = &args.scenario {
         let source = path.to_string_lossy();
-        if crate::mechanism::is_mechanism_name(&source) {
-            return crate::compare_mech::run(args, &source, out);
+        if crate::sources::mechanism::is_mechanism_name(&source) {
+            return crate::commands::compare::mechanism::run(args, &source, out);
         }
         if let Ok(text) = std::fs::read_to_string(path) {
-            if crate::mechanism::is_mechanism_toml(&text) {
-                return crate::compare_mech::run(args, &source, out);
+            if crate::sources::mechanism::is_mechanism_toml(&text) {
+                return crate::commands::compare::mechanism::run(args, &source, out);
             }
-            if crate::compare3::is_spatial(&text) {
+            if crate::commands::compare::spatial::is_spatial(&text) {
                 return run_spatial(args, &path.display().to_string(), &text, out);
             }
         }
@@ -267,5 +271,5 @@ fn run_spatial(args: &CompareArgs, source: &str, text: &str, out: &mut Vec<u8>) 
             )));
         }
     }
-    crate::compare3::run(source, text, &args.law, args.json, out)
+    crate::commands::compare::spatial::run(source, text, &args.law, args.json, out)
 }

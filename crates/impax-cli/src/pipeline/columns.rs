@@ -1,6 +1,6 @@
 //! The output columns of a sweep (CSV of `impax sweep`, quantities of `impax map`).
 
-use crate::evaluate::PointView;
+use crate::pipeline::evaluate::PointView;
 use impax::analysis::ImpactSummary;
 
 /// One output column after the swept fields and `law`.

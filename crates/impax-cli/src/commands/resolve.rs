@@ -1,10 +1,10 @@
 //! `impax resolve`: a planar contact-space problem directly.
 
 use crate::cli::ResolveArgs;
-use crate::fmt::{signed, Plain, Table};
 use crate::input::{finite_flag, parse_numbers, CliError, CliResult};
-use crate::json;
-use crate::scenario::parse_laws;
+use crate::output::fmt::{signed, Plain, Table};
+use crate::output::json;
+use crate::sources::scenario::parse_laws;
 use impax::planar::ContactProblem;
 use impax::spatial::{
     invariant_rays, sticking_ratio, ContactProblem3, Detail3, InvariantRays, Phase3Kind,

@@ -15,10 +15,10 @@
 //! ```
 
 use crate::cli::SimulateArgs;
-use crate::fmt::{signed, Plain, Table};
 use crate::input::{CliError, CliResult};
-use crate::json::num;
-use crate::plot;
+use crate::output::fmt::{signed, Plain, Table};
+use crate::output::json::num;
+use crate::output::plot;
 use impax::mechanism::builtin::STANDARD_GRAVITY;
 use impax::mechanism::Mechanism;
 use impax::simulation::scenarios::{self, Initial};
@@ -356,7 +356,7 @@ pub fn run(args: &SimulateArgs, out: &mut Vec<u8>) -> CliResult<()> {
         )?;
     }
     if let Some(path) = &args.animate {
-        let svg = crate::animation::svg(&case, &run);
+        let svg = crate::output::animation::svg(&case, &run);
         std::fs::write(path, svg).map_err(|e| {
             CliError::input(format!("--animate {}: cannot write: {e}", path.display()))
         })?;

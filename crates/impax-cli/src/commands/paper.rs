@@ -1,8 +1,8 @@
 //! `impax paper`: reproduction reports of the source papers.
 
 use crate::cli::PaperArgs;
-use crate::fmt::Table;
 use crate::input::{CliError, CliResult};
+use crate::output::fmt::Table;
 use impax::paper::liu2012::{self, Agreement};
 use serde_json::json;
 

@@ -18,7 +18,7 @@
 //! | `vx`, `vy`, `omega` | bodies given by their velocity | any |
 
 use crate::input::{CliError, CliResult};
-use crate::scenario::{build_body, parse_file, parse_laws, BodySpec};
+use crate::sources::scenario::{build_body, parse_file, parse_laws, BodySpec};
 use impax::bodies::{self, BodyState2, PlanarImpact, RigidBody2, Side};
 use impax::math::Vec2;
 use impax::planar::{ContactProblem, InverseInertia};
@@ -408,7 +408,7 @@ impl Template {
     pub fn load(path: Option<&Path>) -> CliResult<Self> {
         if let Some(p) = path {
             if let Ok(text) = std::fs::read_to_string(p) {
-                if crate::compare3::is_spatial(&text) {
+                if crate::commands::compare::spatial::is_spatial(&text) {
                     return Err(CliError::input(format!(
                         "{}: sweeps and maps are planar: a `space = \"3d\"` scenario cannot be swept yet",
                         p.display()
@@ -552,7 +552,7 @@ impl Template {
                 self.friction,
                 self.restitution,
             )?;
-            let t0 = crate::scenario::reference_energy(
+            let t0 = crate::sources::scenario::reference_energy(
                 &impax::bodies::EnergyParts {
                     translational: body.translational_energy(&state),
                     rotational: body.rotational_energy(&state),
@@ -575,8 +575,10 @@ impl Template {
             self.friction,
             self.restitution,
         )?;
-        let t0 =
-            crate::scenario::reference_energy(&impact.energy_before(), self.body.motion.field())?;
+        let t0 = crate::sources::scenario::reference_energy(
+            &impact.energy_before(),
+            self.body.motion.field(),
+        )?;
         problems.push(problem);
         t0s.push(t0);
         if let Some(v) = impacts {

@@ -7,7 +7,7 @@ use std::sync::Once;
 /// The family name every plot uses.
 pub const FAMILY: &str = "sans-serif";
 
-static FONT: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
+static FONT: &[u8] = include_bytes!("../../../assets/fonts/DejaVuSans.ttf");
 
 /// Register the font (once per process).
 pub fn register() {

@@ -6,13 +6,13 @@
 //! byte-identical for any `--threads`.
 
 use crate::cli::SweepArgs;
-use crate::columns::Column;
-use crate::csv_rows::{chunk_bytes, Rows, RowsSetup};
-use crate::evaluate::{self, ChunkNotes};
-use crate::fmt::Table;
 use crate::input::{CliError, CliResult};
-use crate::progress::Progress;
-use crate::space::{self, Setup};
+use crate::output::fmt::Table;
+use crate::pipeline::columns::Column;
+use crate::pipeline::csv_rows::{chunk_bytes, Rows, RowsSetup};
+use crate::pipeline::evaluate::{self, ChunkNotes};
+use crate::pipeline::progress::Progress;
+use crate::pipeline::space::{self, Setup};
 use impax::analysis::{run_ordered, run_ordered_waves, Sequence, Tally};
 use std::io::Write;
 use std::sync::Mutex;
@@ -115,7 +115,7 @@ fn parquet(args: &SweepArgs, setup: &Setup, columns: &[Column]) -> CliResult<()>
     let quiet = args.space.quiet;
     space::with_threads(args.space.threads, || {
         let progress = Progress::new(setup.space.len(), quiet);
-        let notes = crate::parquet_out::write(setup, columns, path, &progress)?;
+        let notes = crate::pipeline::parquet_out::write(setup, columns, path, &progress)?;
         progress.finish("sweep", setup.space.len(), setup.laws.len());
         note_invalid(setup, &notes, quiet);
         Ok(())

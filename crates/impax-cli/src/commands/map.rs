@@ -7,15 +7,15 @@
 //! compares them column by column.
 
 use crate::cli::MapArgs;
-use crate::columns::{body_after, Column};
-use crate::evaluate;
+use crate::commands::sweep::CHUNK_POINTS;
 use crate::input::{CliError, CliResult};
-use crate::plot::map::{Cells, MapAxis, MapFigure, Overlay};
-use crate::plot::{self, Format};
-use crate::progress::Progress;
-use crate::space::{self, Setup};
-use crate::sweep::CHUNK_POINTS;
-use crate::template::{Field, Param};
+use crate::output::plot::map::{Cells, MapAxis, MapFigure, Overlay};
+use crate::output::plot::{self, Format};
+use crate::pipeline::columns::{body_after, Column};
+use crate::pipeline::evaluate;
+use crate::pipeline::progress::Progress;
+use crate::pipeline::space::{self, Setup};
+use crate::pipeline::template::{Field, Param};
 use impax::analysis::{run_ordered, whittaker_sphere_thresholds, Axis, Sequence, Space, Status};
 use impax::planar::Verdict;
 use impax::LawId;

@@ -2,11 +2,11 @@
 //! (e.g. Kane & Levinson's double pendulum), with the kinetic energy before and after.
 
 use crate::cli::CompareArgs;
-use crate::fmt::{signed, Table};
 use crate::input::{CliError, CliResult};
-use crate::json::{self, num};
-use crate::mechanism::{self, MechanismCase, MechanismSpec};
-use crate::scenario::parse_laws;
+use crate::output::fmt::{signed, Table};
+use crate::output::json::{self, num};
+use crate::sources::mechanism::{self, MechanismCase, MechanismSpec};
+use crate::sources::scenario::parse_laws;
 use impax::mechanism::impact::{MechanismImpact, MechanismOutcome};
 use impax::mechanism::Mechanism;
 use impax::planar::Verdict;

@@ -1,7 +1,7 @@
 //! An animated SVG of a simulated motion (SMIL `<animate>` of each body's geometry, in real
 //! time or slowed to at least four seconds, looping), with the floor, the path traced, a clock bar and an energy bar.
 
-use crate::simulate::{Case, Shape};
+use crate::commands::simulate::{Case, Shape};
 use impax::mechanism::{Mechanism, Pose};
 use impax::simulation::Run;
 use std::fmt::Write;

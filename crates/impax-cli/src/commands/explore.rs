@@ -28,27 +28,27 @@ pub const ASSETS: [Asset; 5] = [
     Asset {
         name: "index.html",
         mime: "text/html; charset=utf-8",
-        bytes: include_bytes!("../../../web/index.html"),
+        bytes: include_bytes!("../../../../web/index.html"),
     },
     Asset {
         name: "style.css",
         mime: "text/css; charset=utf-8",
-        bytes: include_bytes!("../../../web/style.css"),
+        bytes: include_bytes!("../../../../web/style.css"),
     },
     Asset {
         name: "impax.js",
         mime: "text/javascript; charset=utf-8",
-        bytes: include_bytes!("../../../web/impax.js"),
+        bytes: include_bytes!("../../../../web/impax.js"),
     },
     Asset {
         name: "explorer.js",
         mime: "text/javascript; charset=utf-8",
-        bytes: include_bytes!("../../../web/explorer.js"),
+        bytes: include_bytes!("../../../../web/explorer.js"),
     },
     Asset {
         name: "impax_wasm.wasm",
         mime: "application/wasm",
-        bytes: include_bytes!("../../../web/impax_wasm.wasm"),
+        bytes: include_bytes!("../../../../web/impax_wasm.wasm"),
     },
 ];
 

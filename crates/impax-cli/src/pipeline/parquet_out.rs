@@ -6,12 +6,12 @@
 //! UTF-8 strings; every numeric output column as optional `DOUBLE` (null where the CSV cell
 //! is empty). Uncompressed (the crate is built without codecs, to stay light).
 
-use crate::columns::{body_after, Column};
-use crate::evaluate::{self, ChunkNotes};
+use crate::commands::sweep::CHUNK_POINTS;
 use crate::input::{CliError, CliResult};
-use crate::progress::Progress;
-use crate::space::Setup;
-use crate::sweep::CHUNK_POINTS;
+use crate::pipeline::columns::{body_after, Column};
+use crate::pipeline::evaluate::{self, ChunkNotes};
+use crate::pipeline::progress::Progress;
+use crate::pipeline::space::Setup;
 use impax::analysis::run_ordered;
 use parquet::basic::{LogicalType, Repetition, Type as PhysicalType};
 use parquet::data_type::{ByteArray, ByteArrayType, DoubleType};

@@ -1,0 +1,7 @@
+//! What the subcommands write: aligned tables and numbers ([`fmt`]), JSON records
+//! ([`json`]), plots ([`plot`]) and animations ([`animation`]).
+
+pub mod animation;
+pub mod fmt;
+pub mod json;
+pub mod plot;
