@@ -16,6 +16,7 @@ use crate::input::{finite_flag, CliError, CliResult};
 use crate::output::fmt::{signed, Table};
 use crate::output::json::{self, num};
 use crate::sources::mechanism::{self, MechanismSpec};
+use crate::sources::{File, Source};
 use impax::mechanism::impact::MechanismImpact;
 use impax::mechanism::Mechanism;
 use impax::planar::{Breakdown, Verdict};
@@ -124,7 +125,7 @@ fn build(args: &AuditArgs) -> CliResult<Audit> {
         let mut flags = mechanism_flags(args);
         flags.friction = Some(args.friction.unwrap_or(mu));
         flags.restitution = Some(args.restitution.unwrap_or(e));
-        return mechanism_audit(name, &flags);
+        return mechanism_audit(&Source::BuiltInMechanism(name.into()), &flags);
     }
     if impax::mechanism::builtin::BuiltIn::NAMES.contains(&source) {
         return Err(CliError::input(format!(
@@ -132,25 +133,29 @@ fn build(args: &AuditArgs) -> CliResult<Audit> {
             names()
         )));
     }
-    let text = std::fs::read_to_string(source).map_err(|e| {
+    let unreadable = |e| {
         CliError::input(format!(
             "scenario: `{source}` is neither a built-in scenario ({}) nor a readable file: {e}",
             names()
         ))
-    })?;
-    if mechanism::is_mechanism_toml(&text) {
-        return mechanism_audit(source, &mechanism_flags(args));
-    }
+    };
+    let file = match Source::classify(source, &[], unreadable)? {
+        Source::Mechanism(file) => {
+            return mechanism_audit(&Source::Mechanism(file), &mechanism_flags(args))
+        }
+        Source::Spatial(file) | Source::Planar(file) => file,
+        Source::BuiltInMechanism(_) => unreachable!("no built-in names were given"),
+    };
     let radius = args.radius.is_some().then_some("radius");
     if let Some(flag) = args.mechanism.first_given().or(radius) {
         return Err(CliError::input(format!(
             "--{flag}: only for a built-in scenario or a mechanism file; edit the body scenario file instead"
         )));
     }
-    if crate::commands::compare::spatial::is_spatial(&text) {
-        return spatial_audit(source, &text, args);
+    if crate::commands::compare::spatial::is_spatial(&file.text) {
+        return spatial_audit(&file.name, &file.text, args);
     }
-    body_audit(source, args)
+    body_audit(&file, args)
 }
 
 fn names() -> String {
@@ -174,8 +179,8 @@ fn mechanism_flags(args: &AuditArgs) -> MechanismSpec {
 }
 
 /// A built-in scenario or a mechanism TOML file, through the mechanism's contact problem.
-fn mechanism_audit(source: &str, flags: &MechanismSpec) -> CliResult<Audit> {
-    let spec = mechanism::load(source, flags)?;
+fn mechanism_audit(source: &Source, flags: &MechanismSpec) -> CliResult<Audit> {
+    let spec = mechanism::load_source(source, flags)?;
     // A file's `laws` are for `compare`; an audit always shows its own laws.
     let case = mechanism::build(&spec)?;
     if case.mechanism.contacts().is_empty() {
@@ -216,9 +221,9 @@ fn mechanism_audit(source: &str, flags: &MechanismSpec) -> CliResult<Audit> {
 }
 
 /// A body scenario file (`impax compare`'s format, planar).
-fn body_audit(source: &str, args: &AuditArgs) -> CliResult<Audit> {
+fn body_audit(file: &File, args: &AuditArgs) -> CliResult<Audit> {
     let compare = CompareArgs {
-        scenario: Some(source.into()),
+        scenario: Some(file.name.clone().into()),
         alpha_deg: None,
         restitution: args.restitution,
         friction: args.friction,
@@ -231,7 +236,7 @@ fn body_audit(source: &str, args: &AuditArgs) -> CliResult<Audit> {
         json: args.json,
         plot: None,
     };
-    let sc = crate::sources::scenario::load(&compare)?;
+    let sc = crate::sources::scenario::load(&compare, Some(file))?;
     let problem = sc.impact.problem(sc.friction, sc.restitution)?;
     let state = |s: &impax::bodies::BodyState2| vec![s.velocity.x, s.velocity.y, s.omega];
     let mut names: Vec<String> = ["vx", "vy", "omega"].map(String::from).to_vec();

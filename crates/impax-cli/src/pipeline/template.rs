@@ -19,6 +19,7 @@
 
 use crate::input::{CliError, CliResult};
 use crate::sources::scenario::{build_body, parse_file, parse_laws, BodySpec};
+use crate::sources::Source;
 use impax::bodies::{self, BodyState2, PlanarImpact, RigidBody2, Side};
 use impax::math::Vec2;
 use impax::planar::{ContactProblem, InverseInertia};
@@ -406,17 +407,29 @@ pub struct Template {
 impl Template {
     /// Load and validate a scenario file (default: the seed's sphere).
     pub fn load(path: Option<&Path>) -> CliResult<Self> {
-        if let Some(p) = path {
-            if let Ok(text) = std::fs::read_to_string(p) {
-                if crate::commands::compare::spatial::is_spatial(&text) {
-                    return Err(CliError::input(format!(
-                        "{}: sweeps and maps are planar: a `space = \"3d\"` scenario cannot be swept yet",
-                        p.display()
-                    )));
+        let file = match path {
+            None => None,
+            Some(p) => {
+                let unreadable =
+                    |e| CliError::input(format!("{}: cannot read scenario file: {e}", p.display()));
+                match Source::classify(&p.to_string_lossy(), &[], unreadable)? {
+                    Source::Planar(file) => Some(file),
+                    Source::Spatial(_) => {
+                        return Err(CliError::input(format!(
+                            "{}: sweeps and maps are planar: a `space = \"3d\"` scenario cannot be swept yet",
+                            p.display()
+                        )))
+                    }
+                    Source::Mechanism(_) | Source::BuiltInMechanism(_) => {
+                        return Err(CliError::input(format!(
+                            "{}: sweeps and maps take body scenarios: a mechanism cannot be swept yet",
+                            p.display()
+                        )))
+                    }
                 }
             }
-        }
-        let spec = parse_file(path)?;
+        };
+        let spec = parse_file(file.as_ref())?;
         build_body(&spec.body, "body", Side::Below)?;
         if let Some(o) = &spec.other {
             build_body(o, "other", Side::Above)?;

@@ -52,11 +52,6 @@ pub struct MechanismCase {
     pub description: String,
 }
 
-/// Whether `text` names a built-in mechanism that is not also a body scenario.
-pub fn is_mechanism_name(text: &str) -> bool {
-    ["double-pendulum", "ring-pendulum", "cart-pendulum"].contains(&text)
-}
-
 /// Whether a TOML text describes a mechanism (a top-level `mechanism` key).
 pub fn is_mechanism_toml(text: &str) -> bool {
     text.parse::<toml::Table>()
@@ -239,6 +234,21 @@ pub fn build(spec: &MechanismSpec) -> CliResult<MechanismCase> {
         }
     };
     Ok(case)
+}
+
+/// The spec of a classified mechanism source (a built-in's name, or a mechanism file read
+/// once), with the flags merged over it.
+pub fn load_source(source: &super::Source, flags: &MechanismSpec) -> CliResult<MechanismSpec> {
+    let mut spec = match source {
+        super::Source::BuiltInMechanism(name) => MechanismSpec {
+            mechanism: name.clone(),
+            ..MechanismSpec::default()
+        },
+        super::Source::Mechanism(file) => parse_file(Path::new(&file.name), &file.text)?,
+        _ => unreachable!("a body scenario is not a mechanism source"),
+    };
+    merge(&mut spec, flags);
+    Ok(spec)
 }
 
 /// The spec named by `source` (a built-in name or a TOML file), with the flags merged over it.

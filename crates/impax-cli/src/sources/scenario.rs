@@ -5,7 +5,6 @@ use crate::cli::CompareArgs;
 use crate::input::{finite_flag, CliError, CliResult};
 use impax::bodies::{BodyState2, PlanarImpact, RigidBody2, Side};
 use impax::LawId;
-use std::path::Path;
 
 pub use impax::scenario::{BodySpec, Scale};
 use impax::scenario::{PlanarScenario, SEED_TOML};
@@ -47,20 +46,20 @@ pub fn parse_laws(ids: &[String]) -> CliResult<Vec<LawId>> {
 }
 
 /// Read and parse a scenario file (or the seed's scenario).
-pub(crate) fn parse_file(path: Option<&Path>) -> CliResult<PlanarScenario> {
-    let (source, text) = match path {
-        Some(path) => (path.display().to_string(), read(path)?),
-        None => ("seed scenario".to_string(), SEED_TOML.to_string()),
+pub(crate) fn parse_file(file: Option<&super::File>) -> CliResult<PlanarScenario> {
+    let (source, text) = match file {
+        Some(f) => (f.name.as_str(), f.text.as_str()),
+        None => ("seed scenario", SEED_TOML),
     };
-    PlanarScenario::from_toml(&text).map_err(|e| match e {
+    PlanarScenario::from_toml(text).map_err(|e| match e {
         impax::Error::Syntax { at: Some(_), .. } => CliError::input(format!("{source}:{e}")),
         e => CliError::input(format!("{source}: {e}")),
     })
 }
 
 /// Load the scenario of `impax compare`: the file (or the seed), then the flags.
-pub fn load(args: &CompareArgs) -> CliResult<Scenario> {
-    let mut spec = parse_file(args.scenario.as_deref())?;
+pub fn load(args: &CompareArgs, file: Option<&super::File>) -> CliResult<Scenario> {
+    let mut spec = parse_file(file)?;
     // Flag overrides.
     if let Some(x) = args.friction {
         spec.friction = finite_flag("friction", x)?;
@@ -125,15 +124,6 @@ pub fn load(args: &CompareArgs) -> CliResult<Scenario> {
         description,
         scale,
         t0,
-    })
-}
-
-fn read(path: &Path) -> CliResult<String> {
-    std::fs::read_to_string(path).map_err(|e| {
-        CliError::input(format!(
-            "{}: cannot read scenario file: {e}",
-            path.display()
-        ))
     })
 }
 

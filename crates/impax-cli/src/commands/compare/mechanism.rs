@@ -7,6 +7,7 @@ use crate::output::fmt::{signed, Table};
 use crate::output::json::{self, num};
 use crate::sources::mechanism::{self, MechanismCase, MechanismSpec};
 use crate::sources::scenario::parse_laws;
+use crate::sources::Source;
 use impax::mechanism::impact::{MechanismImpact, MechanismOutcome};
 use impax::mechanism::Mechanism;
 use impax::planar::Verdict;
@@ -30,7 +31,7 @@ pub fn flags(args: &CompareArgs) -> MechanismSpec {
     }
 }
 
-pub fn run(args: &CompareArgs, source: &str, out: &mut Vec<u8>) -> CliResult<()> {
+pub fn run(args: &CompareArgs, source: &Source, out: &mut Vec<u8>) -> CliResult<()> {
     for (flag, given) in [
         ("alpha-deg", args.alpha_deg.is_some()),
         ("spin-ratio", args.spin_ratio.is_some()),
@@ -44,7 +45,7 @@ pub fn run(args: &CompareArgs, source: &str, out: &mut Vec<u8>) -> CliResult<()>
             )));
         }
     }
-    let spec = mechanism::load(source, &flags(args))?;
+    let spec = mechanism::load_source(source, &flags(args))?;
     let case = mechanism::build(&spec)?;
     let friction = spec.friction.unwrap_or(0.5);
     let restitution = spec.restitution.unwrap_or(0.5);

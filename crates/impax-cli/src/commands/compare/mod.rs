@@ -14,29 +14,37 @@ use crate::output::plot::{
     routh::{LawPath, RouthFigure},
 };
 use crate::sources::scenario::{self, Scenario};
+use crate::sources::Source;
+
+/// The mechanisms `impax compare` knows by name (a body scenario is a file or the seed).
+const MECHANISMS: [&str; 3] = ["double-pendulum", "ring-pendulum", "cart-pendulum"];
 use impax::planar::Verdict;
 use serde_json::json;
 
 pub fn run(args: &CompareArgs, out: &mut Vec<u8>) -> CliResult<()> {
-    if let Some(path) = &args.scenario {
-        let source = path.to_string_lossy();
-        if crate::sources::mechanism::is_mechanism_name(&source) {
-            return crate::commands::compare::mechanism::run(args, &source, out);
-        }
-        if let Ok(text) = std::fs::read_to_string(path) {
-            if crate::sources::mechanism::is_mechanism_toml(&text) {
-                return crate::commands::compare::mechanism::run(args, &source, out);
+    let file = match &args.scenario {
+        None => None,
+        Some(path) => {
+            let unreadable = |e| {
+                CliError::input(format!(
+                    "{}: cannot read scenario file: {e}",
+                    path.display()
+                ))
+            };
+            match Source::classify(&path.to_string_lossy(), &MECHANISMS, unreadable)? {
+                source @ (Source::BuiltInMechanism(_) | Source::Mechanism(_)) => {
+                    return mechanism::run(args, &source, out)
+                }
+                Source::Spatial(file) => return run_spatial(args, &file.name, &file.text, out),
+                Source::Planar(file) => Some(file),
             }
-            if crate::commands::compare::spatial::is_spatial(&text) {
-                return run_spatial(args, &path.display().to_string(), &text, out);
-            }
         }
-    }
+    };
     if let Some(path) = &args.plot {
         plot::Format::of("plot", path)?;
     }
     reject_mechanism_flags(args)?;
-    let sc = scenario::load(args)?;
+    let sc = scenario::load(args, file.as_ref())?;
     let problem = sc.impact.problem(sc.friction, sc.restitution)?;
     let results: Vec<_> = sc
         .laws
