@@ -63,10 +63,11 @@ mod angle;
 use super::invariant::{polish_ray, resumption_direction};
 use super::outcome::{Phase3Kind, Phases3};
 use super::ray_series::{Field, RaySeries};
-use super::rk::{dop853_step, error_measure, Dense, Step};
 use super::ContactProblem3;
 use crate::law::BreakdownReason;
 use crate::math::{norm_of, Mat2, Vec2, Vec3};
+use crate::numerics::dop853::{dop853_step, error_measure, Dense, Step};
+use crate::numerics::roots::{illinois, newton_from_seed};
 
 /// The termination rule of a Darboux–Keller law.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -204,91 +205,6 @@ impl Events {
     fn counts_compression(&self) -> bool {
         self.term == Termination::Poisson
     }
-}
-
-/// Find `θ ∈ (a, b]` with `g(θ) = 0` given `g(a) < 0 ≤ g(b)` (Illinois false position);
-/// returns the end of the final bracket where `g ≥ 0`.
-fn illinois(mut g: impl FnMut(f64) -> f64, a: f64, fa: f64, b: f64, fb: f64) -> f64 {
-    let (mut a, mut fa, mut b, mut fb) = (a, fa, b, fb);
-    let mut side = 0;
-    for _ in 0..100 {
-        if fb == 0.0 || (b - a).abs() <= 4.0 * f64::EPSILON * b.abs().max(a.abs()) {
-            break;
-        }
-        let mut c = (a * fb - b * fa) / (fb - fa);
-        if !(c > a.min(b) && c < a.max(b)) {
-            c = 0.5 * (a + b);
-        }
-        let fc = g(c);
-        if fc == 0.0 {
-            return c;
-        }
-        if (fc < 0.0) == (fa < 0.0) {
-            a = c;
-            fa = fc;
-            if side == -1 {
-                fb *= 0.5;
-            }
-            side = -1;
-        } else {
-            b = c;
-            fb = fc;
-            if side == 1 {
-                fa *= 0.5;
-            }
-            side = 1;
-        }
-    }
-    b
-}
-
-/// Find `θ ∈ (0, 1]` with `g(θ) = 0` given `g(0) < 0 ≤ g(1)`, starting from an estimate
-/// `seed` of the root and the slope `dg/dθ` there (both from the dense output). Newton's
-/// iteration with that slope (at most four evaluations of `g`) stops once its correction
-/// is below sixteen units in the last place of `θ`, returning the last point where `g` was
-/// evaluated. Otherwise the root is bracketed within `±1e-9` of the seed (two evaluations),
-/// where the Illinois iteration converges in a few steps; if the seed is off, the search
-/// falls back to the remaining part of `[0, 1]`.
-fn locate(mut g: impl FnMut(f64) -> f64, g0: f64, g1: f64, seed: f64, slope: f64) -> f64 {
-    const DELTA: f64 = 1e-9;
-    if !(seed > 0.0 && seed < 1.0) {
-        return illinois(g, 0.0, g0, 1.0, g1);
-    }
-    if slope > 0.0 && slope.is_finite() {
-        let mut th = seed;
-        for _ in 0..4 {
-            let gt = g(th);
-            if gt == 0.0 {
-                return th;
-            }
-            let next = th - gt / slope;
-            if !(next > 0.0 && next <= 1.0) {
-                break;
-            }
-            if (next - th).abs() <= 16.0 * f64::EPSILON * th {
-                return th;
-            }
-            th = next;
-        }
-    }
-    let lo = (seed - DELTA).max(0.0);
-    let hi = (seed + DELTA).min(1.0);
-    let f_lo = if lo > 0.0 { g(lo) } else { g0 };
-    if f_lo >= 0.0 {
-        return illinois(g, 0.0, g0, lo, f_lo);
-    }
-    let f_hi = if hi < 1.0 { g(hi) } else { g1 };
-    if f_hi < 0.0 {
-        return illinois(g, hi, f_hi, 1.0, g1);
-    }
-    illinois(g, lo, f_lo, hi, f_hi)
-}
-
-/// The root of `g` on `[0, 1]` (with `g(0) = g0 < 0 ≤ g(1) = g1`) by the Illinois
-/// iteration on a cheap approximation of `g` (the dense output); no evaluation of the
-/// stepper.
-fn dense_root(g: impl FnMut(f64) -> f64, g0: f64, g1: f64) -> f64 {
-    illinois(g, 0.0, g0, 1.0, g1)
 }
 
 /// Scales for the error control, each of its own quantity (the slip and the normal velocity
@@ -910,11 +826,11 @@ fn locate_in_step<const N: usize>(
     }
     let dense = Dense::new(f, x0, y0, st, k1, h);
     let dense_g = |th: f64| event_value(ev, kind, &point(x0 + th * h, &dense.at(th)));
-    let seed = dense_root(dense_g, ga, gb);
+    let seed = illinois(dense_g, 0.0, ga, 1.0, gb);
     let (a, b) = ((seed - 1e-6).max(0.0), (seed + 1e-6).min(1.0));
     let slope = (dense_g(b) - dense_g(a)) / (b - a);
     let mut last = (f64::NAN, *y0);
-    let theta = locate(
+    let theta = newton_from_seed(
         |th| {
             let yt = dop853_step(f, x0, y0, k0, th * h).y;
             last = (th, yt);

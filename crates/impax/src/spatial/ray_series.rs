@@ -37,6 +37,7 @@
 //! halt is the ray's angle `φ*` itself.
 
 use crate::math::{Mat2, Vec2};
+use crate::numerics::roots::newton_in_bracket;
 
 /// Number of series terms (`ξ⁰ … ξ^(TERMS−1)`).
 pub(crate) const TERMS: usize = 20;
@@ -152,44 +153,8 @@ impl Field {
 
     /// The root of `f` in the bracket `[a, b]` (`f(a)`, `f(b)` of opposite signs).
     fn polish(&self, a: f64, fa: f64, b: f64) -> f64 {
-        polish_in_bracket(|x| self.f_df(x), a, fa, b, 0.5 * (a + b))
+        newton_in_bracket(|x| self.f_df(x), a, fa, b, 0.5 * (a + b))
     }
-}
-
-/// The root of a function with value and derivative `f_df` in the bracket `[a, b]` (`f(a)`
-/// of the sign `fa`, `f(b)` of the other), from `x` inside it: Newton's method kept inside
-/// the shrinking bracket (bisection where a step would leave it), to the last bit.
-pub(crate) fn polish_in_bracket(
-    f_df: impl Fn(f64) -> (f64, f64),
-    mut a: f64,
-    mut fa: f64,
-    mut b: f64,
-    mut x: f64,
-) -> f64 {
-    for _ in 0..60 {
-        let (fx, dfx) = f_df(x);
-        if fx == 0.0 {
-            return x;
-        }
-        if (fx < 0.0) == (fa < 0.0) {
-            a = x;
-            fa = fx;
-        } else {
-            b = x;
-        }
-        let newton = x - fx / dfx;
-        // Converged (checked before the bracket test: at the root the step is nil and the
-        // point sits on the bracket's end).
-        if (newton - x).abs() <= 2.0 * f64::EPSILON * x.abs().max(1.0) {
-            return newton;
-        }
-        x = if newton > a.min(b) && newton < a.max(b) {
-            newton
-        } else {
-            0.5 * (a + b)
-        };
-    }
-    x
 }
 
 /// `Σ_{j=1}^{n−1} a_j b_{n−j}` (the coefficient of `ξⁿ` in a product of series, less the

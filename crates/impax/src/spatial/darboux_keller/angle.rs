@@ -25,7 +25,7 @@
 //! the direction through a near-zero pass, the approach to a halt, a slip leaving a ray or
 //! growing along one, a nearly frozen slip alike. The only nonlinear equation (the
 //! direction's) is solved by the map itself; `u`, then `p_n`, `v_n`, `p_t`, `W_t` and `W_n`
-//! are integrals on 17-node Chebyshev–Lobatto panels ([`crate::spatial::chebyshev`]), whose
+//! are integrals on 17-node Chebyshev–Lobatto panels ([`crate::numerics::chebyshev`]), whose
 //! length follows the size of the last Chebyshev coefficients of the integrands; the
 //! cumulative ones (at every node) only where an event can read them. Events are located on
 //! the panel's interpolants. The two rays are found by scans outward from the slip's
@@ -50,9 +50,10 @@ use super::{
 };
 use crate::law::BreakdownReason;
 use crate::math::{Mat2, Vec2, Vec3};
-use crate::spatial::chebyshev::{dot, lobatto, M, N};
+use crate::numerics::chebyshev::{dot, lobatto, M, N};
+use crate::numerics::roots::{newton_crossing, newton_in_bracket};
 use crate::spatial::outcome::Phase3Kind;
-use crate::spatial::ray_series::{polish_in_bracket, Field};
+use crate::spatial::ray_series::Field;
 use std::f64::consts::TAU;
 
 /// The two invariant rays around a direction `φ0` that is on none: the nearest roots of `f`
@@ -220,7 +221,7 @@ impl Roots {
 }
 
 /// The root of `f` between `a` and `b` (`f` of opposite signs there): from a Newton step
-/// off the end with the smaller `|f|` (or the secant point), [`polish_in_bracket`].
+/// off the end with the smaller `|f|` (or the secant point), [`newton_in_bracket`].
 fn polish(
     k: (f64, f64, f64, f64),
     (a, fa, da): (f64, f64, f64),
@@ -237,7 +238,7 @@ fn polish(
     if !(x > a.min(b) && x < a.max(b)) {
         x = a - fa * (b - a) / (fb - fa);
     }
-    polish_in_bracket(
+    newton_in_bracket(
         |x| {
             let (s, c) = x.sin_cos();
             f_df_at(k, c, s)
@@ -247,46 +248,6 @@ fn polish(
         b,
         x,
     )
-}
-
-/// The crossing of an event function `g` (with its rate `g'`, from `g_dg`) through zero in
-/// `(a, b]`, given `g(a) < 0 ≤ g(b)`: Newton's method from the secant point, kept inside the
-/// shrinking bracket (bisection where a step would leave it). Returns a point where `g ≥ 0`
-/// within `4ε` of the crossing (the end of the final bracket; `t ∈ [−1, 1]`).
-fn crossing(g_dg: impl Fn(f64) -> (f64, f64), a: f64, ga: f64, b: f64, gb: f64) -> f64 {
-    let (mut a, mut b) = (a, b);
-    let mut t = a - ga * (b - a) / (gb - ga);
-    for _ in 0..60 {
-        if !(t > a && t < b) {
-            t = 0.5 * (a + b);
-        }
-        let (g, dg) = g_dg(t);
-        if g >= 0.0 {
-            b = t;
-        } else {
-            a = t;
-        }
-        // (The panel's variable is in [−1, 1].)
-        let tol = 4.0 * f64::EPSILON;
-        if b - a <= tol {
-            return b;
-        }
-        let step = g / dg;
-        t = if !step.is_finite() {
-            // No usable rate: bisect (at the top of the loop).
-            f64::NAN
-        } else if step.abs() <= tol {
-            // At the crossing to round-off: close the bracket from the side still open.
-            if g >= 0.0 {
-                t - tol
-            } else {
-                t + tol
-            }
-        } else {
-            t - step
-        };
-    }
-    b
 }
 
 /// One invariant ray with the coefficients of `f`'s expansion about it.
@@ -731,7 +692,7 @@ pub(super) fn run(
                         // (A later compression that began at v_n = 0 exactly ends at once.)
                         return lo;
                     }
-                    crossing(
+                    newton_crossing(
                         |t| {
                             let l = lb.basis(t);
                             (
@@ -1008,35 +969,5 @@ mod tests {
             }
         }
         assert!(checked > 1000, "{checked} checked");
-    }
-
-    /// Events: the crossing is found within 4ε of the root of an increasing function, and of
-    /// one that is not monotone in the bracket, always on the side where `g ≥ 0`.
-    #[test]
-    fn the_crossing_is_located_to_round_off_on_its_far_side() {
-        let mut g = SplitMix64(0xbb67_ae85_84ca_a73b);
-        for _ in 0..2000 {
-            let root = g.range(-0.9, 0.9);
-            let k = g.range(0.1, 10.0);
-            // (|wiggle (t − root)| < 1: one root, and g' changes sign for the larger ones.)
-            let wiggle = g.range(0.0, 0.5);
-            let f = |t: f64| {
-                (
-                    k * (t - root) + wiggle * k * (t - root) * (t - root) * (3.0 * t).cos(),
-                    k + wiggle
-                        * k
-                        * (2.0 * (t - root) * (3.0 * t).cos()
-                            - 3.0 * (t - root) * (t - root) * (3.0 * t).sin()),
-                )
-            };
-            let (a, b) = (-1.0, 1.0);
-            let (fa, fb) = (f(a).0, f(b).0);
-            if !(fa < 0.0 && fb >= 0.0) {
-                continue;
-            }
-            let t = crossing(f, a, fa, b, fb);
-            assert!(f(t).0 >= 0.0, "g({t}) < 0");
-            assert!((t - root).abs() <= 8.0 * f64::EPSILON, "{t} vs {root}");
-        }
     }
 }
