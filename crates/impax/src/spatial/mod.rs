@@ -16,7 +16,6 @@ pub mod laws;
 pub mod lcp;
 mod outcome;
 mod problem;
-mod ray_series;
 
 pub use darboux_keller::SpatialOptions;
 pub use invariant::{
