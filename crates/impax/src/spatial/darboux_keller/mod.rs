@@ -13,33 +13,33 @@
 //!    dW_n/dp_n = v_n,  dW_t/dp_n = −μ |v_t|.
 //!    ```
 //!    The direction field is singular at `σ = |v_t| → 0`, where steps in `p_n` must shrink
-//!    with `σ`, so the independent variable changes with the slip (`slip`):
+//!    with `σ`, so the independent variable changes with the slip (module `slip`):
 //!    * first choice wherever the slip turns or shrinks appreciably before the next normal
 //!      event: the angle variable `x = ln(sin(δ_b/2)/sin(δ_a/2))` between the invariant rays
-//!      behind and ahead of the direction (`angle`), in which the direction equation is
-//!      solved by the map and every other quantity is a quadrature on Chebyshev panels —
+//!      behind and ahead of the direction (module `angle`), in which the direction equation
+//!      is solved by the map and every other quantity is a quadrature on Chebyshev panels —
 //!      smooth through near-zero passes, halts, nearly frozen slips; it hands back to the
 //!      variables below only where it cannot apply (the slip on a ray to round-off, or the
 //!      direction barely turning before the next event);
-//!    * otherwise `p_n` itself (`p_n`), by an adaptive explicit Runge–Kutta pair of order 8
-//!      with error estimators of orders 5 and 3 (DOP853, Hairer, Nørsett & Wanner, *Solving
-//!      ODEs I*, §II.5);
+//!    * otherwise the normal impulse itself (module `p_n`), by an adaptive explicit
+//!      Runge–Kutta pair of order 8 with error estimators of orders 5 and 3 (DOP853, Hairer,
+//!      Nørsett & Wanner, *Solving ODEs I*, §II.5);
 //!    * as soon as the slip shrinks steadily (`ŝ·g < −0.9 |g|`: near a centripetal invariant
-//!      ray, or on an inward spiral), whatever its size, `u = ln σ` (`log_sigma`),
+//!      ray, or on an inward spiral), whatever its size, `u = ln σ` (module `log_sigma`),
 //!      decreasing, in which the system is smooth all the way:
 //!      ```text
 //!      dφ/du = (ŝ × g)/(ŝ·g),  dp_n/du = σ/(ŝ·g),  d(·)/du = d(·)/dp_n · dp_n/du,
 //!      ```
-//!      until the series about the centripetal ray ahead (`ray_series`: the normal form of
-//!      the direction flow, every quadrature in closed form term by term) gives the whole
-//!      rest of the slip, the halt at the ray's angle and any event before it to the
-//!      tolerance (`tail`); where that series does not converge (a weakly attracting ray),
-//!      until `σ` has shrunk by `e⁻⁴⁰`, the remaining impulse `σ/|ŝ·g|` then added in closed
-//!      form;
+//!      until the series about the centripetal ray ahead (module `ray_series`: the normal
+//!      form of the direction flow, every quadrature in closed form term by term) gives the
+//!      whole rest of the slip, the halt at the ray's angle and any event before it to the
+//!      tolerance (module `tail`); where that series does not converge (a weakly attracting
+//!      ray), until `σ` has shrunk by `e⁻⁴⁰`, the remaining impulse `σ/|ŝ·g|` then added in
+//!      closed form;
 //!    * once the slip is small (below `σ⁻/20`) and not shrinking steadily, or on leaving `u`
 //!      (`ŝ·g ≥ −0.7 |g|`: the direction swings while the slip passes near zero), the
-//!      pseudo-time `τ` with `dp_n = σ dτ` (`tau`), in which the system has no division and
-//!      is smooth away from `v_t = 0` itself:
+//!      pseudo-time `τ` with `dp_n = σ dτ` (module `tau`), in which the system has no
+//!      division and is smooth away from `v_t = 0` itself:
 //!      ```text
 //!      dv_t/dτ = σ w_tn − μ W_tt v_t,  dv_n/dτ = σ w_nn − μ w_tn·v_t,  dp_n/dτ = σ,
 //!      dp_t/dτ = −μ v_t,  dW_n/dτ = σ v_n,  dW_t/dτ = −μ σ²,
@@ -48,20 +48,21 @@
 //!      when the slip shrinks steadily again, to `p_n` once it has grown past `σ⁻/10`.
 //!
 //!    Once the direction is on an invariant ray to the last bit of the result, the rest of
-//!    the slip is straight, in closed form (`tail`). No small epsilon decides the halt.
+//!    the slip is straight, in closed form (module `tail`). No small epsilon decides the
+//!    halt.
 //! 2. **Stick** if `|W_tt⁻¹ w_tn| ≤ μ`: `dv_n/dp_n = w_nn − w_tnᵀ W_tt⁻¹ w_tn`, linear
-//!    (`linear`);
+//!    (module `linear`);
 //! 3. otherwise **resumed slip** at once along the unique centrifugal invariant ray
 //!    `(λ' I + μ W_tt) ŝ = w_tn`, `λ' > 0` ([`resumption_direction`]): straight, linear.
 //!
-//! Events (`events`): the end of compression (`v_n = 0`), the termination of the law
+//! Events (module `events`): the end of compression (`v_n = 0`), the termination of the law
 //! ([`Termination`]), and a second compression (jamb: `v_n` falls back to zero after
 //! compression ended; reported; for `poisson` every return to compression and its end).
-//! Each is located on the discrete solution by re-stepping from the step's start (`step`:
-//! Illinois iteration, seeded by the seventh-order dense output of the step and started on a
-//! bracket of ±1e-9 of the step around the seed), on a panel's interpolants in the angle
-//! variable, or on the series, to near machine precision; on the straight pieces they are
-//! exact.
+//! Each is located on the discrete solution by re-stepping from the step's start (module
+//! `step`: Illinois iteration, seeded by the seventh-order dense output of the step and
+//! started on a bracket of ±1e-9 of the step around the seed), on a panel's interpolants in
+//! the angle variable, or on the series, to near machine precision; on the straight pieces
+//! they are exact.
 //!
 //! ## Layout
 //!
@@ -71,12 +72,12 @@
 //! |---|---|
 //! | `state.rs` | the moving point of the path, the error scales, how the slip ended |
 //! | `events.rs` | the event functions, which comes first, what each records |
-//! | `linear.rs` | the straight pieces in closed form: stick, resumed slip, frictionless, a slip too fast to turn |
+//! | `linear.rs` | the straight pieces: stick, resumed slip, frictionless, unturnable slip |
 //! | `slip.rs` | the initial slip: its data and the hand-over between its variables |
 //! | `step.rs` | one adaptive DOP853 step in a slip variable, with event location |
-//! | `p_n.rs`, `log_sigma.rs`, `tau.rs` | each slip variable: its state, right-hand side, tolerances and run |
-//! | `angle.rs` | the slip in the angle variable, on Chebyshev panels |
-//! | `field.rs` | the direction field of the slip and the invariant rays around a direction |
+//! | `p_n.rs`, `log_sigma.rs`, `tau.rs` | a slip variable each: state, right-hand side, run |
+//! | `angle/` | the slip in the angle variable: the sweep by panels, the half-angle map |
+//! | `field.rs` | the direction field of the slip, the invariant rays around a direction |
 //! | `tail.rs` | the closed-form ends of a slip on or near an invariant ray |
 //! | `ray_series.rs` | the series about an invariant ray |
 //!

@@ -8,17 +8,17 @@
 //! singular at `σ = |v_t| → 0`, where steps in `p_n` must shrink with `σ`. The stage runs in
 //! whichever variable keeps the system smooth and hands over between them here:
 //!
-//! * the angle variable (`angle`) first, wherever the slip turns or shrinks appreciably
+//! * the angle variable (module `angle`) first, wherever the slip turns or shrinks appreciably
 //!   before the next normal event ([`Slip::turns_before_event`]), tried again a few steps
 //!   after it handed back;
-//! * `p_n` (`p_n`) otherwise;
-//! * `u = ln σ` (`log_sigma`) as soon as the slip shrinks steadily (`ŝ·g < −0.9 |g|`), until
+//! * the normal impulse itself (module `p_n`) otherwise;
+//! * `u = ln σ` (module `log_sigma`) as soon as the slip shrinks steadily (`ŝ·g < −0.9 |g|`), until
 //!   it no longer does (`ŝ·g ≥ −0.7 |g|`);
-//! * the pseudo-time `τ`, `dp_n = σ dτ` (`tau`), once the slip is small (below `σ⁻/20`) and
+//! * the pseudo-time `τ`, `dp_n = σ dτ` (module `tau`), once the slip is small (below `σ⁻/20`) and
 //!   not shrinking steadily, back to `p_n` once it has grown past `σ⁻/10`.
 //!
 //! Wherever the slip is on an invariant ray or near a centripetal one, its rest is in
-//! closed form (`tail`). No small epsilon decides the halt.
+//! closed form (module `tail`). No small epsilon decides the halt.
 
 use super::events::Events;
 use super::field::Field;

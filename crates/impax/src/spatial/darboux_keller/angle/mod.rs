@@ -211,8 +211,9 @@ impl Sweep {
     }
 }
 
-/// One panel `[x, x + h]` of the sweep that passed the error test: its nodes, the integrands
-/// at them and the integrals the events and the next panel read.
+/// One panel `[x, x + h]` of the sweep: its nodes, the integrands at them and the integrals
+/// the events and the next panel read. (A workspace filled in place, panel after panel: the
+/// arrays are not moved.)
 struct Panel {
     /// The point at the panel's start.
     base: Point,
@@ -238,24 +239,53 @@ struct Panel {
     /// The cumulative integral of `dv_n/dx`, and `v_n` at the nodes.
     cv: [f64; M],
     vn: [f64; M],
-    /// The error estimate (at most 1).
+    /// The error estimate (at most 1 once the panel is accepted).
     err: f64,
 }
 
 impl Panel {
-    /// The next panel of `sw` from the point `base` at its start, if it passes the error
-    /// test; otherwise the factor on the width to try again with.
-    fn build(slip: &Slip, sw: &Sweep, base: Point) -> Result<Panel, f64> {
+    /// A workspace for the panels of the sweep from `pt` (the node `n0` at its start).
+    fn new(pt: Point, n0: Node) -> Panel {
+        Panel {
+            base: pt,
+            x: 0.0,
+            xc: 0.0,
+            half: 0.0,
+            u0: 0.0,
+            ex: [0.0; M],
+            nodes: [n0; M],
+            sig: [0.0; M],
+            cu: [0.0; M],
+            dp: [0.0; M],
+            d1: [0.0; M],
+            d2: [0.0; M],
+            dw: [0.0; M],
+            dv: [0.0; M],
+            dn: [0.0; M],
+            cv: [0.0; M],
+            vn: [0.0; M],
+            err: f64::NAN,
+        }
+    }
+
+    /// The next panel of `sw` from the point `base` at its start: `Ok` if it passes the
+    /// error test, otherwise the factor on the width to try again with.
+    fn build(&mut self, slip: &Slip, sw: &Sweep, base: Point) -> Result<(), f64> {
         let (lb, rtol, field) = (lobatto(), slip.sc.rtol, &slip.field);
         let (x, h, u0, fan) = (sw.x, sw.h, sw.u0, &sw.fan);
         let half = 0.5 * h;
-        let mut nodes = [sw.n0; M];
+        (self.base, self.x, self.half, self.u0) = (base, x, half, u0);
+        self.nodes[0] = sw.n0;
         let xc = x + half;
-        let ex = node_exponentials(xc, half, &lb.t);
-        for (j, nd) in nodes.iter_mut().enumerate().skip(1) {
+        self.xc = xc;
+        self.ex = node_exponentials(xc, half, &lb.t);
+        for (j, nd) in self.nodes.iter_mut().enumerate().skip(1) {
             let xj = x + half * (1.0 + lb.t[j]);
-            *nd = fan.node_with(field, xj, e_abs(xj, xc, ex[j])).ok_or(0.25)?;
+            *nd = fan
+                .node_with(field, xj, e_abs(xj, xc, self.ex[j]))
+                .ok_or(0.25)?;
         }
+        let nodes = &self.nodes;
         let du: [f64; M] = std::array::from_fn(|j| nodes[j].q * nodes[j].rho);
         // The error test on `u` first (part of the test below): a panel that fails it is
         // rejected before `σ` and the quadratures are formed.
@@ -264,34 +294,38 @@ impl Panel {
             return Err(reject_factor(err_u));
         }
         let cu = lb.cumulative(&du);
-        let sig: [f64; M] = std::array::from_fn(|j| {
+        self.sig = std::array::from_fn(|j| {
             if j == 0 {
                 norm_of(base.vt)
             } else {
                 (u0 + half * cu[j]).exp()
             }
         });
-        let dp: [f64; M] = std::array::from_fn(|j| sig[j] * nodes[j].rho);
-        let d1: [f64; M] = std::array::from_fn(|j| nodes[j].s.x * dp[j]);
-        let d2: [f64; M] = std::array::from_fn(|j| nodes[j].s.y * dp[j]);
-        let dw: [f64; M] = std::array::from_fn(|j| sig[j] * dp[j]);
+        self.cu = cu;
+        let (sig, nodes) = (&self.sig, &self.nodes);
+        self.dp = std::array::from_fn(|j| sig[j] * nodes[j].rho);
+        let dp = &self.dp;
+        self.d1 = std::array::from_fn(|j| nodes[j].s.x * dp[j]);
+        self.d2 = std::array::from_fn(|j| nodes[j].s.y * dp[j]);
+        self.dw = std::array::from_fn(|j| sig[j] * dp[j]);
         // dv_n = (w_nn − μ w_tn·ŝ) dp_n.
-        let dv: [f64; M] =
-            std::array::from_fn(|j| (slip.wnn - slip.mu * slip.wtn.dot(&nodes[j].s)) * dp[j]);
-        let cv = lb.cumulative(&dv);
-        let vn: [f64; M] = std::array::from_fn(|j| {
+        self.dv = std::array::from_fn(|j| (slip.wnn - slip.mu * slip.wtn.dot(&nodes[j].s)) * dp[j]);
+        self.cv = lb.cumulative(&self.dv);
+        let cv = &self.cv;
+        self.vn = std::array::from_fn(|j| {
             if j == 0 {
                 base.vn
             } else {
                 base.vn + half * cv[j]
             }
         });
-        let dn: [f64; M] = std::array::from_fn(|j| vn[j] * dp[j]);
+        let vn = &self.vn;
+        self.dn = std::array::from_fn(|j| vn[j] * dp[j]);
         // The error test: the last Chebyshev coefficients of each integrand against the
         // tolerance on `u` (absolute: relative on σ; tested above) and relative on every
         // other quantity (its value at the start plus the size of its increment over the
         // panel). (`k` is the factor of the integral in the quantity.)
-        let (tails, sizes) = lb.tails_and_sizes([&dp, &d1, &d2, &dw, &dn]);
+        let (tails, sizes) = lb.tails_and_sizes([&self.dp, &self.d1, &self.d2, &self.dw, &self.dn]);
         let rel = |i: usize, at: f64, k: f64| {
             k * half * tails[i] / (rtol * (at.abs() + k * h * sizes[i]))
         };
@@ -301,29 +335,11 @@ impl Panel {
             .max(rel(2, base.pt.y, slip.mu))
             .max(rel(3, base.wt, slip.mu))
             .max(rel(4, base.wn, 1.0));
+        self.err = err;
         if !(err <= 1.0) {
             return Err(reject_factor(err));
         }
-        Ok(Panel {
-            base,
-            x,
-            xc,
-            half,
-            u0,
-            ex,
-            nodes,
-            sig,
-            cu,
-            dp,
-            d1,
-            d2,
-            dw,
-            dv,
-            dn,
-            cv,
-            vn,
-            err,
-        })
+        Ok(())
     }
 
     /// Walk the panel node by node: every event on the panel's interpolants located
@@ -476,6 +492,7 @@ pub(super) fn run(
         Err(exit) => return Ok(exit),
     };
     let mut series = TailSeries::with_ray(sw.fan.ahead.phi, sw.fan.ahead.dir);
+    let mut panel = Panel::new(*pt, sw.n0);
     loop {
         if *steps >= slip.max_steps {
             return Err(BreakdownReason::NoSeparation);
@@ -497,16 +514,13 @@ pub(super) fn run(
             // better variable.
             return Ok(Exit::Handoff);
         }
-        let panel = match Panel::build(slip, &sw, base) {
-            Ok(panel) => panel,
-            Err(factor) => {
-                sw.h *= factor;
-                if sw.h < 1e-6 {
-                    return Ok(Exit::Handoff);
-                }
-                continue;
+        if let Err(factor) = panel.build(slip, &sw, base) {
+            sw.h *= factor;
+            if sw.h < 1e-6 {
+                return Ok(Exit::Handoff);
             }
-        };
+            continue;
+        }
         if let Some(end) = panel.walk(slip, &sw.fan, pt, ev, steps, observe) {
             return Ok(Exit::End(end));
         }
