@@ -34,6 +34,7 @@ pub mod error;
 pub mod law;
 pub mod math;
 pub mod mechanism;
+mod numerics;
 pub mod ode;
 pub mod paper;
 pub mod planar;

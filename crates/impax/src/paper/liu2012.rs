@@ -38,6 +38,7 @@
 use crate::bodies::{sphere, spin_state, BodyOutcome, PlanarImpact, Side};
 use crate::law::LawId;
 use crate::math::{quadratic_roots, Vec2};
+use crate::numerics::roots::bisection;
 use crate::planar::{ContactProblem, Inconsistency, LawDetail, Verdict};
 use serde::Serialize;
 
@@ -357,41 +358,6 @@ fn reference(quantity: String, computed: String, value: Option<f64>, note: Strin
     }
 }
 
-/// Bisection of `f` on `[lo, hi]` (a sign change) to the last bit; the end with the smaller
-/// `|f|`.
-fn bisect(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
-    let mut flo = f(lo);
-    let mut fhi = f(hi);
-    if flo == 0.0 {
-        return lo;
-    }
-    if fhi == 0.0 || flo.signum() == fhi.signum() {
-        return if fhi == 0.0 { hi } else { f64::NAN };
-    }
-    for _ in 0..2000 {
-        let mid = 0.5 * (lo + hi);
-        if mid <= lo.min(hi) || mid >= lo.max(hi) {
-            break;
-        }
-        let fm = f(mid);
-        if fm == 0.0 {
-            return mid;
-        }
-        if fm.signum() == flo.signum() {
-            lo = mid;
-            flo = fm;
-        } else {
-            hi = mid;
-            fhi = fm;
-        }
-    }
-    if flo.abs() <= fhi.abs() {
-        lo
-    } else {
-        hi
-    }
-}
-
 /// The root of `f` on the branch that starts at `edge` and extends in direction `dir`
 /// (`±1`): bracketed by doubling steps from just inside the edge, then bisected.
 fn branch_root(f: impl Fn(f64) -> f64, edge: f64, dir: f64) -> f64 {
@@ -402,7 +368,7 @@ fn branch_root(f: impl Fn(f64) -> f64, edge: f64, dir: f64) -> f64 {
         let outer = edge + dir * step;
         let f_outer = f(outer);
         if f_outer.is_finite() && f_inner.is_finite() && f_outer.signum() != f_inner.signum() {
-            return bisect(&f, inner, outer);
+            return bisection(&f, inner, outer);
         }
         step *= 2.0;
     }

@@ -7,6 +7,7 @@ use crate::math::Vec2;
 use crate::mechanism::dynamics::{self, check_state};
 use crate::mechanism::impact::MechanismImpact;
 use crate::mechanism::Mechanism;
+use crate::numerics::roots::illinois_with_bisection;
 use crate::ode::{Dopri5, Tolerances};
 use crate::planar::Outcome;
 
@@ -782,7 +783,7 @@ fn locate<M: Mechanism + ?Sized>(
     b: f64,
     trial: &mut [f64],
 ) -> Option<f64> {
-    let mut g = |ode: &mut Dopri5, t: f64, trial: &mut [f64]| -> f64 {
+    let mut g = |t: f64| -> f64 {
         if t == t0 {
             return gap_of(m, k, y0);
         }
@@ -793,12 +794,12 @@ fn locate<M: Mechanism + ?Sized>(
         gap_of(m, k, trial)
     };
     let (mut lo, mut hi) = (a, b);
-    let mut glo = g(ode, lo, trial);
+    let mut glo = g(lo);
     if glo <= 0.0 {
         lo = t0;
         glo = gap_of(m, k, y0);
     }
-    let mut ghi = g(ode, hi, trial);
+    let mut ghi = g(hi);
     if ghi > 0.0 {
         hi = t1;
         ghi = gap_of(m, k, y1);
@@ -806,38 +807,8 @@ fn locate<M: Mechanism + ?Sized>(
     if !(glo > 0.0 && ghi <= 0.0) {
         return None;
     }
-    // Illinois regula falsi with bisection safeguards, to round-off of t.
-    let mut side = 0i32;
-    for _ in 0..200 {
-        if hi - lo <= 2.0 * f64::EPSILON * hi.abs().max(f64::MIN_POSITIVE) {
-            break;
-        }
-        let mut mid = (lo * ghi - hi * glo) / (ghi - glo);
-        if !(mid > lo && mid < hi) || side.abs() > 2 {
-            mid = 0.5 * (lo + hi);
-            side = 0;
-        }
-        let gm = g(ode, mid, trial);
-        if gm > 0.0 {
-            lo = mid;
-            glo = gm;
-            if side == -1 {
-                ghi *= 0.5;
-            }
-            side = if side < 0 { side - 1 } else { -1 };
-        } else {
-            hi = mid;
-            ghi = gm;
-            if side == 1 {
-                glo *= 0.5;
-            }
-            side = if side > 0 { side + 1 } else { 1 };
-        }
-        if gm == 0.0 {
-            break;
-        }
-    }
-    Some(hi)
+    // The gap falls through zero: its negative rises through zero, to round-off of t.
+    Some(illinois_with_bisection(|t| -g(t), lo, -glo, hi, -ghi))
 }
 
 /// Persistent contact of a round body: sliding (closed form) until rolling, then rolling to

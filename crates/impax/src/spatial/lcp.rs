@@ -48,6 +48,7 @@ use super::ContactProblem3;
 use crate::law::LawId;
 use crate::law::{Breakdown, BreakdownReason, Inconsistency};
 use crate::math::{cross2, norm3_of, norm_of, Vec2, Vec3};
+use crate::numerics::roots::newton_bisection;
 use std::f64::consts::TAU;
 
 /// One solution of the spatial complementarity conditions.
@@ -132,53 +133,6 @@ fn sample_table() -> &'static [(f64, f64)] {
     })
 }
 
-/// A root of `g` (value and derivative) in `[a, b]`, where `g(a)` and `g(b)` have opposite
-/// signs (or one is zero): from the secant point, Newton's steps while they stay inside the
-/// shrinking bracket, bisection otherwise (and only bisection after 30 steps); to the last
-/// bit.
-fn bracketed_root(g: impl Fn(f64) -> (f64, f64), mut a: f64, mut b: f64) -> f64 {
-    let (ga, gb) = (g(a).0, g(b).0);
-    if ga == 0.0 {
-        return a;
-    }
-    if gb == 0.0 {
-        return b;
-    }
-    let neg_at_a = ga < 0.0;
-    let secant = a - ga * (b - a) / (gb - ga);
-    let mut x = if secant > a && secant < b {
-        secant
-    } else {
-        0.5 * (a + b)
-    };
-    for iteration in 0..300 {
-        let (gx, dx) = g(x);
-        if gx == 0.0 {
-            return x;
-        }
-        if (gx < 0.0) == neg_at_a {
-            a = x;
-        } else {
-            b = x;
-        }
-        let mid = 0.5 * (a + b);
-        if mid <= a || mid >= b {
-            return x; // the bracket is two adjacent numbers
-        }
-        let newton = x - gx / dx;
-        let next = if iteration < 30 && newton > a && newton < b {
-            newton
-        } else {
-            mid
-        };
-        if next == x {
-            return x;
-        }
-        x = next;
-    }
-    x
-}
-
 /// Every root of `F` on `[0, 2π)` (at most four), ascending.
 fn slip_angles(trig: &Trig2) -> Vec<f64> {
     let h = TAU / SAMPLES as f64;
@@ -205,13 +159,13 @@ fn slip_angles(trig: &Trig2) -> Vec<f64> {
             continue; // counted at the next interval's start (or at θ = 0)
         }
         if (fa < 0.0) != (fb < 0.0) {
-            roots.push(bracketed_root(g, a, b));
+            roots.push(newton_bisection(g, a, b));
             continue;
         }
         // No sign change: a pair of close roots needs an extremum of F inside whose value
         // has the other sign.
         if (da < 0.0) != (db < 0.0) && da != 0.0 && db != 0.0 {
-            let m = bracketed_root(
+            let m = newton_bisection(
                 |t| {
                     let (s, c) = t.sin_cos();
                     let (c2, s2) = (c * c - s * s, 2.0 * s * c);
@@ -227,8 +181,8 @@ fn slip_angles(trig: &Trig2) -> Vec<f64> {
             if fm == 0.0 {
                 roots.push(m);
             } else if (fm < 0.0) != (fa < 0.0) {
-                roots.push(bracketed_root(g, a, m));
-                roots.push(bracketed_root(g, m, b));
+                roots.push(newton_bisection(g, a, m));
+                roots.push(newton_bisection(g, m, b));
             }
         }
     }

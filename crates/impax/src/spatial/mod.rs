@@ -10,15 +10,12 @@
 //! assert!((out.impulse.x + 0.5 / 3.5).abs() < 1e-12);
 //! ```
 
-mod chebyshev;
 pub mod darboux_keller;
 pub mod invariant;
 pub mod laws;
 pub mod lcp;
 mod outcome;
 mod problem;
-mod ray_series;
-mod rk;
 
 pub use darboux_keller::SpatialOptions;
 pub use invariant::{

@@ -3,9 +3,10 @@
 //!
 //! With `e = 0` Stronge's termination `W_n = (1 − e²) W_c` is reached exactly where
 //! compression ends (`v_n = 0`, the minimum of `W_n`), so `p_f = p_c`, `v_n⁺ = 0` and
-//! `ΔT = W_c + W_t < 0`. In `spatial::darboux_keller::linear_piece` the termination on a
-//! straight piece solves `v x + ½ k_n x² = (1 − e²) W_c − W_n(start)`; for `e = 0` this is
-//! the double root at the vertex, its discriminant `v² + 2 k_n · need` is zero in exact
+//! `ΔT = W_c + W_t < 0`. In `spatial::darboux_keller::linear` (`Linear::run`, then
+//! `linear_piece`) the termination on a straight piece solves
+//! `v x + ½ k_n x² = (1 − e²) W_c − W_n(start)`; for `e = 0` this is the double root at the
+//! vertex, its discriminant `v² + 2 k_n · need` is zero in exact
 //! arithmetic and ±round-off in floating point:
 //!
 //! * negative on a *finite* piece (the straight run into a halt): the termination is skipped,

@@ -29,6 +29,7 @@
 use super::{checked, finish_line, ImpactLaw};
 use crate::law::LawId;
 use crate::math::{quadratic_roots, sign, Vec2};
+use crate::numerics::roots::newton_wide_bracket;
 use crate::planar::{
     Breakdown, BreakdownReason, ContactProblem, LawDetail, PhaseKind, Resolution, SlipDirection,
     SmithReading,
@@ -126,97 +127,20 @@ fn cubic_roots_in(
         if f1 == 0.0 || f0.signum() == f1.signum() {
             continue;
         }
-        push(monotone_root(p, &f, x0, x1, f0, floor), &mut out, &mut n);
+        // The derivative damped like `f` (the damping's own derivative multiplies `f` ≈ 0
+        // near the root): x r and r are at most 1, so nothing overflows.
+        let df = |x: f64| {
+            let r = 1.0 / x.abs().max(1.0);
+            let xr = x * r;
+            (3.0 * p[3] * xr + 2.0 * p[2] * r) * xr + p[1] * r * r
+        };
+        let root = newton_wide_bracket(&f, df, x0, x1, f0, floor);
+        push(root, &mut out, &mut n);
     }
     if f(hi) == 0.0 {
         push(hi, &mut out, &mut n);
     }
     (out, n)
-}
-
-/// The root of the cubic `p` in `[x0, x1]`, where `p` is monotone and changes sign
-/// (`f0 = p(x0)`): safeguarded Newton (a bisection step whenever Newton leaves the bracket
-/// or stalls), to the last bit in a handful of iterations (to `floor · ε` near zero).
-fn monotone_root(
-    p: &[f64; 4],
-    eval: &impl Fn(f64) -> f64,
-    mut x0: f64,
-    mut x1: f64,
-    f0: f64,
-    floor: f64,
-) -> f64 {
-    let s0 = f0.signum();
-    // Bisection in the exponent where the bracket spans orders of magnitude on one side of
-    // zero (ζ ∈ [0.1, 1e100] at μ = 1e100): a few steps instead of hundreds.
-    let split = |x0: f64, x1: f64| {
-        let (a, b) = (x0.max(floor), x1);
-        if x0 < 0.0 && x1 > 0.0 && (-x0 > 4.0 * x1.max(floor) || x1 > -4.0 * x0.min(-floor)) {
-            // A wide bracket about zero: split at zero, leaving one side.
-            0.0
-        } else if x0 >= 0.0 && b > 4.0 * a {
-            (a * b).sqrt()
-        } else if x1 <= 0.0 && -x0 > 4.0 * (-x1).max(floor) {
-            -(x0 * x1.min(-floor)).sqrt()
-        } else {
-            0.5 * (x0 + x1)
-        }
-    };
-    // The bracket's size in the same measure: orders of magnitude where `split` bisects the
-    // exponent, length elsewhere.
-    let size = |x0: f64, x1: f64| {
-        let (a, b) = (x0.max(floor), x1);
-        if x0 >= 0.0 && b > 4.0 * a {
-            (b / a).ln()
-        } else if x1 <= 0.0 && -x0 > 4.0 * (-x1).max(floor) {
-            (x0 / x1.min(-floor)).ln()
-        } else {
-            x1 - x0
-        }
-    };
-    let mut x = split(x0, x1);
-    // Newton is taken while it at least halves the bracket every other step (far from the
-    // root of a cubic it may crawl, halving x each step from ζ = 1e100).
-    let mut width = size(x0, x1);
-    let mut slow = false;
-    for _ in 0..200 {
-        let f = eval(x);
-        if f == 0.0 {
-            return x;
-        }
-        if f.signum() == s0 {
-            x0 = x;
-        } else {
-            x1 = x;
-        }
-        // The derivative damped like `f` (the damping's own derivative multiplies `f` ≈ 0
-        // near the root): x r and r are at most 1, so nothing overflows.
-        let r = 1.0 / x.abs().max(1.0);
-        let xr = x * r;
-        let df = (3.0 * p[3] * xr + 2.0 * p[2] * r) * xr + p[1] * r * r;
-        let newton = x - f / df;
-        let now = size(x0, x1);
-        let halved = now <= 0.5 * width;
-        width = now;
-        let crawling = !halved && slow;
-        slow = !halved;
-        let next = if newton > x0 && newton < x1 && !crawling {
-            newton
-        } else {
-            split(x0, x1)
-        };
-        // Converged when the step or the bracket is at the last bit of x; near zero an
-        // absolute floor (`floor · ε`) stops the chase of round-off noise.
-        let tol = 2.0 * f64::EPSILON * x.abs().max(floor);
-        if (next - x).abs() <= tol || x1 - x0 <= tol {
-            // Converged: the better of the bracket ends and the iterate.
-            return [x, next]
-                .into_iter()
-                .min_by(|a, b| eval(*a).abs().total_cmp(&eval(*b).abs()))
-                .unwrap_or(next);
-        }
-        x = next;
-    }
-    x
 }
 
 /// Product of two polynomials of degree ≤ 1 → degree ≤ 2 (coefficients ascending).

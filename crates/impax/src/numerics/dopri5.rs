@@ -1,4 +1,5 @@
-//! The Dormand–Prince 5(4) integrator with dense output.
+//! The Dormand–Prince 5(4) integrator with dense output, on slices of any length (the
+//! public path is [`crate::ode`], whose documentation gives the method and its source).
 
 use crate::error::{Error, Result};
 

@@ -6,7 +6,8 @@
 //! extension of §II.6 (Dormand & Prince 1986 / Shampine 1986) for output between steps and
 //! for event location. State vectors are slices of any length; the workspace is allocated
 //! once per integrator, never per step.
+//!
+//! (The integrator lives with the library's other numerical building blocks, in the private
+//! module `numerics`; this is its public path.)
 
-mod dopri5;
-
-pub use dopri5::{Dopri5, Step, Tolerances};
+pub use crate::numerics::dopri5::{Dopri5, Step, Tolerances};

@@ -36,160 +36,20 @@
 //! tens of e-folds are replaced by one evaluation of the series, and the direction at the
 //! halt is the ray's angle `φ*` itself.
 
-use crate::math::{Mat2, Vec2};
+use super::field::Field;
+use crate::math::Vec2;
 
 /// Number of series terms (`ξ⁰ … ξ^(TERMS−1)`).
-pub(crate) const TERMS: usize = 20;
+pub(super) const TERMS: usize = 20;
 
 /// `E(a, s) = (e^{a s} − 1)/a` (`s` at `a = 0`), without cancellation.
 #[inline]
-pub(crate) fn expm1_ratio(a: f64, s: f64) -> f64 {
+pub(super) fn expm1_ratio(a: f64, s: f64) -> f64 {
     if a == 0.0 {
         s
     } else {
         (a * s).exp_m1() / a
     }
-}
-
-/// The direction field's trigonometric coefficients: `f(φ) = A cos φ + B sin φ + C cos 2φ +
-/// D sin 2φ` (`A = w₂, B = −w₁, C = −μ W₁₂, D = −μ (W₂₂ − W₁₁)/2`), and
-/// `q(φ) = w₁ cos φ + w₂ sin φ − μ (M + P cos 2φ + Q sin 2φ)` with `M = (W₁₁ + W₂₂)/2`,
-/// `P = (W₁₁ − W₂₂)/2`, `Q = W₁₂`.
-#[derive(Debug, Clone, Copy)]
-pub(crate) struct Field {
-    a: f64,
-    b: f64,
-    c: f64,
-    d: f64,
-    w1: f64,
-    w2: f64,
-    m: f64,
-    p: f64,
-    q: f64,
-    mu: f64,
-}
-
-impl Field {
-    /// The coefficients of `f` and `q` for `W_tt`, `w_tn` and `μ`.
-    pub(crate) fn new(wtt: &Mat2, wtn: Vec2, mu: f64) -> Field {
-        Field {
-            a: wtn.y,
-            b: -wtn.x,
-            c: -mu * wtt[(0, 1)],
-            d: -0.5 * mu * (wtt[(1, 1)] - wtt[(0, 0)]),
-            w1: wtn.x,
-            w2: wtn.y,
-            m: 0.5 * (wtt[(0, 0)] + wtt[(1, 1)]),
-            p: 0.5 * (wtt[(0, 0)] - wtt[(1, 1)]),
-            q: wtt[(0, 1)],
-            mu,
-        }
-    }
-
-    /// The coefficients `(A, B, C, D)` of `f`.
-    #[inline]
-    pub(crate) fn f_coefficients(&self) -> (f64, f64, f64, f64) {
-        (self.a, self.b, self.c, self.d)
-    }
-
-    /// `f = ŝ × g` at the direction `(c, s) = (cos φ, sin φ)`.
-    #[inline]
-    pub(crate) fn f_at(&self, c: f64, s: f64) -> f64 {
-        self.a * c + self.b * s + self.c * (c * c - s * s) + self.d * (2.0 * c * s)
-    }
-
-    /// `q = ŝ · g` at the direction `(c, s) = (cos φ, sin φ)`.
-    #[inline]
-    pub(crate) fn q_at(&self, c: f64, s: f64) -> f64 {
-        self.w1 * c + self.w2 * s
-            - self.mu * (self.m + self.p * (c * c - s * s) + self.q * (2.0 * c * s))
-    }
-
-    /// `f(φ) = ŝ × g` and `f'(φ)`.
-    #[inline]
-    pub(crate) fn f_df(&self, phi: f64) -> (f64, f64) {
-        let (s, c) = phi.sin_cos();
-        let (s2, c2) = (2.0 * s * c, c * c - s * s);
-        (
-            self.a * c + self.b * s + self.c * c2 + self.d * s2,
-            -self.a * s + self.b * c - 2.0 * self.c * s2 + 2.0 * self.d * c2,
-        )
-    }
-
-    /// The invariant ray that the direction reaches from `phi` as the slip shrinks (`q < 0`:
-    /// `dφ/d(−ln σ) = f/|q|`, so the direction turns toward the sign of `f`): the first root of
-    /// `f` ahead in that sense (scanned in steps of 0.1 rad, then Newton's method kept
-    /// inside the bracket). `None` if none within 0.8 rad.
-    pub(crate) fn ray_ahead(&self, phi: f64) -> Option<f64> {
-        let f = |x: f64| self.f_df(x).0;
-        let (f0, df0) = self.f_df(phi);
-        if f0 == 0.0 {
-            return Some(phi);
-        }
-        // On a ray up to round-off (whose sign says nothing about the sense): Newton there.
-        if (f0 / df0).abs() < 1e-6 {
-            let mut x = phi;
-            for _ in 0..3 {
-                let (fx, dfx) = self.f_df(x);
-                if fx == 0.0 || dfx == 0.0 {
-                    break;
-                }
-                x -= fx / dfx;
-            }
-            return Some(x);
-        }
-        let step = 0.1f64.copysign(f0);
-        let mut a = phi;
-        for _ in 0..8 {
-            let b = a + step;
-            if (f(b) <= 0.0) != (f0 <= 0.0) {
-                return Some(self.polish(a, f(a), b));
-            }
-            a = b;
-        }
-        None
-    }
-
-    /// The root of `f` in the bracket `[a, b]` (`f(a)`, `f(b)` of opposite signs).
-    fn polish(&self, a: f64, fa: f64, b: f64) -> f64 {
-        polish_in_bracket(|x| self.f_df(x), a, fa, b, 0.5 * (a + b))
-    }
-}
-
-/// The root of a function with value and derivative `f_df` in the bracket `[a, b]` (`f(a)`
-/// of the sign `fa`, `f(b)` of the other), from `x` inside it: Newton's method kept inside
-/// the shrinking bracket (bisection where a step would leave it), to the last bit.
-pub(crate) fn polish_in_bracket(
-    f_df: impl Fn(f64) -> (f64, f64),
-    mut a: f64,
-    mut fa: f64,
-    mut b: f64,
-    mut x: f64,
-) -> f64 {
-    for _ in 0..60 {
-        let (fx, dfx) = f_df(x);
-        if fx == 0.0 {
-            return x;
-        }
-        if (fx < 0.0) == (fa < 0.0) {
-            a = x;
-            fa = fx;
-        } else {
-            b = x;
-        }
-        let newton = x - fx / dfx;
-        // Converged (checked before the bracket test: at the root the step is nil and the
-        // point sits on the bracket's end).
-        if (newton - x).abs() <= 2.0 * f64::EPSILON * x.abs().max(1.0) {
-            return newton;
-        }
-        x = if newton > a.min(b) && newton < a.max(b) {
-            newton
-        } else {
-            0.5 * (a + b)
-        };
-    }
-    x
 }
 
 /// `Σ_{j=1}^{n−1} a_j b_{n−j}` (the coefficient of `ξⁿ` in a product of series, less the
@@ -215,7 +75,7 @@ fn inner_many<const K: usize>(a: &[f64; TERMS], rev: &[[f64; K]; TERMS], n: usiz
 
 /// The closed-form slip about one invariant ray (see the module documentation).
 #[derive(Debug, Clone)]
-pub(crate) struct RaySeries {
+pub(super) struct RaySeries {
     /// The ray's angle `φ*`.
     pub phi: f64,
     /// `(cos φ*, sin φ*)`.
@@ -236,7 +96,7 @@ pub(crate) struct RaySeries {
 
 /// Increments along the series from its start (`s = 0`) to `s`.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) struct Increment {
+pub(super) struct Increment {
     /// `Δp_n`.
     pub dp: f64,
     /// `Δp_t`.
@@ -252,7 +112,7 @@ pub(crate) struct Increment {
 impl RaySeries {
     /// The series about the ray `phi` of the field (`wnn`, `wtn` for the normal
     /// quantities). `None` if `q(φ*) = 0` or `λ` is not finite and nonzero.
-    pub(crate) fn new(field: &Field, wnn: f64, phi: f64) -> Option<RaySeries> {
+    pub(super) fn new(field: &Field, wnn: f64, phi: f64) -> Option<RaySeries> {
         // Along the solution put C = cos(φ* + h), S = sin(φ* + h) and their double angles
         // C₂, S₂: C' = −S h', S' = C h', C₂' = −2 S₂ h', S₂' = 2 C₂ h', so the coefficient
         // of ξⁿ of each follows from those of lower order and b_n enters linearly
@@ -373,28 +233,28 @@ impl RaySeries {
 
     /// Whether the ray is centripetal (`q(φ*) < 0`) and attracts the direction as the slip
     /// shrinks (`λ > 0`): the series then runs to the halt.
-    pub(crate) fn attracts_to_halt(&self) -> bool {
+    pub(super) fn attracts_to_halt(&self) -> bool {
         self.r[0] < 0.0 && self.lambda > 0.0
     }
 
     /// `|1/q(φ*)|`: the impulse per unit of slip along the ray.
-    pub(crate) fn impulse_per_slip(&self) -> f64 {
+    pub(super) fn impulse_per_slip(&self) -> f64 {
         self.r[0].abs()
     }
 
     /// The offset `η` of the direction `s` (unit vector) from the ray.
     #[inline]
-    pub(crate) fn offset(&self, s: Vec2) -> f64 {
+    pub(super) fn offset(&self, s: Vec2) -> f64 {
         (self.dir.x * s.y - self.dir.y * s.x).atan2(self.dir.dot(&s))
     }
 
     /// `η = h(ξ)`.
-    pub(crate) fn angle_offset(&self, xi: f64) -> f64 {
+    pub(super) fn angle_offset(&self, xi: f64) -> f64 {
         self.b.iter().rev().fold(0.0, |acc, &c| acc * xi + c)
     }
 
     /// `ξ = h⁻¹(η)` by Newton's method, or `None` if it does not converge.
-    pub(crate) fn normal_coordinate(&self, eta: f64) -> Option<f64> {
+    pub(super) fn normal_coordinate(&self, eta: f64) -> Option<f64> {
         let mut xi = eta;
         for _ in 0..12 {
             let (mut h, mut dh) = (0.0, 0.0);
@@ -416,7 +276,7 @@ impl RaySeries {
 
     /// The size of the last two terms of the series at `ξ`, relative to the first (an
     /// estimate of the truncation error), or `∞` if the terms are not decreasing.
-    pub(crate) fn truncation(&self, xi: f64) -> f64 {
+    pub(super) fn truncation(&self, xi: f64) -> f64 {
         let x = xi.abs();
         let size = |k: usize| {
             let r0 = self.r[0].abs();
@@ -434,7 +294,7 @@ impl RaySeries {
 
     /// The increments from `s = 0` (slip `σ₀`, normal coordinate `ξ₀`, normal velocity
     /// `vn0`) to `s` (`s = −∞` for the halt toward a centripetal ray).
-    pub(crate) fn increment(&self, sigma0: f64, xi0: f64, vn0: f64, s: f64) -> Increment {
+    pub(super) fn increment(&self, sigma0: f64, xi0: f64, vn0: f64, s: f64) -> Increment {
         // E(1 + kλ, s) and E(2 + kλ, s) from z_k = e^{(1+kλ)s} − 1 by
         // z_{k+1} = z_k + (e^{λs} − 1)(1 + z_k) and e^{(2+kλ)s} − 1 = z_k + (e^s − 1)(1 + z_k):
         // two exponentials in all, and no cancellation while λ > 0 (every term of one sign).
@@ -486,6 +346,7 @@ impl RaySeries {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::math::Mat2;
 
     /// The u-system (φ, p, p_t, v_n, W_n, W_t) by classical RK4 with tiny steps, as an
     /// independent check of the series.
