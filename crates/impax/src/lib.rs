@@ -34,6 +34,7 @@ pub mod error;
 pub mod law;
 pub mod math;
 pub mod mechanism;
+pub mod multi;
 mod numerics;
 pub mod ode;
 pub mod paper;

@@ -8,8 +8,8 @@ use impax::LawId;
 use std::cell::RefCell;
 use std::ops::Range;
 
-/// The most laws a sweep has (every law once).
-pub const MAX_LAWS: usize = LawId::ALL.len();
+/// The most laws a sweep has (every law once: those of [`LawId::ALL`] and `sequential`).
+pub const MAX_LAWS: usize = LawId::ALL.len() + 1;
 
 /// The first invalid point of a chunk: its index and why.
 #[derive(Debug, Clone)]

@@ -318,6 +318,10 @@ macro_rules! with_law {
                 let $l = NeedsBody;
                 $body
             }
+            LawId::Sequential => {
+                let $l = crate::multi::sequential::OneContact;
+                $body
+            }
         }
     };
 }

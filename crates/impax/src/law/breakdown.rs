@@ -31,12 +31,28 @@ pub enum BreakdownReason {
     /// contact-space problem.
     NeedsBody,
     /// The complementarity conditions of `lcp` have no solution (not observed for a
-    /// positive definite `W`; reported rather than guessed).
+    /// positive definite `W`; reported rather than guessed). With several contacts: no mode
+    /// of the enumeration satisfies the conditions to round-off.
     NoSolution,
     /// The law's impulse, velocity or energy is not representable in double precision
     /// (e.g. `whittaker` with `μ = 1e200`: `|p_t| = μ p_n` and `ΔT ≈ ½ W_tt p_t²` overflow).
     /// Reported rather than returning infinities as numbers.
     Overflow,
+    /// `sequential` (several contacts) reached its bound on binary impacts with a contact still
+    /// approaching ([`crate::multi::sequential::MAX_IMPACTS`]): the sequence does not settle
+    /// (or settles too slowly, e.g. an inelastic collapse with `e` near 1).
+    TooManyImpacts {
+        /// The bound that was reached.
+        limit: usize,
+    },
+    /// `lcp` enumerates `4^K` combinations of the contacts' modes and is limited to
+    /// [`crate::multi::lcp::MAX_CONTACTS`] contacts.
+    TooManyContacts {
+        /// The problem's number of contacts.
+        contacts: usize,
+        /// The limit.
+        limit: usize,
+    },
 }
 
 impl BreakdownReason {
@@ -51,6 +67,8 @@ impl BreakdownReason {
             BreakdownReason::PlanarOnly => "planar-only",
             BreakdownReason::NoSolution => "no-solution",
             BreakdownReason::Overflow => "overflow",
+            BreakdownReason::TooManyImpacts { .. } => "too-many-impacts",
+            BreakdownReason::TooManyContacts { .. } => "too-many-contacts",
         }
     }
 }
@@ -82,6 +100,14 @@ impl fmt::Display for BreakdownReason {
             }
             BreakdownReason::Overflow => f.write_str(
                 "the result is not representable in double precision (overflow)",
+            ),
+            BreakdownReason::TooManyImpacts { limit } => write!(
+                f,
+                "{limit} binary impacts and a contact still approaches: the sequence does not settle"
+            ),
+            BreakdownReason::TooManyContacts { contacts, limit } => write!(
+                f,
+                "{contacts} contacts: the enumeration of 4^K modes is limited to {limit}"
             ),
         }
     }

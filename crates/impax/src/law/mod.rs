@@ -45,7 +45,13 @@ pub enum LawId {
     /// `lcp`: the velocity-level complementarity impact that physics engines converge to
     /// (Anitescu & Potra 1997; the fixed point of sequential impulses): Newton's target
     /// `v_n⁺ = −e v_n⁻` and Coulomb friction with maximal dissipation on the final velocity.
+    /// With several contacts ([`crate::multi::lcp`]): the same conditions at every contact at
+    /// once (Stewart & Trinkle 1996), every solution listed.
     Lcp,
+    /// `sequential`: binary impacts for several contacts ([`crate::multi::sequential`]): the
+    /// most approaching contact alone with `energetic`, every contact's velocity updated, until
+    /// none approaches. With one contact it is `energetic` (the outcome labelled `sequential`).
+    Sequential,
 }
 
 impl LawId {
@@ -84,6 +90,11 @@ impl LawId {
         LawId::Lcp,
     ];
 
+    /// The laws defined for any number of contacts ([`LawId::resolve_multi`]), in
+    /// presentation order. (The one-contact tables [`LawId::ALL`], [`LawId::CONTACT_SPACE`]
+    /// and [`LawId::SPATIAL`] leave `sequential` out: with one contact it is `energetic`.)
+    pub const MULTI_CONTACT: [LawId; 2] = [LawId::Lcp, LawId::Sequential];
+
     /// The stable id string.
     pub fn as_str(self) -> &'static str {
         match self {
@@ -96,12 +107,19 @@ impl LawId {
             LawId::Poisson => "poisson",
             LawId::Energetic => "energetic",
             LawId::Lcp => "lcp",
+            LawId::Sequential => "sequential",
         }
     }
 
     /// Whether the law needs a body (not only `W` and `v⁻`).
     pub fn needs_body(self) -> bool {
         matches!(self, LawId::SmithCentre)
+    }
+
+    /// Whether the law is defined for several contacts at once (`lcp`, `sequential`); the
+    /// others are one-contact laws.
+    pub fn is_multi_contact(self) -> bool {
+        LawId::MULTI_CONTACT.contains(&self)
     }
 
     /// Whether the law is the exact Darboux–Keller integration (newton, poisson, energetic).
@@ -114,6 +132,8 @@ impl LawId {
     /// `smith-centre` needs a body's centre velocity, which contact space does not have: it
     /// returns [`BreakdownReason::NeedsBody`]. Use
     /// [`crate::bodies::PlanarImpact::resolve`] (or [`crate::planar::laws::Smith::centre`]).
+    /// `sequential` with one contact is `energetic`, its outcome (or breakdown) labelled
+    /// `sequential`.
     #[inline]
     pub fn resolve(self, problem: &ContactProblem) -> Resolution {
         use crate::planar::laws::*;
@@ -130,7 +150,44 @@ impl LawId {
             LawId::Poisson => Poisson.resolve(problem),
             LawId::Energetic => Energetic.resolve(problem),
             LawId::Lcp => Lcp.resolve(problem),
+            LawId::Sequential => crate::multi::sequential::OneContact.resolve(problem),
         }
+    }
+
+    /// Resolve a planar problem with several contacts ([`crate::multi`]).
+    ///
+    /// `lcp` and `sequential` take any number of contacts (`lcp` at most
+    /// [`crate::multi::lcp::MAX_CONTACTS`]); with one contact every contact-space law does,
+    /// its one-contact outcome carried over ([`MultiOutcome::from_outcome`]).
+    ///
+    /// Errors ([`Error::Invalid`] naming the field `law`): a one-contact law with two contacts
+    /// or more, `smith-centre` (it needs a body), `lcp` with more than
+    /// [`crate::multi::lcp::MAX_CONTACTS`] contacts. A law that has no result for these
+    /// numbers gives a [`Breakdown`], as with one contact.
+    ///
+    /// [`MultiOutcome::from_outcome`]: crate::multi::MultiOutcome::from_outcome
+    ///
+    /// ```
+    /// use impax::{LawId, multi::MultiProblem};
+    /// // Two contacts that do not interact: each is its own one-contact problem.
+    /// let p = MultiProblem::from_upper(
+    ///     2,
+    ///     &[2.0, 0.5, 0.0, 0.0, /**/ 1.5, 0.0, 0.0, /**/ 3.0, 0.2, /**/ 1.0],
+    ///     &[0.3, -1.0, -0.4, -0.5],
+    ///     &[0.3],
+    ///     &[0.5],
+    /// )
+    /// .unwrap();
+    /// let out = LawId::Lcp.resolve_multi(&p).unwrap().unwrap();
+    /// assert!((out.contacts[0].velocity_after.y - 0.5).abs() < 1e-12); // −e v_n⁻
+    /// assert!((out.contacts[1].velocity_after.y - 0.25).abs() < 1e-12);
+    /// assert!(LawId::Whittaker.resolve_multi(&p).is_err()); // a one-contact law
+    /// ```
+    pub fn resolve_multi(
+        self,
+        problem: &crate::multi::MultiProblem,
+    ) -> Result<crate::multi::MultiResolution> {
+        crate::multi::resolve(self, problem)
     }
 }
 
@@ -164,14 +221,14 @@ impl fmt::Display for LawId {
 
 impl FromStr for LawId {
     type Err = Error;
+    /// Parse a stable id: every id of [`LawId::ALL`] and `sequential`.
     fn from_str(s: &str) -> Result<Self> {
-        LawId::ALL
-            .iter()
-            .copied()
+        let every = || LawId::ALL.iter().copied().chain([LawId::Sequential]);
+        every()
             .find(|l| l.as_str() == s)
             .ok_or_else(|| Error::UnknownLaw {
                 id: s.to_string(),
-                known: LawId::ALL.map(|l| l.as_str()).join(", "),
+                known: every().map(|l| l.as_str()).collect::<Vec<_>>().join(", "),
             })
     }
 }

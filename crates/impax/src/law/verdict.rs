@@ -39,15 +39,16 @@ pub enum Inconsistency {
         /// Tangential contact velocity after the impact.
         slip_after: f64,
     },
-    /// The velocity-level LCP (`lcp`, spatial) has several solutions: the rule alone does not
-    /// say which one an engine returns (it depends on the engine's iteration). The one of
-    /// least kinetic energy after is reported.
+    /// The velocity-level LCP (`lcp`, spatial, or planar with several contacts) has several
+    /// solutions: the rule alone does not say which one an engine returns (it depends on the
+    /// engine's iteration). The one of least kinetic energy after is reported.
     MultipleSolutions {
-        /// Number of distinct solutions (2 or 3).
+        /// Number of distinct solutions (2 or 3 for one spatial contact; any number ≥ 2 with
+        /// several contacts).
         count: usize,
     },
     /// The impact ended with the bodies still approaching (`v_n⁺ < 0` beyond round-off): no
-    /// impact law may end there. The Darboux–Keller laws are built never to (Poisson's
+    /// impact law may end there. With several contacts: the most negative `v_n⁺`. The Darboux–Keller laws are built never to (Poisson's
     /// after a jamb ends only once the restitution impulse reaches `e` times the impulse of
     /// every compression phase, with `v_n ≥ 0`); the check stays as a guard.
     StillApproaching {

@@ -293,7 +293,16 @@ pub fn resolve(law: LawId, problem: &ContactProblem3) -> Resolution3 {
 /// powers of two: exact) and the result scaled back: invariant under scaling of the
 /// velocities and of `W` (bit for bit for powers of two) wherever its numbers are
 /// representable.
+///
+/// `sequential` (the binary-impact rule of several contacts, [`crate::multi::sequential`])
+/// with one contact is `energetic`, its outcome or breakdown labelled `sequential`.
 pub fn resolve_with(law: LawId, problem: &ContactProblem3, opts: &SpatialOptions) -> Resolution3 {
+    if law == LawId::Sequential {
+        return match resolve_with(LawId::Energetic, problem, opts) {
+            Ok(o) => Ok(Outcome3 { law, ..o }),
+            Err(b) => Err(Breakdown { law, ..b }),
+        };
+    }
     // (The Darboux–Keller integration chooses its own units, the same way, and scales its
     // path back to the problem's: its works need not be representable in the units of a
     // grazing impact's normal velocity.)
@@ -327,6 +336,9 @@ fn resolve_in_units(law: LawId, problem: &ContactProblem3, opts: &SpatialOptions
             darboux_keller(problem, law, opts, false, &mut |_, _| {})
         }
         LawId::Lcp => super::lcp::resolve(problem),
+        LawId::Sequential => resolve_in_units(LawId::Energetic, problem, opts)
+            .map(|o| Outcome3 { law, ..o })
+            .map_err(|b| Breakdown { law, ..b }),
         LawId::TwoPhase | LawId::Smith | LawId::SmithCentre => Err(Breakdown {
             law,
             reason: BreakdownReason::PlanarOnly,

@@ -10,6 +10,7 @@ mod brute_force;
 mod lcp;
 mod lcp_spatial;
 mod mechanisms;
+mod multi_contact;
 mod paper_liu2012;
 mod properties;
 mod regression_brach_frictionless;

@@ -16,6 +16,7 @@ pub fn law(law: LawId) -> RGBColor {
         LawId::Poisson => RGBColor(23, 190, 207),
         LawId::Energetic => RGBColor(44, 160, 44),
         LawId::Lcp => RGBColor(127, 127, 127),
+        LawId::Sequential => RGBColor(188, 189, 34),
     }
 }
 

@@ -1,0 +1,651 @@
+//! `lcp` with `K` contacts: the velocity-level complementarity impact at every contact at
+//! once — what projected Gauss–Seidel and sequential-impulse engines converge to.
+//!
+//! Anitescu & Potra 1997 (*Formulating dynamic multi-rigid-body contact problems with friction
+//! as solvable linear complementarity problems*, Nonlinear Dynamics 14), Stewart & Trinkle 1996
+//! (*An implicit time-stepping scheme for rigid body dynamics with inelastic collisions and
+//! Coulomb friction*, Int. J. Numer. Methods Eng. 39); the one-contact rule is
+//! [`crate::planar::laws::lcp`]. One impulse per contact `p_j = (p_tj, p_nj)`, the velocities
+//! after `v⁺ = v⁻ + W p`, Newton's target `b_j = max(−e_j v_nj⁻, 0)`, and at every contact
+//!
+//! ```text
+//! normal:   0 ≤ p_nj  ⊥  v_nj⁺ − b_j ≥ 0
+//! friction: |p_tj| ≤ μ_j p_nj;  v_tj⁺ = 0, or p_tj = −μ_j p_nj sign(v_tj⁺)
+//! ```
+//!
+//! (Coulomb's law with maximal dissipation on the final velocity, as for one contact; a
+//! contact that is not approaching, `v_nj⁻ ≥ 0`, has `b_j = 0`: it may be pushed apart, never
+//! pulled).
+//!
+//! **Exact enumeration.** In the plane each contact is in one of four modes, and each mode
+//! turns the conditions into linear equations:
+//!
+//! ```text
+//! off:     p_tj = p_nj = 0                       needs  v_nj⁺ ≥ b_j
+//! stick:   v_tj⁺ = 0,  v_nj⁺ = b_j               needs  p_nj ≥ 0, |p_tj| ≤ μ_j p_nj
+//! slip+:   p_tj = −μ_j p_nj,  v_nj⁺ = b_j         needs  p_nj ≥ 0, v_tj⁺ ≥ 0
+//! slip−:   p_tj = +μ_j p_nj,  v_nj⁺ = b_j         needs  p_nj ≥ 0, v_tj⁺ ≤ 0
+//! ```
+//!
+//! (a frictionless contact has two: off, or `p_tj = 0` with `v_nj⁺ = b_j`). The law solves
+//! every combination of modes (`4^K`; [`MAX_CONTACTS`] `= 6`, 4,096 systems, is the limit),
+//! keeps those whose solution satisfies every inequality, and every equation, to round-off
+//! ([`VELOCITY_ROUND_OFF`] of the velocity scale `max_i (|v⁻_i| + (|W| |p|)_i)` for
+//! velocities, of `max |p|` for impulses), merges those whose velocities after agree to `1e-8`
+//! of that scale (the same solution on the boundary of two modes), and returns **every
+//! distinct solution**, least kinetic energy after first ([`solutions`]). The result
+//! ([`resolve`]) is the first; with several it carries [`Inconsistency::MultipleSolutions`]
+//! (verdict `inconsistent-assumption` unless energy is gained), as the spatial one-contact
+//! `lcp` does: the conditions alone do not say which solution an engine's iteration reaches.
+//! A frictionless problem has one solution in velocities (the conditions are then those of a
+//! convex quadratic programme); with friction there can be several.
+//!
+//! **Singular `W`** (redundant contacts: a rod lying flat, a box on four corners). The
+//! velocities after are what the conditions determine; the impulses that produce them form
+//! a family `p + z`, `W z = 0` (a rod lying flat: how a tangential impulse is shared between
+//! its ends). Each mode's equations are solved in the least-squares, least-norm sense
+//! (Gaussian elimination with complete pivoting, pivots below `1e-11` of the largest entry
+//! taken as zero, the free unknowns chosen to minimise `|p|`), so the impulse reported is the
+//! least-norm solution of its mode's equations (a boundary mode's when that one violates an
+//! inequality that another member of the family meets), and among modes giving the same
+//! velocities the smallest. `ΔT` does not depend on the choice (`v⁻` and `v⁺` are in the
+//! range of `W`, orthogonal to `z`).
+//!
+//! The velocities are reported as the conditions give them: `v_nj⁺ = b_j` at a contact with
+//! an impulse, `v_tj⁺ = 0` at a sticking one (`v⁻ + W p` to round-off). The work of each
+//! contact is reported along the straight path `s p`, `0 ≤ s ≤ 1` (an engine has no path in
+//! impulse space), its normal work split where `v_nj` crosses zero on it.
+//!
+//! With one contact this is [`crate::planar::laws::Lcp`] (tested to 1e-13).
+//!
+//! ```
+//! use impax::multi::{lcp, MultiProblem};
+//! // Newton's cradle, three equal balls (m = 1) touching, e = 1, frictionless: the normals
+//! // W = [[2, −1], [−1, 2]], the first contact closing at 1. The LCP sends the first ball back.
+//! let p = MultiProblem::from_upper(
+//!     2,
+//!     &[2.0, 0.0, 0.0, 0.0, /**/ 2.0, 0.0, -1.0, /**/ 2.0, 0.0, /**/ 2.0],
+//!     &[0.0, -1.0, 0.0, 0.0],
+//!     &[0.0],
+//!     &[1.0],
+//! )
+//! .unwrap();
+//! let out = lcp::resolve(&p).unwrap();
+//! assert!((out.contacts[0].impulse.y - 4.0 / 3.0).abs() < 1e-12);
+//! assert!((out.contacts[1].impulse.y - 2.0 / 3.0).abs() < 1e-12);
+//! assert!(out.energy_change.abs() < 1e-12);
+//! ```
+
+use super::outcome::{
+    assemble, ContactPhaseKind, ContactResult, LcpSolution, MultiDetail, MultiResolution,
+    VELOCITY_ROUND_OFF,
+};
+use super::MultiProblem;
+use crate::law::{Breakdown, BreakdownReason, Inconsistency, LawId, WorkSplit};
+use crate::math::Vec2;
+use crate::planar::SlipDirection;
+
+/// The most contacts `lcp` enumerates (`4^6 = 4096` combinations of modes).
+pub const MAX_CONTACTS: usize = 6;
+
+/// The largest system: two unknowns per contact.
+const DIM: usize = 2 * MAX_CONTACTS;
+
+/// Pivots below this fraction of the largest entry end the elimination (rank deficiency).
+const PIVOT_TOL: f64 = 1e-11;
+
+/// Two solutions whose velocities after differ by less than this fraction of the velocity
+/// scale are the same solution.
+const SAME: f64 = 1e-8;
+
+/// A contact's mode in the enumeration.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Mode {
+    Off,
+    Stick,
+    /// Friction `p_t = −μ p_n`, needs `v_t⁺ ≥ 0`.
+    SlipPos,
+    /// Friction `p_t = +μ p_n`, needs `v_t⁺ ≤ 0`.
+    SlipNeg,
+    /// Frictionless contact with an impulse: `p_t = 0`.
+    Free,
+}
+
+const WITH_FRICTION: [Mode; 4] = [Mode::Off, Mode::Stick, Mode::SlipPos, Mode::SlipNeg];
+const FRICTIONLESS: [Mode; 2] = [Mode::Off, Mode::Free];
+
+/// An accepted solution of one combination of modes, in the canonical units.
+#[derive(Debug, Clone, Copy)]
+struct Candidate {
+    modes: [Mode; MAX_CONTACTS],
+    p: [f64; DIM],
+    v: [f64; DIM],
+    vscale: f64,
+    norm: f64,
+}
+
+/// The problem in the canonical units, on the stack.
+struct Setup {
+    k: usize,
+    w: [[f64; DIM]; DIM],
+    v: [f64; DIM],
+    b: [f64; MAX_CONTACTS],
+    mu: [f64; MAX_CONTACTS],
+}
+
+/// Every solution of the conditions, least kinetic energy after first (module docs), in the
+/// problem's own units. Empty when none is found (not observed) or `K >`
+/// [`MAX_CONTACTS`].
+///
+/// ```
+/// use impax::multi::{lcp, MultiProblem};
+/// let p = MultiProblem::from_upper(1, &[3.5, 0.0, 1.0], &[0.5, -0.866], &[0.4], &[0.7]).unwrap();
+/// assert_eq!(lcp::solutions(&p).len(), 1); // one contact: always exactly one
+/// ```
+pub fn solutions(problem: &MultiProblem) -> Vec<LcpSolution> {
+    match resolve(problem) {
+        Ok(o) => match o.detail {
+            MultiDetail::Lcp { solutions } => solutions,
+            _ => Vec::new(),
+        },
+        Err(_) => Vec::new(),
+    }
+}
+
+/// `lcp` on `K` contacts: the solution of least kinetic energy after, every solution in the
+/// detail ([`MultiDetail::Lcp`]). Breakdowns: [`BreakdownReason::TooManyContacts`] for
+/// `K >` [`MAX_CONTACTS`], [`BreakdownReason::NoSolution`] if no combination of modes
+/// satisfies the conditions to round-off, [`BreakdownReason::Overflow`] if a number is not
+/// representable.
+pub fn resolve(problem: &MultiProblem) -> MultiResolution {
+    let law = LawId::Lcp;
+    let k = problem.contacts();
+    if k > MAX_CONTACTS {
+        return Err(Breakdown {
+            law,
+            reason: BreakdownReason::TooManyContacts {
+                contacts: k,
+                limit: MAX_CONTACTS,
+            },
+        });
+    }
+    let setup = setup(problem);
+    let found = enumerate(&setup);
+    if found.is_empty() {
+        return Err(Breakdown {
+            law,
+            reason: BreakdownReason::NoSolution,
+        });
+    }
+    let mut all: Vec<LcpSolution> = found.iter().map(|c| tidy(&setup, c)).collect();
+    // Least kinetic energy after first (stable: ties keep the enumeration's order).
+    all.sort_by(|a, b| a.energy_change.total_cmp(&b.energy_change));
+    let best = &all[0];
+    let contacts: Vec<ContactResult> = (0..k)
+        .map(|j| {
+            let (p, va) = (best.impulses[j], best.velocities_after[j]);
+            let vb = Vec2::new(setup.v[2 * j], setup.v[2 * j + 1]);
+            ContactResult {
+                impulse: p,
+                velocity_after: va,
+                phases: vec![super::ContactPhase {
+                    kind: best.regimes[j],
+                    ends_at: p.y,
+                }],
+                work: straight_work(vb, va, p),
+            }
+        })
+        .collect();
+    let inconsistency =
+        (all.len() > 1).then_some(Inconsistency::MultipleSolutions { count: all.len() });
+    let out = assemble(
+        problem,
+        law,
+        contacts,
+        MultiDetail::Lcp { solutions: all },
+        inconsistency,
+    );
+    if out.is_finite() {
+        Ok(out)
+    } else {
+        Err(Breakdown {
+            law,
+            reason: BreakdownReason::Overflow,
+        })
+    }
+}
+
+/// The work of one contact along the straight path `s p`: `∫ v_n dp_n = ½ p_n (v_n⁻ + v_n⁺)`
+/// split where `v_n(s)` crosses zero, and `∫ v_t dp_t = ½ p_t (v_t⁻ + v_t⁺)`.
+fn straight_work(before: Vec2, after: Vec2, p: Vec2) -> WorkSplit {
+    let normal = 0.5 * p.y * (before.y + after.y);
+    let compression = if before.y >= 0.0 || p.y == 0.0 {
+        0.0
+    } else if after.y >= 0.0 {
+        // v_n(s) = v⁻ + s (v⁺ − v⁻) = 0 at s_c; ∫₀^{s_c} v_n p_n ds = ½ p_n s_c v_n⁻.
+        let sc = -before.y / (after.y - before.y);
+        0.5 * p.y * sc * before.y
+    } else {
+        normal
+    };
+    WorkSplit {
+        compression,
+        restitution: normal - compression,
+        friction: 0.5 * p.x * (before.x + after.x),
+    }
+}
+
+/// The problem's canonical numbers on the stack, with Newton's targets.
+fn setup(problem: &MultiProblem) -> Setup {
+    let (_, w, v, _) = problem.canonical();
+    let k = problem.contacts();
+    let mut s = Setup {
+        k,
+        w: [[0.0; DIM]; DIM],
+        v: [0.0; DIM],
+        b: [0.0; MAX_CONTACTS],
+        mu: [0.0; MAX_CONTACTS],
+    };
+    for i in 0..2 * k {
+        s.v[i] = v[i];
+        for j in 0..2 * k {
+            s.w[i][j] = w[(i, j)];
+        }
+    }
+    for j in 0..k {
+        s.b[j] = (-problem.restitutions()[j] * v[2 * j + 1]).max(0.0);
+        s.mu[j] = problem.frictions()[j];
+    }
+    s
+}
+
+/// Solve every combination of modes; keep the distinct solutions, in enumeration order.
+fn enumerate(s: &Setup) -> Vec<Candidate> {
+    let k = s.k;
+    let choices = |j: usize| -> &'static [Mode] {
+        if s.mu[j] > 0.0 {
+            &WITH_FRICTION
+        } else {
+            &FRICTIONLESS
+        }
+    };
+    let mut digits = [0usize; MAX_CONTACTS];
+    let mut modes = [Mode::Off; MAX_CONTACTS];
+    let mut found: Vec<Candidate> = Vec::new();
+    loop {
+        for j in 0..k {
+            modes[j] = choices(j)[digits[j]];
+        }
+        // Every contact off leaves an approaching contact approaching: never a solution.
+        if modes[..k].iter().any(|m| *m != Mode::Off) {
+            if let Some(c) = solve_mode(s, &modes) {
+                merge(&mut found, c);
+            }
+        }
+        // Next combination (contact 0 fastest).
+        let mut j = 0;
+        loop {
+            if j == k {
+                return found;
+            }
+            digits[j] += 1;
+            if digits[j] < choices(j).len() {
+                break;
+            }
+            digits[j] = 0;
+            j += 1;
+        }
+    }
+}
+
+/// Add `c` to the distinct solutions: if one has the same velocities, keep the one of smaller
+/// impulse norm (the earlier on a tie).
+fn merge(found: &mut Vec<Candidate>, c: Candidate) {
+    for e in found.iter_mut() {
+        let tol = SAME * e.vscale.max(c.vscale);
+        if e.v.iter().zip(&c.v).all(|(a, b)| (a - b).abs() <= tol) {
+            if c.norm < e.norm * (1.0 - SAME) {
+                *e = c;
+            }
+            return;
+        }
+    }
+    found.push(c);
+}
+
+/// Solve the equations of one combination of modes; the candidate if it satisfies every
+/// condition to round-off.
+#[allow(clippy::needless_range_loop)] // j and i index the contacts and the rows of W alike
+fn solve_mode(s: &Setup, modes: &[Mode; MAX_CONTACTS]) -> Option<Candidate> {
+    let k = s.k;
+    // Unknowns: a stick contact has (p_t, p_n), a slip (or frictionless) contact p_n with
+    // p_t = ratio p_n, written as y (ratio, 1)/|(ratio, 1)| so that |y| is |p_j|.
+    let mut contact = [0usize; DIM];
+    let mut ct = [0.0; DIM];
+    let mut cn = [0.0; DIM];
+    let mut rows = [0usize; DIM];
+    let mut n = 0;
+    let mut m = 0;
+    for j in 0..k {
+        let ratio = match modes[j] {
+            Mode::Off => continue,
+            Mode::Stick => {
+                contact[n] = j;
+                ct[n] = 1.0;
+                cn[n] = 0.0;
+                contact[n + 1] = j;
+                ct[n + 1] = 0.0;
+                cn[n + 1] = 1.0;
+                n += 2;
+                rows[m] = 2 * j;
+                rows[m + 1] = 2 * j + 1;
+                m += 2;
+                continue;
+            }
+            Mode::SlipPos => -s.mu[j],
+            Mode::SlipNeg => s.mu[j],
+            Mode::Free => 0.0,
+        };
+        let h = 1f64.hypot(ratio);
+        contact[n] = j;
+        ct[n] = ratio / h;
+        cn[n] = 1.0 / h;
+        n += 1;
+        rows[m] = 2 * j + 1;
+        m += 1;
+    }
+    debug_assert_eq!(n, m);
+    let mut a = [[0.0; DIM]; DIM];
+    let mut r = [0.0; DIM];
+    for (row, &i) in rows.iter().enumerate().take(n) {
+        for c in 0..n {
+            let j = contact[c];
+            a[row][c] = ct[c] * s.w[i][2 * j] + cn[c] * s.w[i][2 * j + 1];
+        }
+        let target = if i.is_multiple_of(2) { 0.0 } else { s.b[i / 2] };
+        r[row] = target - s.v[i];
+    }
+    let mut y = [0.0; DIM];
+    least_norm(&mut a, &mut r, n, &mut y);
+    let mut p = [0.0; DIM];
+    for c in 0..n {
+        let j = contact[c];
+        p[2 * j] += ct[c] * y[c];
+        p[2 * j + 1] += cn[c] * y[c];
+    }
+    let pscale = p[..2 * k]
+        .iter()
+        .fold(0.0f64, |x, y| x.max(y.abs()))
+        .max(f64::MIN_POSITIVE);
+    // The impulse conditions first (cheap).
+    for j in 0..k {
+        let (pt, pn) = (p[2 * j], p[2 * j + 1]);
+        let bad = match modes[j] {
+            Mode::Off => false,
+            Mode::Stick => {
+                -pn > VELOCITY_ROUND_OFF * pscale
+                    || pt.abs() - s.mu[j] * pn > VELOCITY_ROUND_OFF * pscale
+            }
+            _ => -pn > VELOCITY_ROUND_OFF * pscale,
+        };
+        if bad {
+            return None;
+        }
+    }
+    // Velocities after and their scale.
+    let mut v = [0.0; DIM];
+    let mut vscale = 0.0f64;
+    for i in 0..2 * k {
+        let (mut x, mut size) = (s.v[i], s.v[i].abs());
+        for j in 0..k {
+            if modes[j] != Mode::Off {
+                let (wt, wn) = (s.w[i][2 * j], s.w[i][2 * j + 1]);
+                x += wt * p[2 * j] + wn * p[2 * j + 1];
+                size += wt.abs() * p[2 * j].abs() + wn.abs() * p[2 * j + 1].abs();
+            }
+        }
+        v[i] = x;
+        vscale = vscale.max(size);
+    }
+    let tol = VELOCITY_ROUND_OFF * vscale;
+    for j in 0..k {
+        let (vt, vn, b) = (v[2 * j], v[2 * j + 1], s.b[j]);
+        let bad = match modes[j] {
+            Mode::Off => vn < b - tol,
+            Mode::Stick => vt.abs() > tol || (vn - b).abs() > tol,
+            Mode::SlipPos => vt < -tol || (vn - b).abs() > tol,
+            Mode::SlipNeg => vt > tol || (vn - b).abs() > tol,
+            Mode::Free => (vn - b).abs() > tol,
+        };
+        if bad {
+            return None;
+        }
+    }
+    Some(Candidate {
+        modes: *modes,
+        p,
+        v,
+        vscale,
+        norm: p[..2 * k].iter().map(|x| x * x).sum::<f64>().sqrt(),
+    })
+}
+
+/// The solution as reported: impulses inside their cones (`p_n ≥ 0`, `|p_t| ≤ μ p_n`,
+/// `p_t = ∓μ p_n` in slip: removing round-off), velocities as the conditions give them
+/// (`v_n⁺ = b` with an impulse, `v_t⁺ = 0` in stick), and `ΔT`.
+fn tidy(s: &Setup, c: &Candidate) -> LcpSolution {
+    let k = s.k;
+    let mut regimes = Vec::with_capacity(k);
+    let mut impulses = Vec::with_capacity(k);
+    let mut velocities = Vec::with_capacity(k);
+    let mut energy = 0.0;
+    for j in 0..k {
+        let mu = s.mu[j];
+        let (mut vt, mut vn) = (c.v[2 * j], c.v[2 * j + 1]);
+        let pn = c.p[2 * j + 1].max(0.0);
+        let (regime, pt, pn) = match c.modes[j] {
+            Mode::Off => (ContactPhaseKind::Off, 0.0, 0.0),
+            Mode::Stick => {
+                vt = 0.0;
+                vn = s.b[j];
+                let pt = c.p[2 * j].clamp(-mu * pn, mu * pn);
+                (ContactPhaseKind::Stick, pt, pn)
+            }
+            Mode::SlipPos => {
+                vn = s.b[j];
+                (
+                    ContactPhaseKind::Slip(SlipDirection::Positive),
+                    -mu * pn,
+                    pn,
+                )
+            }
+            Mode::SlipNeg => {
+                vn = s.b[j];
+                (ContactPhaseKind::Slip(SlipDirection::Negative), mu * pn, pn)
+            }
+            Mode::Free => {
+                vn = s.b[j];
+                (ContactPhaseKind::Slip(SlipDirection::of(vt)), 0.0, pn)
+            }
+        };
+        energy += 0.5 * ((s.v[2 * j] + vt) * pt + (s.v[2 * j + 1] + vn) * pn);
+        regimes.push(regime);
+        impulses.push(Vec2::new(pt, pn));
+        velocities.push(Vec2::new(vt, vn));
+    }
+    LcpSolution {
+        regimes,
+        impulses,
+        velocities_after: velocities,
+        energy_change: energy,
+    }
+}
+
+/// Solve `a y = r` (`n × n`) in the least-squares, least-norm sense: Gaussian elimination
+/// with complete pivoting; a pivot below [`PIVOT_TOL`] of the largest entry ends it (rank
+/// `ρ < n`), and the `n − ρ` free unknowns are chosen to minimise `|y|` (with
+/// `y₁ = U₁₁⁻¹ (c₁ − U₁₂ y₂)`: `(GᵀG + I) y₂ = Gᵀ a₀`, `G = U₁₁⁻¹ U₁₂`, `a₀ = U₁₁⁻¹ c₁`). The
+/// equations left out are checked by the caller (through the velocities after).
+#[allow(clippy::needless_range_loop)] // the indices of the triangular factors, as written
+fn least_norm(a: &mut [[f64; DIM]; DIM], r: &mut [f64; DIM], n: usize, y: &mut [f64; DIM]) {
+    let mut col = [0usize; DIM];
+    for (i, c) in col.iter_mut().enumerate() {
+        *c = i;
+    }
+    let mut amax = 0.0f64;
+    for row in a.iter().take(n) {
+        for x in row.iter().take(n) {
+            amax = amax.max(x.abs());
+        }
+    }
+    let tol = PIVOT_TOL * amax;
+    let mut rank = 0;
+    for k in 0..n {
+        let (mut pi, mut pj, mut best) = (k, k, 0.0f64);
+        for (i, row) in a.iter().enumerate().take(n).skip(k) {
+            for (j, x) in row.iter().enumerate().take(n).skip(k) {
+                if x.abs() > best {
+                    best = x.abs();
+                    pi = i;
+                    pj = j;
+                }
+            }
+        }
+        if best <= tol || best == 0.0 {
+            break;
+        }
+        a.swap(k, pi);
+        r.swap(k, pi);
+        if pj != k {
+            for row in a.iter_mut().take(n) {
+                row.swap(k, pj);
+            }
+            col.swap(k, pj);
+        }
+        let pivot = a[k][k];
+        for i in k + 1..n {
+            let f = a[i][k] / pivot;
+            if f != 0.0 {
+                for j in k + 1..n {
+                    a[i][j] -= f * a[k][j];
+                }
+                r[i] -= f * r[k];
+            }
+            a[i][k] = 0.0;
+        }
+        rank += 1;
+    }
+    // Back substitution with U₁₁ (rank × rank) for a right-hand side.
+    let back = |rhs: &mut [f64; DIM], a: &[[f64; DIM]; DIM]| {
+        for i in (0..rank).rev() {
+            let mut x = rhs[i];
+            for j in i + 1..rank {
+                x -= a[i][j] * rhs[j];
+            }
+            rhs[i] = x / a[i][i];
+        }
+    };
+    let mut yp = [0.0; DIM];
+    let mut a0 = *r;
+    back(&mut a0, a);
+    if rank == n {
+        yp[..n].copy_from_slice(&a0[..n]);
+    } else {
+        let d = n - rank;
+        // G = U₁₁⁻¹ U₁₂, one column per free unknown.
+        let mut g = [[0.0; DIM]; DIM];
+        for c in 0..d {
+            let mut col_c = [0.0; DIM];
+            for i in 0..rank {
+                col_c[i] = a[i][rank + c];
+            }
+            back(&mut col_c, a);
+            for i in 0..rank {
+                g[i][c] = col_c[i];
+            }
+        }
+        // (GᵀG + I) z = Gᵀ a₀ by Cholesky (the matrix is ≥ I).
+        let mut m = [[0.0; DIM]; DIM];
+        let mut h = [0.0; DIM];
+        for p in 0..d {
+            for q in 0..=p {
+                let mut x: f64 = (0..rank).map(|i| g[i][p] * g[i][q]).sum();
+                if p == q {
+                    x += 1.0;
+                }
+                m[p][q] = x;
+                m[q][p] = x;
+            }
+            h[p] = (0..rank).map(|i| g[i][p] * a0[i]).sum();
+        }
+        for p in 0..d {
+            for q in 0..p {
+                let x = m[p][q] / m[q][q];
+                for t in q + 1..=p {
+                    m[p][t] -= x * m[q][t];
+                }
+                h[p] -= x * h[q];
+            }
+        }
+        let mut z = [0.0; DIM];
+        for p in (0..d).rev() {
+            let mut x = h[p];
+            for q in p + 1..d {
+                x -= m[p][q] * z[q];
+            }
+            z[p] = x / m[p][p];
+        }
+        for i in 0..rank {
+            yp[i] = a0[i] - (0..d).map(|c| g[i][c] * z[c]).sum::<f64>();
+        }
+        yp[rank..n].copy_from_slice(&z[..d]);
+    }
+    for kk in 0..n {
+        y[col[kk]] = yp[kk];
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The least-norm solution of a consistent rank-deficient system: `y₁ + y₂ = 2` twice
+    /// (rank 1) has the least-norm solution `(1, 1)`.
+    #[test]
+    fn least_norm_of_a_rank_deficient_system() {
+        let mut a = [[0.0; DIM]; DIM];
+        a[0][0] = 1.0;
+        a[0][1] = 1.0;
+        a[1][0] = 1.0;
+        a[1][1] = 1.0;
+        let mut r = [0.0; DIM];
+        r[0] = 2.0;
+        r[1] = 2.0;
+        let mut y = [0.0; DIM];
+        least_norm(&mut a, &mut r, 2, &mut y);
+        assert!(
+            (y[0] - 1.0).abs() < 1e-15 && (y[1] - 1.0).abs() < 1e-15,
+            "{y:?}"
+        );
+    }
+
+    /// A full-rank system is solved exactly (a 3 × 3 with a known solution).
+    #[test]
+    fn full_rank_system() {
+        let m = [[4.0, -2.0, 1.0], [-2.0, 4.0, -2.0], [1.0, -2.0, 4.0]];
+        let x = [1.0, -2.0, 0.5];
+        let mut a = [[0.0; DIM]; DIM];
+        let mut r = [0.0; DIM];
+        for i in 0..3 {
+            for j in 0..3 {
+                a[i][j] = m[i][j];
+                r[i] += m[i][j] * x[j];
+            }
+        }
+        let mut y = [0.0; DIM];
+        least_norm(&mut a, &mut r, 3, &mut y);
+        for i in 0..3 {
+            assert!((y[i] - x[i]).abs() < 1e-14, "{y:?}");
+        }
+    }
+}

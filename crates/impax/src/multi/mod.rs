@@ -1,0 +1,96 @@
+//! Planar impacts at several contacts at once: the problem, the laws `lcp` and `sequential`,
+//! the outcome (theory §6).
+//!
+//! `K` contacts, contact-major: `v = (v_t1, v_n1, …, v_tK, v_nK)`, `p` likewise (the impulse on
+//! body A at each contact; `p_nj ≥ 0`). With the configuration frozen,
+//!
+//! ```text
+//! v⁺ = v⁻ + W p,    W = J M⁻¹ Jᵀ  (2K × 2K, symmetric positive semidefinite),
+//! ΔT = v⁻·p + ½ pᵀ W p = ½ (v⁻ + v⁺)·p      (exact for any impulse).
+//! ```
+//!
+//! `W` is singular when the contact rows `J` are dependent (a rod lying flat: four rows, three
+//! degrees of freedom); `v⁻ = J u` is then in the range of `W` and the velocities after are
+//! determined while the impulses are not (`p + z`, `W z = 0`).
+//!
+//! | law | module | rule |
+//! |---|---|---|
+//! | `lcp` | [`lcp`] | `0 ≤ p_nj ⊥ v_nj⁺ − max(−e_j v_nj⁻, 0) ≥ 0` and Coulomb with maximal dissipation at every contact at once (Anitescu & Potra 1997; Stewart & Trinkle 1996); every solution, by exact enumeration of the contacts' modes |
+//! | `sequential` | [`sequential`] | binary impacts: the most approaching contact alone with `energetic`, all velocities updated, until none approaches |
+//!
+//! Data flows one way: [`MultiProblem`] → [`lcp::resolve`] / [`sequential::resolve`] (or
+//! [`LawId::resolve_multi`]) → [`MultiOutcome`] or [`Breakdown`](crate::law::Breakdown).
+//! With one contact both reduce to the one-contact laws (`lcp` to
+//! [`crate::planar::laws::Lcp`], `sequential` to [`crate::planar::laws::Energetic`]).
+//!
+//! ```
+//! use impax::{LawId, multi::MultiProblem};
+//! // A uniform rod (m = 1, l = 1) lying flat lands on both ends at v_y = −1, e = 0.8:
+//! // W (rank 3) from J M⁻¹ Jᵀ with the ends at x = ∓1/2 (theory §6).
+//! let p = MultiProblem::from_upper(
+//!     2,
+//!     &[1.0, 0.0, 1.0, 0.0, /**/ 4.0, 0.0, -2.0, /**/ 1.0, 0.0, /**/ 4.0],
+//!     &[0.0, -1.0, 0.0, -1.0],
+//!     &[0.5],
+//!     &[0.8],
+//! )
+//! .unwrap();
+//! let out = LawId::Lcp.resolve_multi(&p).unwrap().unwrap();
+//! for c in &out.contacts {
+//!     assert!((c.velocity_after.y - 0.8).abs() < 1e-12); // both ends leave at e |v_y|
+//!     assert!((c.impulse.y - 0.9).abs() < 1e-12);        // (1 + e) m |v_y| / 2 each
+//! }
+//! ```
+
+pub mod lcp;
+mod outcome;
+mod problem;
+pub mod sequential;
+
+pub use outcome::{
+    is_energy_gain, BinaryImpact, ContactPhase, ContactPhaseKind, ContactResult, LcpSolution,
+    MultiDetail, MultiOutcome, MultiResolution, VELOCITY_ROUND_OFF,
+};
+pub use problem::{MultiProblem, RANGE_TOL, RANK_TOL};
+
+use crate::error::{Error, Result};
+use crate::law::LawId;
+
+/// Resolve `problem` with `law` ([`LawId::resolve_multi`]): `lcp` and `sequential` for any
+/// `K` (`lcp` up to [`lcp::MAX_CONTACTS`]); with `K = 1` every contact-space law, its
+/// one-contact outcome carried over ([`MultiOutcome::from_outcome`]). Errors name the field
+/// `law`: a one-contact law with `K ≥ 2`, `smith-centre`, `lcp` with `K >`
+/// [`lcp::MAX_CONTACTS`].
+pub fn resolve(law: LawId, problem: &MultiProblem) -> Result<MultiResolution> {
+    let k = problem.contacts();
+    if law.needs_body() {
+        return Err(Error::Invalid {
+            field: "law".into(),
+            reason: format!(
+                "`{law}` needs a body (it reads the centre velocity); contact space has none"
+            ),
+        });
+    }
+    match law {
+        LawId::Lcp if k > lcp::MAX_CONTACTS => Err(Error::Invalid {
+            field: "law".into(),
+            reason: format!(
+                "`lcp` enumerates the 4^K combinations of the contacts' modes and takes at most {} contacts, got {k} (`sequential` takes any number)",
+                lcp::MAX_CONTACTS
+            ),
+        }),
+        LawId::Lcp => Ok(lcp::resolve(problem)),
+        LawId::Sequential => Ok(sequential::resolve(problem)),
+        _ if k == 1 => {
+            let one = problem.contact(0)?;
+            Ok(law.resolve(&one).map(|o| MultiOutcome::from_outcome(&o)))
+        }
+        _ => Err(Error::Invalid {
+            field: "law".into(),
+            reason: format!(
+                "`{law}` is a one-contact law; with {k} contacts use {}",
+                LawId::MULTI_CONTACT.map(|l| l.as_str()).join(" or ")
+            ),
+        }),
+    }
+}

@@ -1,0 +1,380 @@
+//! What a law returns for `K` contacts: per contact the impulse, the velocity after, the
+//! phases and the work; `ΔT`, the verdict and the law's detail.
+
+use super::MultiProblem;
+use crate::law::energy::ENERGY_GAIN_ROUND_OFF;
+use crate::law::{Breakdown, Inconsistency, LawId, Verdict, WorkSplit};
+use crate::math::{Units, Vec2};
+use crate::planar::{LawDetail, Outcome, PhaseKind, SlipDirection};
+use nalgebra::{DMatrix, DVector};
+use std::fmt;
+
+/// The regime of one contact during (a part of) the impact.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum ContactPhaseKind {
+    /// No impulse at this contact (`p_j = 0`).
+    Off,
+    /// Stick: `v_t = 0` held by a friction ratio `|p_t| ≤ μ p_n`.
+    Stick,
+    /// Slip with Coulomb friction `p_t = −μ p_n ŝ` (`ŝ` the direction of the slip), or,
+    /// without friction, `p_t = 0` labelled by the direction of the slip
+    /// ([`SlipDirection::None`] when there is none).
+    Slip(SlipDirection),
+}
+
+impl ContactPhaseKind {
+    /// Stable label: `off`, `stick`, `slip+`, `slip-` or `no-slip`.
+    pub fn label(self) -> &'static str {
+        match self {
+            ContactPhaseKind::Off => "off",
+            ContactPhaseKind::Stick => "stick",
+            ContactPhaseKind::Slip(d) => PhaseKind::Slip(d).label(),
+        }
+    }
+}
+
+impl From<PhaseKind> for ContactPhaseKind {
+    fn from(kind: PhaseKind) -> Self {
+        match kind {
+            PhaseKind::Stick => ContactPhaseKind::Stick,
+            PhaseKind::Slip(d) => ContactPhaseKind::Slip(d),
+        }
+    }
+}
+
+impl fmt::Display for ContactPhaseKind {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.label())
+    }
+}
+
+/// One phase of one contact and the contact's own normal impulse at its end.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ContactPhase {
+    /// The regime.
+    pub kind: ContactPhaseKind,
+    /// The contact's normal impulse `p_nj` at the end of the phase (counted from the start
+    /// of the whole impact).
+    pub ends_at: f64,
+}
+
+/// What happened at one contact.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ContactResult {
+    /// The impulse on body A at this contact, `(p_t, p_n)`.
+    pub impulse: Vec2,
+    /// The contact velocity after, `(v_t⁺, v_n⁺)`.
+    pub velocity_after: Vec2,
+    /// The regimes in order (`lcp`: one; `sequential`: those of every binary impact at this
+    /// contact, one `off` if it had none).
+    pub phases: Vec<ContactPhase>,
+    /// The work done at this contact, `∫ v_n dp_n` split at the end of its compression, and
+    /// `∫ v_t dp_t`, along the law's path (`lcp`: the straight path `s p`, `0 ≤ s ≤ 1`, of all
+    /// the impulses together; `sequential`: the binary impacts'). The contacts' works sum to
+    /// `ΔT`.
+    pub work: WorkSplit,
+}
+
+impl ContactResult {
+    /// Labels joined by ` → `, e.g. `slip+ → stick`.
+    pub fn phase_summary(&self) -> String {
+        let labels: Vec<&str> = self.phases.iter().map(|p| p.kind.label()).collect();
+        labels.join(" → ")
+    }
+
+    /// Append a phase ending at `ends_at`; extend the last one if it has the same kind.
+    pub(crate) fn push_phase(&mut self, kind: ContactPhaseKind, ends_at: f64) {
+        match self.phases.last_mut() {
+            Some(last) if last.kind == kind => last.ends_at = ends_at,
+            _ => self.phases.push(ContactPhase { kind, ends_at }),
+        }
+    }
+}
+
+/// One solution of the complementarity conditions of [`super::lcp`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct LcpSolution {
+    /// Each contact's regime: `off`, `stick`, `slip+` or `slip-` (`slip±`/`no-slip` by the
+    /// slip after at a frictionless contact).
+    pub regimes: Vec<ContactPhaseKind>,
+    /// The impulses, one per contact (module docs of [`super::lcp`] for the choice when `W` is
+    /// singular).
+    pub impulses: Vec<Vec2>,
+    /// The contact velocities after, one per contact.
+    pub velocities_after: Vec<Vec2>,
+    /// `ΔT = ½ Σ_j (v_j⁻ + v_j⁺)·p_j`.
+    pub energy_change: f64,
+}
+
+/// One binary impact of [`super::sequential`]: a contact resolved alone by `energetic`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BinaryImpact {
+    /// The contact (from 0).
+    pub contact: usize,
+    /// Its velocity before this impact.
+    pub velocity_before: Vec2,
+    /// The one-contact outcome on the contact's own block (impulse, velocity after, phases,
+    /// work, `ΔT`: the whole system's `ΔT` of this impact, since only this contact pushes).
+    pub outcome: Outcome,
+}
+
+/// Law-specific detail.
+#[derive(Debug, Clone, PartialEq)]
+pub enum MultiDetail {
+    /// `lcp`: every solution of the conditions, least kinetic energy after first (the first
+    /// is the result).
+    Lcp {
+        /// The solutions.
+        solutions: Vec<LcpSolution>,
+    },
+    /// `sequential`: the binary impacts in order.
+    Sequential {
+        /// The impacts.
+        impacts: Vec<BinaryImpact>,
+    },
+    /// A one-contact law on a problem with one contact: its own detail and compression
+    /// impulse.
+    OneContact {
+        /// The law's detail.
+        detail: LawDetail,
+        /// The normal impulse at the end of compression, if reached on the law's path.
+        compression_impulse: Option<f64>,
+    },
+}
+
+/// The result of a law on a [`MultiProblem`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct MultiOutcome {
+    /// Which law.
+    pub law: LawId,
+    /// One entry per contact, in order.
+    pub contacts: Vec<ContactResult>,
+    /// `ΔT = v⁻·p + ½ pᵀ W p = ½ (v⁻ + v⁺)·p` (exact for any impulse).
+    pub energy_change: f64,
+    /// Headline verdict: energy gained takes precedence over an inconsistency.
+    pub verdict: Verdict,
+    /// A contradicted assumption, if any: [`Inconsistency::MultipleSolutions`] (`lcp`),
+    /// [`Inconsistency::StillApproaching`] (a contact approaching after the impact beyond
+    /// round-off: a guard that the laws are built never to trip).
+    pub inconsistency: Option<Inconsistency>,
+    /// Law-specific detail.
+    pub detail: MultiDetail,
+}
+
+/// What a law returns for `K` contacts: an outcome or a breakdown.
+pub type MultiResolution = Result<MultiOutcome, Breakdown>;
+
+impl MultiOutcome {
+    /// The impulses, one per contact.
+    pub fn impulses(&self) -> Vec<Vec2> {
+        self.contacts.iter().map(|c| c.impulse).collect()
+    }
+
+    /// The contact velocities after, one per contact.
+    pub fn velocities_after(&self) -> Vec<Vec2> {
+        self.contacts.iter().map(|c| c.velocity_after).collect()
+    }
+
+    /// Whether every number of the outcome is finite.
+    pub fn is_finite(&self) -> bool {
+        self.energy_change.is_finite()
+            && self.contacts.iter().all(|c| {
+                c.impulse
+                    .iter()
+                    .chain(c.velocity_after.iter())
+                    .all(|x| x.is_finite())
+                    && [c.work.compression, c.work.restitution, c.work.friction]
+                        .iter()
+                        .all(|x| x.is_finite())
+                    && c.phases.iter().all(|p| p.ends_at.is_finite())
+            })
+    }
+
+    /// A one-contact outcome as the outcome of a problem with one contact.
+    pub fn from_outcome(o: &Outcome) -> Self {
+        let mut contact = ContactResult {
+            impulse: o.impulse,
+            velocity_after: o.velocity_after,
+            phases: Vec::new(),
+            work: o.work,
+        };
+        for p in o.phases.as_slice() {
+            contact.push_phase(p.kind.into(), p.ends_at);
+        }
+        Self {
+            law: o.law,
+            contacts: vec![contact],
+            energy_change: o.energy_change,
+            verdict: o.verdict,
+            inconsistency: o.inconsistency,
+            detail: MultiDetail::OneContact {
+                detail: o.detail,
+                compression_impulse: o.compression_impulse,
+            },
+        }
+    }
+}
+
+/// Whether `energy_change = ΔT` of the impulses `p` (taking `v⁻` to `v⁺`) is a real gain: it
+/// exceeds the round-off of its own evaluation, the one-contact test
+/// ([`crate::law::energy`]) over the `2K` components,
+///
+/// ```text
+/// ΔT > 16 ε Σ_i (|v⁻_i| + |v⁺_i| + (|W| |p|)_i) |p_i|.
+/// ```
+pub fn is_energy_gain(
+    problem: &MultiProblem,
+    energy_change: f64,
+    p: &[Vec2],
+    v_after: &[Vec2],
+) -> bool {
+    let (u, w, v, _) = problem.canonical();
+    let scaled =
+        |x: &[Vec2], f: &dyn Fn(f64) -> f64| -> Vec<Vec2> { x.iter().map(|y| y.map(f)).collect() };
+    let p = scaled(p, &|x| x * u.a / u.b);
+    let va = scaled(v_after, &|x| x * u.a);
+    energy_gain(w, v, energy_change * u.a * u.a / u.b, &p, &va)
+}
+
+/// [`is_energy_gain`] in the canonical units.
+fn energy_gain(
+    w: &DMatrix<f64>,
+    v: &DVector<f64>,
+    energy_change: f64,
+    p: &[Vec2],
+    v_after: &[Vec2],
+) -> bool {
+    if energy_change <= 0.0 {
+        return false;
+    }
+    let n = v.len();
+    let flat = |i: usize, x: &[Vec2]| {
+        if i.is_multiple_of(2) {
+            x[i / 2].x
+        } else {
+            x[i / 2].y
+        }
+    };
+    let mut scale = 0.0;
+    for i in 0..n {
+        let wp: f64 = (0..n).map(|k| w[(i, k)].abs() * flat(k, p).abs()).sum();
+        scale += (v[i].abs() + flat(i, v_after).abs() + wp) * flat(i, p).abs();
+    }
+    energy_change > ENERGY_GAIN_ROUND_OFF * scale
+}
+
+/// The relative round-off below which a negative normal velocity after is not "approaching"
+/// (relative to the velocity scale `max_i (|v⁻_i| + (|W| |p|)_i)`), and the tolerance of the
+/// conditions of [`super::lcp`].
+pub const VELOCITY_ROUND_OFF: f64 = 1e-9;
+
+/// `max_i (|v⁻_i| + (|W| |p|)_i)`: the scale of the velocities of an impact.
+pub(crate) fn velocity_scale(w: &DMatrix<f64>, v: &DVector<f64>, p: &[Vec2]) -> f64 {
+    let n = v.len();
+    (0..n)
+        .map(|i| {
+            v[i].abs()
+                + (0..p.len())
+                    .map(|j| {
+                        w[(i, 2 * j)].abs() * p[j].x.abs() + w[(i, 2 * j + 1)].abs() * p[j].y.abs()
+                    })
+                    .sum::<f64>()
+        })
+        .fold(0.0, f64::max)
+}
+
+/// Assemble the outcome of a law from its per-contact results in the problem's canonical
+/// units: `ΔT = ½ Σ_j (v_j⁻ + v_j⁺)·p_j`, the verdict (energy gained, else the law's
+/// inconsistency, else a contact still approaching beyond [`VELOCITY_ROUND_OFF`]), then every
+/// number in the problem's own units.
+pub(crate) fn assemble(
+    problem: &MultiProblem,
+    law: LawId,
+    mut contacts: Vec<ContactResult>,
+    mut detail: MultiDetail,
+    inconsistency: Option<Inconsistency>,
+) -> MultiOutcome {
+    let (u, w, v, _) = problem.canonical();
+    let energy_change: f64 = contacts
+        .iter()
+        .enumerate()
+        .map(|(j, c)| {
+            0.5 * ((v[2 * j] + c.velocity_after.x) * c.impulse.x
+                + (v[2 * j + 1] + c.velocity_after.y) * c.impulse.y)
+        })
+        .sum();
+    let p: Vec<Vec2> = contacts.iter().map(|c| c.impulse).collect();
+    let va: Vec<Vec2> = contacts.iter().map(|c| c.velocity_after).collect();
+    let inconsistency = inconsistency.or_else(|| {
+        let tol = VELOCITY_ROUND_OFF * velocity_scale(w, v, &p);
+        let least = va.iter().map(|x| x.y).fold(f64::INFINITY, f64::min);
+        (least < -tol).then_some(Inconsistency::StillApproaching {
+            normal_velocity: least,
+        })
+    });
+    let verdict = if energy_gain(w, v, energy_change, &p, &va) {
+        Verdict::EnergyGained
+    } else if inconsistency.is_some() {
+        Verdict::InconsistentAssumption
+    } else {
+        Verdict::Consistent
+    };
+    // Back to the problem's units (powers of two: exact).
+    for c in &mut contacts {
+        c.impulse = c.impulse.map(|x| u.impulse(x));
+        c.velocity_after = c.velocity_after.map(|x| u.velocity(x));
+        c.work = work_in(u, c.work);
+        for ph in &mut c.phases {
+            ph.ends_at = u.impulse(ph.ends_at);
+        }
+    }
+    match &mut detail {
+        MultiDetail::Lcp { solutions } => {
+            for s in solutions {
+                for x in &mut s.impulses {
+                    *x = x.map(|y| u.impulse(y));
+                }
+                for x in &mut s.velocities_after {
+                    *x = x.map(|y| u.velocity(y));
+                }
+                s.energy_change = u.work(s.energy_change);
+            }
+        }
+        MultiDetail::Sequential { impacts } => {
+            for b in impacts {
+                b.velocity_before = b.velocity_before.map(|y| u.velocity(y));
+                b.outcome = b.outcome.in_problem_units(u);
+            }
+        }
+        MultiDetail::OneContact { .. } => {}
+    }
+    let inconsistency = inconsistency.map(|i| match i {
+        Inconsistency::StillApproaching { normal_velocity } => Inconsistency::StillApproaching {
+            normal_velocity: u.velocity(normal_velocity),
+        },
+        Inconsistency::SlipReversed { slip_after } => Inconsistency::SlipReversed {
+            slip_after: u.velocity(slip_after),
+        },
+        Inconsistency::ReversalDidNotHappen { slip_after } => Inconsistency::ReversalDidNotHappen {
+            slip_after: u.velocity(slip_after),
+        },
+        other => other,
+    });
+    MultiOutcome {
+        law,
+        contacts,
+        energy_change: u.work(energy_change),
+        verdict,
+        inconsistency,
+        detail,
+    }
+}
+
+/// A work split in the problem's units.
+fn work_in(u: Units, w: WorkSplit) -> WorkSplit {
+    WorkSplit {
+        compression: u.work(w.compression),
+        restitution: u.work(w.restitution),
+        friction: u.work(w.friction),
+    }
+}

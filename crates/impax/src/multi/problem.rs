@@ -1,0 +1,467 @@
+//! The planar contact-space problem with `K` contacts `(W, v⁻, μ_j, e_j)`.
+
+use crate::error::{Error, Num, Result};
+use crate::math::{exact_unit_factor, Mat2, Units, Vec2};
+use crate::planar::{ContactProblem, InverseInertia};
+use nalgebra::{DMatrix, DVector};
+
+/// Eigenvalues of `W` within `RANK_TOL` of its largest, in magnitude, are zero: `W` is then
+/// singular (redundant contacts). An eigenvalue below `−RANK_TOL` times the largest makes `W`
+/// indefinite, which is refused.
+pub const RANK_TOL: f64 = 1e-11;
+
+/// The largest component of `v⁻` outside the range of a singular `W`, relative to `|v⁻|`,
+/// accepted as round-off (and removed).
+pub const RANGE_TOL: f64 = 1e-9;
+
+/// Relative tolerance on the asymmetry of `W` accepted as round-off (as for one contact).
+const SYMMETRY_TOL: f64 = 1e-12;
+
+/// A validated planar impact problem with `K ≥ 1` contacts (module docs of
+/// [`crate::multi`]).
+///
+/// Contact-major: the velocity is `v = (v_t1, v_n1, …, v_tK, v_nK)`, and `W` (`2K × 2K`)
+/// is ordered the same way, so contact `j`'s own `2 × 2` block is
+/// `[[W_tjtj, W_tjnj], [W_njtj, W_njnj]]`. Contacts are numbered from 0 in the library (the
+/// field names of errors and the command line count from 1: `v[n,2]` is the normal velocity of
+/// the second contact).
+///
+/// Validation ([`MultiProblem::new`]): every entry finite; `W` symmetric to round-off
+/// (relative `1e-12`; the mean of the two off-diagonal entries is kept); each contact's own
+/// block positive definite (as [`InverseInertia::new`]); `W` positive *semi*definite — its
+/// eigenvalues not below `−`[`RANK_TOL`] of the largest, those within [`RANK_TOL`] of zero
+/// counted as zero (redundant contacts: a rod lying flat has four contact rows and three
+/// degrees of freedom); when `W` is singular, `v⁻` in its range (a velocity `J u` of the bodies
+/// always is, `W = J M⁻¹ Jᵀ`) up to [`RANGE_TOL`] of `|v⁻|`, that round-off removed;
+/// `μ_j ≥ 0`, `e_j ∈ [0, 1]`; at least one contact approaching (`v_nj⁻ < 0`; the others may
+/// touch or separate); the approach energy `½ v⁻ᵀ W⁺ v⁻` representable.
+///
+/// ```
+/// use impax::multi::MultiProblem;
+/// // A uniform rod (m = 1, l = 1, I = 1/12) lying flat, both ends landing at 1:
+/// // W_tt = 1, W_nn = 1 + (l/2)²/I = 4, the ends coupled by 1 − (l/2)²/I = −2.
+/// let p = MultiProblem::from_upper(
+///     2,
+///     &[1.0, 0.0, 1.0, 0.0, /**/ 4.0, 0.0, -2.0, /**/ 1.0, 0.0, /**/ 4.0],
+///     &[0.0, -1.0, 0.0, -1.0],
+///     &[0.5],
+///     &[0.8],
+/// )
+/// .unwrap();
+/// assert_eq!(p.contacts(), 2);
+/// assert_eq!(p.rank(), 3); // four rows, three degrees of freedom
+/// assert!(MultiProblem::from_upper(2, &[1.0, 0.0, 1.0, 0.0, 4.0, 0.0, -2.0, 1.0, 0.0, 4.0],
+///     &[0.3, -1.0, 0.0, -1.0], &[0.5], &[0.8]).is_err()); // v_t1 ≠ v_t2: not J u
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct MultiProblem {
+    k: usize,
+    /// `W` as given (symmetrised).
+    w: DMatrix<f64>,
+    /// `v⁻` as given (its round-off outside the range of a singular `W` removed).
+    v: DVector<f64>,
+    mu: Vec<f64>,
+    e: Vec<f64>,
+    rank: usize,
+    approach_energy: f64,
+    /// The canonical units: velocities times `units.a`, `W` times `units.b` (powers of two).
+    units: Units,
+    /// `W` and `v⁻` in the canonical units, where the laws work.
+    ws: DMatrix<f64>,
+    vs: DVector<f64>,
+    /// Each contact's own block in the canonical units.
+    blocks: Vec<InverseInertia>,
+}
+
+/// The name of row or column `i` of `W`: `t1`, `n1`, `t2`, … (contacts counted from 1).
+pub(crate) fn component(i: usize) -> String {
+    format!(
+        "{}{}",
+        if i.is_multiple_of(2) { "t" } else { "n" },
+        i / 2 + 1
+    )
+}
+
+/// The per-contact coefficients: one value for every contact or one per contact, each finite
+/// and in range; the field `name` (or `name[j]`, counted from 1, with one value per contact).
+fn coefficients(
+    name: &str,
+    values: &[f64],
+    k: usize,
+    check: impl Fn(f64) -> Option<&'static str>,
+) -> Result<Vec<f64>> {
+    if values.len() != 1 && values.len() != k {
+        return Err(Error::Invalid {
+            field: name.into(),
+            reason: format!(
+                "expected 1 value (every contact) or {k} (one per contact), got {}",
+                values.len()
+            ),
+        });
+    }
+    let field = |j: usize| {
+        if values.len() == 1 {
+            name.to_string()
+        } else {
+            format!("{name}[{}]", j + 1)
+        }
+    };
+    for (j, &x) in values.iter().enumerate() {
+        crate::error::finite(&field(j), x)?;
+        if let Some(reason) = check(x) {
+            return Err(Error::OutOfRange {
+                field: field(j),
+                value: x,
+                reason: reason.into(),
+            });
+        }
+    }
+    Ok((0..k)
+        .map(|j| values[if values.len() == 1 { 0 } else { j }])
+        .collect())
+}
+
+impl MultiProblem {
+    /// Validate and build a problem from `W` (`2K × 2K`, contact-major), `v⁻` (`2K` numbers,
+    /// contact by contact, tangent then normal), and the friction coefficients and
+    /// restitutions (one value for every contact, or `K`).
+    ///
+    /// Errors name their field as the command line spells it: `w`, `w[t1,n2]` (row `t1`,
+    /// column `n2`), `v`, `v[n,2]` (the second contact's normal velocity), `friction`,
+    /// `friction[2]`, `restitution`, `restitution[2]`. See the type's docs for the checks.
+    pub fn new(w: DMatrix<f64>, v: &[f64], friction: &[f64], restitution: &[f64]) -> Result<Self> {
+        let n = w.nrows();
+        if n == 0 || !n.is_multiple_of(2) || w.ncols() != n {
+            return Err(Error::Invalid {
+                field: "w".into(),
+                reason: format!(
+                    "must be 2K × 2K for K ≥ 1 contacts (tangent and normal of each), got {} × {}",
+                    w.nrows(),
+                    w.ncols()
+                ),
+            });
+        }
+        let k = n / 2;
+        if v.len() != n {
+            return Err(Error::Invalid {
+                field: "v".into(),
+                reason: format!(
+                    "expected {n} numbers (tangent and normal of each of {k} contacts), got {}",
+                    v.len()
+                ),
+            });
+        }
+        for i in 0..n {
+            for j in 0..n {
+                crate::error::finite(&format!("w[{},{}]", component(i), component(j)), w[(i, j)])?;
+            }
+        }
+        let scale = w.amax().max(f64::MIN_POSITIVE);
+        let mut w = w;
+        for i in 0..n {
+            for j in i + 1..n {
+                let (upper, lower) = (w[(i, j)], w[(j, i)]);
+                if (upper - lower).abs() > SYMMETRY_TOL * scale {
+                    return Err(Error::Invalid {
+                        field: "w".into(),
+                        reason: format!(
+                            "must be symmetric, but w[{},{}] = {} differs from w[{},{}] = {}",
+                            component(i),
+                            component(j),
+                            Num(upper),
+                            component(j),
+                            component(i),
+                            Num(lower)
+                        ),
+                    });
+                }
+                let mean = 0.5 * upper + 0.5 * lower;
+                w[(i, j)] = mean;
+                w[(j, i)] = mean;
+            }
+        }
+        for j in 0..k {
+            InverseInertia::new(block(&w, j)).map_err(|e| match e {
+                Error::NotPositiveDefinite { reason, .. } => Error::NotPositiveDefinite {
+                    field: "w".into(),
+                    reason: format!("contact {}'s own block: {reason}", j + 1),
+                },
+                other => other,
+            })?;
+        }
+        for (i, &x) in v.iter().enumerate() {
+            let name = format!(
+                "v[{},{}]",
+                if i.is_multiple_of(2) { "t" } else { "n" },
+                i / 2 + 1
+            );
+            crate::error::finite(&name, x)?;
+        }
+        let mu = coefficients("friction", friction, k, |x| {
+            (x < 0.0).then_some("the friction coefficient must be ≥ 0")
+        })?;
+        let e = coefficients("restitution", restitution, k, |x| {
+            (!(0.0..=1.0).contains(&x))
+                .then_some("the coefficient of restitution must be in [0, 1]")
+        })?;
+        let least = (0..k).map(|j| v[2 * j + 1]).fold(f64::INFINITY, f64::min);
+        if least >= 0.0 {
+            return Err(Error::NotApproaching {
+                field: "v".into(),
+                value: least,
+            });
+        }
+
+        // Canonical units (powers of two, exact): the largest |v| and diagonal entry of W in
+        // [1, 2).
+        let vmax = v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        let dmax = (0..n).fold(0.0f64, |m, i| m.max(w[(i, i)]));
+        let units = Units {
+            a: exact_unit_factor(vmax, v),
+            b: exact_unit_factor(dmax, w.as_slice()),
+        };
+        let ws = &w * units.b;
+        let mut vs = DVector::from_column_slice(v) * units.a;
+
+        // Spectrum of W (in its canonical units, entries near one).
+        let eig = ws
+            .clone()
+            .try_symmetric_eigen(f64::EPSILON, 10_000)
+            .ok_or_else(|| Error::Invalid {
+                field: "w".into(),
+                reason: "its eigenvalues could not be computed".into(),
+            })?;
+        let lmax = eig.eigenvalues.max();
+        let lmin = eig.eigenvalues.min();
+        if lmin < -RANK_TOL * lmax {
+            return Err(Error::Invalid {
+                field: "w".into(),
+                reason: format!(
+                    "must be positive semidefinite, but its smallest eigenvalue is {} of its largest",
+                    Num(lmin / lmax)
+                ),
+            });
+        }
+        let zero = |l: f64| l.abs() <= RANK_TOL * lmax;
+        let rank = eig.eigenvalues.iter().filter(|&&l| !zero(l)).count();
+        let mut energy = 0.0;
+        if rank < n {
+            // v⁻ must be a velocity J u: in the range of W = J M⁻¹ Jᵀ.
+            let norm = vs.norm();
+            let mut outside = DVector::zeros(n);
+            for (c, &l) in eig.eigenvalues.iter().enumerate() {
+                if zero(l) {
+                    let u = eig.eigenvectors.column(c);
+                    outside += u * u.dot(&vs);
+                }
+            }
+            let part = outside.norm() / norm;
+            if part > RANGE_TOL {
+                return Err(Error::Invalid {
+                    field: "v".into(),
+                    reason: format!(
+                        "not a velocity the contacts can have: W is singular (rank {rank} of {n}: the contacts are redundant) and v has a component of {} of |v| outside its range (a velocity J u of the bodies has none)",
+                        Num(part)
+                    ),
+                });
+            }
+            vs -= outside;
+        }
+        for (c, &l) in eig.eigenvalues.iter().enumerate() {
+            if !zero(l) {
+                let x = eig.eigenvectors.column(c).dot(&vs);
+                energy += 0.5 * x * x / l;
+            }
+        }
+        let approach_energy = units.work(energy);
+        crate::error::representable_energy(approach_energy, vmax)?;
+        let v = if rank < n {
+            vs.map(|x| units.velocity(x))
+        } else {
+            DVector::from_column_slice(v)
+        };
+        let blocks = (0..k)
+            .map(|j| InverseInertia::new(block(&ws, j)))
+            .collect::<Result<Vec<_>>>()?;
+        Ok(Self {
+            k,
+            w,
+            v,
+            mu,
+            e,
+            rank,
+            approach_energy,
+            units,
+            ws,
+            vs,
+            blocks,
+        })
+    }
+
+    /// Build from the upper triangle of `W`, row by row (`2K (2K + 1) / 2` numbers: row `t1`
+    /// from its diagonal, then row `n1`, …), as the command line's `--w` takes it.
+    pub fn from_upper(
+        contacts: usize,
+        upper: &[f64],
+        v: &[f64],
+        friction: &[f64],
+        restitution: &[f64],
+    ) -> Result<Self> {
+        let n = 2 * contacts;
+        let expected = n * (n + 1) / 2;
+        if contacts == 0 || upper.len() != expected {
+            return Err(Error::Invalid {
+                field: "w".into(),
+                reason: if contacts == 0 {
+                    "at least one contact is needed".into()
+                } else {
+                    format!(
+                        "expected {expected} numbers (the upper triangle of the {n} × {n} W, row by row), got {}",
+                        upper.len()
+                    )
+                },
+            });
+        }
+        let mut w = DMatrix::zeros(n, n);
+        let mut it = upper.iter();
+        for i in 0..n {
+            for j in i..n {
+                let x = *it.next().expect("counted above");
+                w[(i, j)] = x;
+                w[(j, i)] = x;
+            }
+        }
+        Self::new(w, v, friction, restitution)
+    }
+
+    /// The one-contact problem as a problem with `K = 1` (the same `W`, `v⁻`, `μ`, `e`; an
+    /// error only if its approach energy, computed here through the eigenvalues of `W`, is not
+    /// representable).
+    pub fn from_contact(problem: &ContactProblem) -> Result<Self> {
+        let w = problem.w();
+        let v = problem.velocity();
+        Self::new(
+            DMatrix::from_row_slice(2, 2, &[w[(0, 0)], w[(0, 1)], w[(1, 0)], w[(1, 1)]]),
+            &[v.x, v.y],
+            &[problem.friction()],
+            &[problem.restitution()],
+        )
+    }
+
+    /// The number of contacts `K`.
+    #[inline]
+    pub fn contacts(&self) -> usize {
+        self.k
+    }
+
+    /// `W` (`2K × 2K`, contact-major, symmetrised).
+    pub fn w(&self) -> &DMatrix<f64> {
+        &self.w
+    }
+
+    /// The rank of `W` (eigenvalues within [`RANK_TOL`] of the largest counted as zero):
+    /// `2K` unless contacts are redundant.
+    pub fn rank(&self) -> usize {
+        self.rank
+    }
+
+    /// Contact `j`'s own block `[[W_tt, W_tn], [W_nt, W_nn]]` (`j` from 0).
+    pub fn block(&self, j: usize) -> Mat2 {
+        block(&self.w, j)
+    }
+
+    /// The coupling block `[[W_titj, W_tinj], [W_nitj, W_ninj]]` of contacts `i` and `j`: the
+    /// velocity change at contact `i` per unit impulse at contact `j`.
+    pub fn coupling(&self, i: usize, j: usize) -> Mat2 {
+        coupling(&self.w, i, j)
+    }
+
+    /// `v⁻` (`2K` numbers, contact by contact).
+    pub fn velocity(&self) -> &DVector<f64> {
+        &self.v
+    }
+
+    /// Contact `j`'s velocity before the impact `(v_t⁻, v_n⁻)`.
+    pub fn contact_velocity(&self, j: usize) -> Vec2 {
+        Vec2::new(self.v[2 * j], self.v[2 * j + 1])
+    }
+
+    /// Contact `j`'s friction coefficient `μ_j`.
+    pub fn friction(&self, j: usize) -> f64 {
+        self.mu[j]
+    }
+
+    /// Contact `j`'s coefficient of restitution `e_j`.
+    pub fn restitution(&self, j: usize) -> f64 {
+        self.e[j]
+    }
+
+    /// Contact `j` alone: the one-contact problem of its own block, velocity and coefficients
+    /// (an error if it does not approach).
+    pub fn contact(&self, j: usize) -> Result<ContactProblem> {
+        ContactProblem::new(
+            self.block(j),
+            self.contact_velocity(j),
+            self.mu[j],
+            self.e[j],
+        )
+    }
+
+    /// The contact-space kinetic energy of the approach, `½ v⁻ᵀ W⁺ v⁻` (`W⁺` the
+    /// pseudo-inverse): the energy of the bodies' motion that the contacts can see, the most
+    /// an impulse can remove.
+    pub fn approach_energy(&self) -> f64 {
+        self.approach_energy
+    }
+
+    /// The contact velocities after the impulses `p` (one per contact): `v⁻ + W p`.
+    pub fn velocity_after(&self, p: &[Vec2]) -> Vec<Vec2> {
+        let flat = flatten(p);
+        let v = &self.v + &self.w * flat;
+        (0..self.k)
+            .map(|j| Vec2::new(v[2 * j], v[2 * j + 1]))
+            .collect()
+    }
+
+    /// The exact kinetic-energy change of any impulses `p` (one per contact):
+    /// `ΔT = v⁻·p + ½ pᵀ W p`.
+    pub fn energy_change(&self, p: &[Vec2]) -> f64 {
+        let flat = flatten(p);
+        self.v.dot(&flat) + 0.5 * flat.dot(&(&self.w * &flat))
+    }
+
+    /// The canonical units and `W`, `v⁻` and the blocks in them (for the laws).
+    pub(crate) fn canonical(&self) -> (Units, &DMatrix<f64>, &DVector<f64>, &[InverseInertia]) {
+        (self.units, &self.ws, &self.vs, &self.blocks)
+    }
+
+    /// The friction coefficients.
+    pub(crate) fn frictions(&self) -> &[f64] {
+        &self.mu
+    }
+
+    /// The restitutions.
+    pub(crate) fn restitutions(&self) -> &[f64] {
+        &self.e
+    }
+}
+
+/// Contact `j`'s own block of `w`.
+fn block(w: &DMatrix<f64>, j: usize) -> Mat2 {
+    coupling(w, j, j)
+}
+
+/// The block of rows of contact `i` and columns of contact `j`.
+pub(crate) fn coupling(w: &DMatrix<f64>, i: usize, j: usize) -> Mat2 {
+    Mat2::new(
+        w[(2 * i, 2 * j)],
+        w[(2 * i, 2 * j + 1)],
+        w[(2 * i + 1, 2 * j)],
+        w[(2 * i + 1, 2 * j + 1)],
+    )
+}
+
+/// Per-contact vectors as one contact-major vector.
+fn flatten(p: &[Vec2]) -> DVector<f64> {
+    DVector::from_iterator(2 * p.len(), p.iter().flat_map(|x| [x.x, x.y]))
+}
