@@ -18,7 +18,7 @@ pub enum Command {
     /// `double-pendulum`).
     Compare(CompareArgs),
     /// Resolve a contact-space problem (W, v⁻, μ, e) directly: planar (W of 3 numbers, v⁻
-    /// of 2) or spatial (W of 6, v⁻ of 3).
+    /// of 2), spatial (W of 6, v⁻ of 3), or planar with several contacts (--contacts K).
     Resolve(ResolveArgs),
     /// Reproduce a source paper's numbered results beside impax's values.
     Paper(PaperArgs),
@@ -367,9 +367,15 @@ pub struct AuditArgs {
 
 #[derive(Debug, Args)]
 pub struct ResolveArgs {
+    /// Several contacts at once: K contacts (planar), W of 2K × 2K given by its upper
+    /// triangle, v⁻ of 2K numbers, friction and restitution one per contact or one for all;
+    /// laws `lcp` and `sequential` (with K = 1 every contact-space law).
+    #[arg(long, value_name = "K")]
+    pub contacts: Option<usize>,
     /// Contact-space inverse inertia W (symmetric positive definite): planar WTT,WTN,WNN, or
     /// spatial W11,W12,W13,W22,W23,W33 (the upper triangle row by row; tangents first,
-    /// normal last).
+    /// normal last). With --contacts K: the upper triangle of the 2K × 2K W row by row, rows
+    /// and columns t1, n1, t2, n2, … (positive semidefinite).
     #[arg(
         long,
         allow_hyphen_values = true,
@@ -377,16 +383,29 @@ pub struct ResolveArgs {
     )]
     pub w: String,
     /// Pre-impact contact velocity (normal component < 0: approach): planar VT,VN, or
-    /// spatial V1,V2,VN.
+    /// spatial V1,V2,VN. With --contacts K: VT1,VN1,…,VTK,VNK (at least one approaching).
     #[arg(long, allow_hyphen_values = true, value_name = "VT,VN | V1,V2,VN")]
     pub v: String,
-    /// Coulomb friction coefficient μ ≥ 0.
-    #[arg(long, allow_hyphen_values = true)]
-    pub friction: f64,
-    /// Coefficient of restitution e ∈ [0, 1].
-    #[arg(long, allow_hyphen_values = true)]
-    pub restitution: f64,
-    /// Laws, comma separated (default: every contact-space law).
+    /// Coulomb friction coefficient μ ≥ 0 (with --contacts K: one for every contact, or K
+    /// comma separated).
+    #[arg(
+        long,
+        allow_hyphen_values = true,
+        value_delimiter = ',',
+        required = true
+    )]
+    pub friction: Vec<f64>,
+    /// Coefficient of restitution e ∈ [0, 1] (with --contacts K: one for every contact, or K
+    /// comma separated).
+    #[arg(
+        long,
+        allow_hyphen_values = true,
+        value_delimiter = ',',
+        required = true
+    )]
+    pub restitution: Vec<f64>,
+    /// Laws, comma separated (default: every contact-space law; with --contacts, `lcp` and
+    /// `sequential`).
     #[arg(long, value_delimiter = ',')]
     pub law: Vec<String>,
     /// Print JSON: one entry for one law, else an object with `results`.

@@ -9,7 +9,8 @@ pub fn num(x: f64) -> Value {
     json!(if x == 0.0 { 0.0 } else { x })
 }
 
-fn detail(d: &LawDetail) -> Value {
+/// The JSON `detail` of a planar one-contact outcome (null for a law without one).
+pub fn detail(d: &LawDetail) -> Value {
     match *d {
         LawDetail::None => Value::Null,
         LawDetail::TwoPhase { switch_impulse } => json!({ "switch_impulse": switch_impulse }),

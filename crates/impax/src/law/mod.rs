@@ -116,6 +116,12 @@ impl LawId {
         matches!(self, LawId::SmithCentre)
     }
 
+    /// Whether the law resolves spatial (3D) problems: those of [`LawId::SPATIAL`], and
+    /// `sequential` (with one contact, `energetic`).
+    pub fn is_spatial(self) -> bool {
+        LawId::SPATIAL.contains(&self) || self == LawId::Sequential
+    }
+
     /// Whether the law is defined for several contacts at once (`lcp`, `sequential`); the
     /// others are one-contact laws.
     pub fn is_multi_contact(self) -> bool {

@@ -175,14 +175,24 @@ impl MultiOutcome {
         self.contacts.iter().map(|c| c.velocity_after).collect()
     }
 
-    /// Whether every number of the outcome is finite.
+    /// Whether every number of the outcome, its detail included, is finite.
     pub fn is_finite(&self) -> bool {
-        self.energy_change.is_finite()
+        let finite = |v: &Vec2| v.iter().all(|x| x.is_finite());
+        let detail = match &self.detail {
+            MultiDetail::Lcp { solutions } => solutions.iter().all(|s| {
+                s.energy_change.is_finite()
+                    && s.impulses.iter().chain(&s.velocities_after).all(finite)
+            }),
+            MultiDetail::Sequential { impacts } => impacts
+                .iter()
+                .all(|b| finite(&b.velocity_before) && b.outcome.is_finite()),
+            MultiDetail::OneContact { .. } => true,
+        };
+        detail
+            && self.energy_change.is_finite()
             && self.contacts.iter().all(|c| {
-                c.impulse
-                    .iter()
-                    .chain(c.velocity_after.iter())
-                    .all(|x| x.is_finite())
+                finite(&c.impulse)
+                    && finite(&c.velocity_after)
                     && [c.work.compression, c.work.restitution, c.work.friction]
                         .iter()
                         .all(|x| x.is_finite())

@@ -265,7 +265,10 @@ impl MultiProblem {
                     ),
                 });
             }
-            vs -= outside;
+            // Below round-off of the eigenvectors themselves, v⁻ is kept exactly as given.
+            if part > 64.0 * f64::EPSILON {
+                vs -= outside;
+            }
         }
         for (c, &l) in eig.eigenvalues.iter().enumerate() {
             if !zero(l) {
@@ -275,7 +278,7 @@ impl MultiProblem {
         }
         let approach_energy = units.work(energy);
         crate::error::representable_energy(approach_energy, vmax)?;
-        let v = if rank < n {
+        let v = if vs.as_slice() != (DVector::from_column_slice(v) * units.a).as_slice() {
             vs.map(|x| units.velocity(x))
         } else {
             DVector::from_column_slice(v)

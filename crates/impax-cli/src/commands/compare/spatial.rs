@@ -296,7 +296,7 @@ pub fn run(
     } else {
         LawId::SPATIAL.to_vec()
     };
-    if let Some(l) = laws.iter().find(|l| !LawId::SPATIAL.contains(l)) {
+    if let Some(l) = laws.iter().find(|l| !l.is_spatial()) {
         return Err(CliError::input(format!(
             "law: `{l}` is defined for planar impacts only (spatial laws: {})",
             LawId::SPATIAL.map(|l| l.as_str()).join(", ")

@@ -1,4 +1,7 @@
-//! `impax resolve`: a planar contact-space problem directly.
+//! `impax resolve`: a contact-space problem directly — planar, spatial, or planar with several
+//! contacts ([`multi`]).
+
+mod multi;
 
 use crate::cli::ResolveArgs;
 use crate::input::{finite_flag, parse_numbers, CliError, CliResult};
@@ -13,20 +16,23 @@ use impax::LawId;
 use serde_json::{json, Value};
 
 pub fn run(args: &ResolveArgs, out: &mut Vec<u8>) -> CliResult<()> {
+    if let Some(k) = args.contacts {
+        return multi::run(args, k, out);
+    }
     let count = args.w.split(',').count();
     if count == 6 {
         return run_spatial(args, out);
     }
     if count != 3 {
         return Err(CliError::input(format!(
-            "--w: expected 3 numbers (planar: WTT,WTN,WNN) or 6 (spatial: W11,W12,W13,W22,W23,W33), got {count} in `{}`",
+            "--w: expected 3 numbers (planar: WTT,WTN,WNN) or 6 (spatial: W11,W12,W13,W22,W23,W33), got {count} in `{}` (several contacts: --contacts K)",
             args.w
         )));
     }
     let w = parse_numbers("w", &args.w, 3, "WTT,WTN,WNN")?;
     let v = parse_numbers("v", &args.v, 2, "VT,VN (planar W has 3 numbers)")?;
-    let mu = finite_flag("friction", args.friction)?;
-    let e = finite_flag("restitution", args.restitution)?;
+    let mu = finite_flag("friction", single("friction", &args.friction)?)?;
+    let e = finite_flag("restitution", single("restitution", &args.restitution)?)?;
     let problem = ContactProblem::from_entries(w[0], w[1], w[2], v[0], v[1], mu, e)?;
     let laws = if args.law.is_empty() {
         LawId::CONTACT_SPACE.to_vec()
@@ -112,6 +118,17 @@ pub fn run(args: &ResolveArgs, out: &mut Vec<u8>) -> CliResult<()> {
     };
     out.extend_from_slice(text.as_bytes());
     Ok(())
+}
+
+/// The one value of `--flag` (a list is for several contacts).
+fn single(flag: &str, values: &[f64]) -> CliResult<f64> {
+    match values {
+        [x] => Ok(*x),
+        _ => Err(CliError::input(format!(
+            "--{flag}: expected one number, got {} (one per contact needs --contacts K)",
+            values.len()
+        ))),
+    }
 }
 
 /// JSON of a 3D vector in the contact frame.
@@ -251,8 +268,8 @@ pub(crate) fn lcp_solutions(problem: &ContactProblem3) -> Value {
 fn run_spatial(args: &ResolveArgs, out: &mut Vec<u8>) -> CliResult<()> {
     let w = parse_numbers("w", &args.w, 6, "W11,W12,W13,W22,W23,W33")?;
     let v = parse_numbers("v", &args.v, 3, "V1,V2,VN (spatial W has 6 numbers)")?;
-    let mu = finite_flag("friction", args.friction)?;
-    let e = finite_flag("restitution", args.restitution)?;
+    let mu = finite_flag("friction", single("friction", &args.friction)?)?;
+    let e = finite_flag("restitution", single("restitution", &args.restitution)?)?;
     let problem = ContactProblem3::from_upper(
         [w[0], w[1], w[2], w[3], w[4], w[5]],
         [v[0], v[1], v[2]],
@@ -264,7 +281,7 @@ fn run_spatial(args: &ResolveArgs, out: &mut Vec<u8>) -> CliResult<()> {
     } else {
         parse_laws(&args.law)?
     };
-    if let Some(l) = laws.iter().find(|l| !LawId::SPATIAL.contains(l)) {
+    if let Some(l) = laws.iter().find(|l| !l.is_spatial()) {
         return Err(CliError::input(format!(
             "law: `{l}` is defined for planar impacts only (spatial laws: {})",
             LawId::SPATIAL.map(|l| l.as_str()).join(", ")
