@@ -322,6 +322,10 @@ macro_rules! with_law {
                 let $l = crate::multi::sequential::OneContact;
                 $body
             }
+            LawId::Lzb => {
+                let $l = crate::multi::lzb::OneContact;
+                $body
+            }
         }
     };
 }

@@ -46,11 +46,19 @@ pub enum BreakdownReason {
         limit: usize,
     },
     /// `lcp` enumerates `4^K` combinations of the contacts' modes and is limited to
-    /// [`crate::multi::lcp::MAX_CONTACTS`] contacts.
+    /// [`crate::multi::lcp::MAX_CONTACTS`] contacts; `lzb` integrates on fixed-size arrays
+    /// and is limited to [`crate::multi::lzb::MAX_CONTACTS`].
     TooManyContacts {
         /// The problem's number of contacts.
         contacts: usize,
         /// The limit.
+        limit: usize,
+    },
+    /// `lzb` (several contacts) reached its bound on integration steps
+    /// ([`crate::multi::lzb::MAX_STEPS`]) before every contact separated: the impact does not
+    /// settle (e.g. plastic contacts re-engaging without end) or needs steps too small.
+    TooManySteps {
+        /// The bound that was reached.
         limit: usize,
     },
 }
@@ -69,6 +77,7 @@ impl BreakdownReason {
             BreakdownReason::Overflow => "overflow",
             BreakdownReason::TooManyImpacts { .. } => "too-many-impacts",
             BreakdownReason::TooManyContacts { .. } => "too-many-contacts",
+            BreakdownReason::TooManySteps { .. } => "too-many-steps",
         }
     }
 }
@@ -107,7 +116,11 @@ impl fmt::Display for BreakdownReason {
             ),
             BreakdownReason::TooManyContacts { contacts, limit } => write!(
                 f,
-                "{contacts} contacts: the enumeration of 4^K modes is limited to {limit}"
+                "{contacts} contacts: the law is limited to {limit}"
+            ),
+            BreakdownReason::TooManySteps { limit } => write!(
+                f,
+                "{limit} integration steps and a contact still carries an impulse: the impact does not settle"
             ),
         }
     }

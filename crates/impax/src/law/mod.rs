@@ -52,6 +52,12 @@ pub enum LawId {
     /// most approaching contact alone with `energetic`, every contact's velocity updated, until
     /// none approaches. With one contact it is `energetic` (the outcome labelled `sequential`).
     Sequential,
+    /// `lzb`: the multiple-impact law of Liu, Zhao & Brogliato (2008, 2009) for several
+    /// contacts ([`crate::multi::lzb`]): every contact a compliant element storing energy,
+    /// the impulses distributed by the contacts' force law, energetic restitution at each
+    /// contact, Coulomb friction. With one contact it is `energetic` (the outcome labelled
+    /// `lzb`).
+    Lzb,
 }
 
 impl LawId {
@@ -92,8 +98,9 @@ impl LawId {
 
     /// The laws defined for any number of contacts ([`LawId::resolve_multi`]), in
     /// presentation order. (The one-contact tables [`LawId::ALL`], [`LawId::CONTACT_SPACE`]
-    /// and [`LawId::SPATIAL`] leave `sequential` out: with one contact it is `energetic`.)
-    pub const MULTI_CONTACT: [LawId; 2] = [LawId::Lcp, LawId::Sequential];
+    /// and [`LawId::SPATIAL`] leave `sequential` and `lzb` out: with one contact both are
+    /// `energetic`.)
+    pub const MULTI_CONTACT: [LawId; 3] = [LawId::Lcp, LawId::Sequential, LawId::Lzb];
 
     /// The stable id string.
     pub fn as_str(self) -> &'static str {
@@ -108,6 +115,7 @@ impl LawId {
             LawId::Energetic => "energetic",
             LawId::Lcp => "lcp",
             LawId::Sequential => "sequential",
+            LawId::Lzb => "lzb",
         }
     }
 
@@ -117,13 +125,13 @@ impl LawId {
     }
 
     /// Whether the law resolves spatial (3D) problems: those of [`LawId::SPATIAL`], and
-    /// `sequential` (with one contact, `energetic`).
+    /// `sequential` and `lzb` (with one contact, `energetic`).
     pub fn is_spatial(self) -> bool {
-        LawId::SPATIAL.contains(&self) || self == LawId::Sequential
+        LawId::SPATIAL.contains(&self) || matches!(self, LawId::Sequential | LawId::Lzb)
     }
 
-    /// Whether the law is defined for several contacts at once (`lcp`, `sequential`); the
-    /// others are one-contact laws.
+    /// Whether the law is defined for several contacts at once (`lcp`, `sequential`, `lzb`);
+    /// the others are one-contact laws.
     pub fn is_multi_contact(self) -> bool {
         LawId::MULTI_CONTACT.contains(&self)
     }
@@ -138,8 +146,8 @@ impl LawId {
     /// `smith-centre` needs a body's centre velocity, which contact space does not have: it
     /// returns [`BreakdownReason::NeedsBody`]. Use
     /// [`crate::bodies::PlanarImpact::resolve`] (or [`crate::planar::laws::Smith::centre`]).
-    /// `sequential` with one contact is `energetic`, its outcome (or breakdown) labelled
-    /// `sequential`.
+    /// `sequential` and `lzb` with one contact are `energetic`, its outcome (or breakdown)
+    /// labelled `sequential` or `lzb`.
     #[inline]
     pub fn resolve(self, problem: &ContactProblem) -> Resolution {
         use crate::planar::laws::*;
@@ -157,18 +165,21 @@ impl LawId {
             LawId::Energetic => Energetic.resolve(problem),
             LawId::Lcp => Lcp.resolve(problem),
             LawId::Sequential => crate::multi::sequential::OneContact.resolve(problem),
+            LawId::Lzb => crate::multi::lzb::OneContact.resolve(problem),
         }
     }
 
     /// Resolve a planar problem with several contacts ([`crate::multi`]).
     ///
-    /// `lcp` and `sequential` take any number of contacts (`lcp` at most
-    /// [`crate::multi::lcp::MAX_CONTACTS`]); with one contact every contact-space law does,
+    /// `lcp`, `sequential` and `lzb` take several contacts (`lcp` at most
+    /// [`crate::multi::lcp::MAX_CONTACTS`], `lzb` at most [`crate::multi::lzb::MAX_CONTACTS`],
+    /// `sequential` any number); with one contact every contact-space law does,
     /// its one-contact outcome carried over ([`MultiOutcome::from_outcome`]).
     ///
     /// Errors ([`Error::Invalid`] naming the field `law`): a one-contact law with two contacts
     /// or more, `smith-centre` (it needs a body), `lcp` with more than
-    /// [`crate::multi::lcp::MAX_CONTACTS`] contacts. A law that has no result for these
+    /// [`crate::multi::lcp::MAX_CONTACTS`] contacts, `lzb` with more than
+    /// [`crate::multi::lzb::MAX_CONTACTS`]. A law that has no result for these
     /// numbers gives a [`Breakdown`], as with one contact.
     ///
     /// [`MultiOutcome::from_outcome`]: crate::multi::MultiOutcome::from_outcome
@@ -227,9 +238,14 @@ impl fmt::Display for LawId {
 
 impl FromStr for LawId {
     type Err = Error;
-    /// Parse a stable id: every id of [`LawId::ALL`] and `sequential`.
+    /// Parse a stable id: every id of [`LawId::ALL`], `sequential` and `lzb`.
     fn from_str(s: &str) -> Result<Self> {
-        let every = || LawId::ALL.iter().copied().chain([LawId::Sequential]);
+        let every = || {
+            LawId::ALL
+                .iter()
+                .copied()
+                .chain([LawId::Sequential, LawId::Lzb])
+        };
         every()
             .find(|l| l.as_str() == s)
             .ok_or_else(|| Error::UnknownLaw {

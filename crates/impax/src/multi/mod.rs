@@ -1,5 +1,5 @@
-//! Planar impacts at several contacts at once: the problem, the laws `lcp` and `sequential`,
-//! the outcome (theory §6).
+//! Planar impacts at several contacts at once: the problem, the laws `lcp`, `sequential` and
+//! `lzb`, the outcome (theory §6).
 //!
 //! `K` contacts, contact-major: `v = (v_t1, v_n1, …, v_tK, v_nK)`, `p` likewise (the impulse on
 //! body A at each contact; `p_nj ≥ 0`). With the configuration frozen,
@@ -17,11 +17,13 @@
 //! |---|---|---|
 //! | `lcp` | [`lcp`] | `0 ≤ p_nj ⊥ v_nj⁺ − max(−e_j v_nj⁻, 0) ≥ 0` and Coulomb with maximal dissipation at every contact at once (Anitescu & Potra 1997; Stewart & Trinkle 1996); every solution, by exact enumeration of the contacts' modes |
 //! | `sequential` | [`sequential`] | binary impacts: the most approaching contact alone with `energetic`, all velocities updated, until none approaches |
+//! | `lzb` | [`lzb`] | Liu, Zhao & Brogliato's multiple impacts (2008, 2009): every contact a compliant element `F_j = κ_j δ_j^η` storing energy, the impulses distributed by the force law, energetic restitution and Coulomb friction at each contact, integrated to the end |
 //!
-//! Data flows one way: [`MultiProblem`] → [`lcp::resolve`] / [`sequential::resolve`] (or
-//! [`LawId::resolve_multi`]) → [`MultiOutcome`] or [`Breakdown`](crate::law::Breakdown).
-//! With one contact both reduce to the one-contact laws (`lcp` to
-//! [`crate::planar::laws::Lcp`], `sequential` to [`crate::planar::laws::Energetic`]).
+//! Data flows one way: [`MultiProblem`] → [`lcp::resolve`] / [`sequential::resolve`] /
+//! [`lzb::resolve`] (or [`LawId::resolve_multi`]) → [`MultiOutcome`] or
+//! [`Breakdown`](crate::law::Breakdown). With one contact they reduce to the one-contact laws
+//! (`lcp` to [`crate::planar::laws::Lcp`], `sequential` and `lzb` to
+//! [`crate::planar::laws::Energetic`]).
 //!
 //! ```
 //! use impax::{LawId, multi::MultiProblem};
@@ -43,24 +45,26 @@
 //! ```
 
 pub mod lcp;
+pub mod lzb;
 mod outcome;
 mod problem;
 pub mod sequential;
 
 pub use outcome::{
     is_energy_gain, BinaryImpact, ContactPhase, ContactPhaseKind, ContactResult, LcpSolution,
-    MultiDetail, MultiOutcome, MultiResolution, VELOCITY_ROUND_OFF,
+    LzbPrimary, MultiDetail, MultiOutcome, MultiResolution, VELOCITY_ROUND_OFF,
 };
-pub use problem::{MultiProblem, RANGE_TOL, RANK_TOL};
+pub use problem::{MultiProblem, HERTZ_EXPONENT, RANGE_TOL, RANK_TOL};
 
 use crate::error::{Error, Result};
 use crate::law::LawId;
 
-/// Resolve `problem` with `law` ([`LawId::resolve_multi`]): `lcp` and `sequential` for any
-/// `K` (`lcp` up to [`lcp::MAX_CONTACTS`]); with `K = 1` every contact-space law, its
-/// one-contact outcome carried over ([`MultiOutcome::from_outcome`]). Errors name the field
-/// `law`: a one-contact law with `K ≥ 2`, `smith-centre`, `lcp` with `K >`
-/// [`lcp::MAX_CONTACTS`].
+/// Resolve `problem` with `law` ([`LawId::resolve_multi`]): `lcp`, `sequential` and `lzb`
+/// for several contacts (`lcp` up to [`lcp::MAX_CONTACTS`], `lzb` up to
+/// [`lzb::MAX_CONTACTS`]); with `K = 1` every contact-space law, its one-contact outcome
+/// carried over ([`MultiOutcome::from_outcome`]). Errors name the field `law`: a one-contact
+/// law with `K ≥ 2`, `smith-centre`, `lcp` with `K >` [`lcp::MAX_CONTACTS`], `lzb` with
+/// `K >` [`lzb::MAX_CONTACTS`].
 pub fn resolve(law: LawId, problem: &MultiProblem) -> Result<MultiResolution> {
     let k = problem.contacts();
     if law.needs_body() {
@@ -81,6 +85,14 @@ pub fn resolve(law: LawId, problem: &MultiProblem) -> Result<MultiResolution> {
         }),
         LawId::Lcp => Ok(lcp::resolve(problem)),
         LawId::Sequential => Ok(sequential::resolve(problem)),
+        LawId::Lzb if k > lzb::MAX_CONTACTS => Err(Error::Invalid {
+            field: "law".into(),
+            reason: format!(
+                "`lzb` integrates on fixed-size arrays and takes at most {} contacts, got {k} (`sequential` takes any number)",
+                lzb::MAX_CONTACTS
+            ),
+        }),
+        LawId::Lzb => Ok(lzb::resolve(problem)),
         _ if k == 1 => {
             let one = problem.contact(0)?;
             Ok(law.resolve(&one).map(|o| MultiOutcome::from_outcome(&o)))

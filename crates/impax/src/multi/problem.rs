@@ -17,6 +17,10 @@ pub const RANGE_TOL: f64 = 1e-9;
 /// Relative tolerance on the asymmetry of `W` accepted as round-off (as for one contact).
 const SYMMETRY_TOL: f64 = 1e-12;
 
+/// The default exponent `η` of the contacts' force law `F = κ δ^η` of the law `lzb`: `3/2`,
+/// Hertz's for smooth bodies.
+pub const HERTZ_EXPONENT: f64 = 1.5;
+
 /// A validated planar impact problem with `K ≥ 1` contacts (module docs of
 /// [`crate::multi`]).
 ///
@@ -35,6 +39,11 @@ const SYMMETRY_TOL: f64 = 1e-12;
 /// always is, `W = J M⁻¹ Jᵀ`) up to [`RANGE_TOL`] of `|v⁻|`, that round-off removed;
 /// `μ_j ≥ 0`, `e_j ∈ [0, 1]`; at least one contact approaching (`v_nj⁻ < 0`; the others may
 /// touch or separate); the approach energy `½ v⁻ᵀ W⁺ v⁻` representable.
+///
+/// The law [`lzb`](super::lzb) also reads the contacts' compliance: the stiffness ratios
+/// `κ_j` (default all 1, [`MultiProblem::with_stiffness`]) and the exponent `η` of the force
+/// law `F_j = κ_j δ_j^η` (default [`HERTZ_EXPONENT`] `= 3/2`,
+/// [`MultiProblem::with_exponent`]). The other laws ignore them.
 ///
 /// ```
 /// use impax::multi::MultiProblem;
@@ -71,6 +80,10 @@ pub struct MultiProblem {
     vs: DVector<f64>,
     /// Each contact's own block in the canonical units.
     blocks: Vec<InverseInertia>,
+    /// The stiffness ratios `κ_j` of `lzb` (one per contact).
+    stiffness: Vec<f64>,
+    /// The exponent `η` of `lzb`'s force law.
+    exponent: f64,
 }
 
 /// The name of row or column `i` of `W`: `t1`, `n1`, `t2`, … (contacts counted from 1).
@@ -298,7 +311,67 @@ impl MultiProblem {
             ws,
             vs,
             blocks,
+            stiffness: vec![1.0; k],
+            exponent: HERTZ_EXPONENT,
         })
+    }
+
+    /// The same problem with the stiffness ratios `κ_j` of the law [`lzb`](super::lzb): one
+    /// value for every contact or one per contact, each positive and finite. Only the ratios
+    /// matter (`lzb`'s result is unchanged when every `κ_j` is multiplied by the same factor:
+    /// it sets the duration of the impact, not its outcome). Default: all 1.
+    ///
+    /// Errors name the field `stiffness` (or `stiffness[j]`, counted from 1, with one value
+    /// per contact).
+    ///
+    /// ```
+    /// use impax::multi::MultiProblem;
+    /// let p = MultiProblem::from_upper(
+    ///     2,
+    ///     &[2.0, 0.0, 0.0, 0.0, /**/ 2.0, 0.0, -1.0, /**/ 2.0, 0.0, /**/ 2.0],
+    ///     &[0.0, -1.0, 0.0, 0.0],
+    ///     &[0.0],
+    ///     &[1.0],
+    /// )
+    /// .unwrap();
+    /// assert_eq!(p.stiffness(1), 1.0);
+    /// let q = p.clone().with_stiffness(&[1.0, 4.0]).unwrap();
+    /// assert_eq!(q.stiffness(1), 4.0);
+    /// let e = p.with_stiffness(&[1.0, -4.0]).unwrap_err();
+    /// assert_eq!(e.field(), "stiffness[2]");
+    /// ```
+    pub fn with_stiffness(mut self, stiffness: &[f64]) -> Result<Self> {
+        self.stiffness = coefficients("stiffness", stiffness, self.k, |x| {
+            (x <= 0.0).then_some("a stiffness must be > 0")
+        })?;
+        Ok(self)
+    }
+
+    /// The same problem with the exponent `η` of the contacts' force law `F = κ δ^η` of the
+    /// law [`lzb`](super::lzb) (finite, `> 0`): `3/2` for Hertz's contact of smooth bodies
+    /// (the default, [`HERTZ_EXPONENT`]), `1` for a linear spring.
+    ///
+    /// Errors name the field `exponent`.
+    ///
+    /// ```
+    /// use impax::multi::MultiProblem;
+    /// let p = MultiProblem::from_upper(1, &[3.5, 0.0, 1.0], &[0.5, -0.866], &[0.4], &[0.7])
+    ///     .unwrap();
+    /// assert_eq!(p.exponent(), 1.5);
+    /// assert_eq!(p.clone().with_exponent(1.0).unwrap().exponent(), 1.0);
+    /// assert_eq!(p.with_exponent(0.0).unwrap_err().field(), "exponent");
+    /// ```
+    pub fn with_exponent(mut self, exponent: f64) -> Result<Self> {
+        crate::error::finite("exponent", exponent)?;
+        if exponent <= 0.0 {
+            return Err(Error::OutOfRange {
+                field: "exponent".into(),
+                value: exponent,
+                reason: "the exponent of the force law must be > 0".into(),
+            });
+        }
+        self.exponent = exponent;
+        Ok(self)
     }
 
     /// Build from the upper triangle of `W`, row by row (`2K (2K + 1) / 2` numbers: row `t1`
@@ -399,6 +472,17 @@ impl MultiProblem {
         self.e[j]
     }
 
+    /// Contact `j`'s stiffness ratio `κ_j` of the law [`lzb`](super::lzb) (default 1).
+    pub fn stiffness(&self, j: usize) -> f64 {
+        self.stiffness[j]
+    }
+
+    /// The exponent `η` of the force law `F = κ δ^η` of the law [`lzb`](super::lzb)
+    /// (default [`HERTZ_EXPONENT`] `= 3/2`).
+    pub fn exponent(&self) -> f64 {
+        self.exponent
+    }
+
     /// Contact `j` alone: the one-contact problem of its own block, velocity and coefficients
     /// (an error if it does not approach).
     pub fn contact(&self, j: usize) -> Result<ContactProblem> {
@@ -446,6 +530,11 @@ impl MultiProblem {
     /// The restitutions.
     pub(crate) fn restitutions(&self) -> &[f64] {
         &self.e
+    }
+
+    /// The stiffness ratios.
+    pub(crate) fn stiffnesses(&self) -> &[f64] {
+        &self.stiffness
     }
 }
 

@@ -295,9 +295,10 @@ pub fn resolve(law: LawId, problem: &ContactProblem3) -> Resolution3 {
 /// representable.
 ///
 /// `sequential` (the binary-impact rule of several contacts, [`crate::multi::sequential`])
-/// with one contact is `energetic`, its outcome or breakdown labelled `sequential`.
+/// and `lzb` (the multiple-impact law of Liu, Zhao & Brogliato, [`crate::multi::lzb`]) with
+/// one contact are `energetic`, its outcome or breakdown labelled `sequential` or `lzb`.
 pub fn resolve_with(law: LawId, problem: &ContactProblem3, opts: &SpatialOptions) -> Resolution3 {
-    if law == LawId::Sequential {
+    if matches!(law, LawId::Sequential | LawId::Lzb) {
         return match resolve_with(LawId::Energetic, problem, opts) {
             Ok(o) => Ok(Outcome3 { law, ..o }),
             Err(b) => Err(Breakdown { law, ..b }),
@@ -336,7 +337,7 @@ fn resolve_in_units(law: LawId, problem: &ContactProblem3, opts: &SpatialOptions
             darboux_keller(problem, law, opts, false, &mut |_, _| {})
         }
         LawId::Lcp => super::lcp::resolve(problem),
-        LawId::Sequential => resolve_in_units(LawId::Energetic, problem, opts)
+        LawId::Sequential | LawId::Lzb => resolve_in_units(LawId::Energetic, problem, opts)
             .map(|o| Outcome3 { law, ..o })
             .map_err(|b| Breakdown { law, ..b }),
         LawId::TwoPhase | LawId::Smith | LawId::SmithCentre => Err(Breakdown {

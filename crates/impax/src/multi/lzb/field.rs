@@ -1,0 +1,123 @@
+//! The right-hand side in the contact-force time `τ` (`dp_nj = F_j dτ`):
+//!
+//! ```text
+//! dp_nj/dτ = F_j = κ_j s_j^η                           (0 while the contact is off)
+//! ds_j/dτ  = −v_nj (compression),  −v_nj / e_j² (expansion),  0 (off)
+//! dp_tj/dτ = −μ_j σ_j F_j (slip),  x_j (stick: W_SS^tt x_S = −r_S, least norm),  0 (off)
+//! dw_tj/dτ = v_tj dp_tj/dτ
+//! v = v⁻ + W p.
+//! ```
+//!
+//! `r_S` is the rate of change of the sticking contacts' tangential velocities due to every
+//! other impulse rate: `r_a = Σ_c W_{t_a n_c} F_c + Σ_{c ∉ S} W_{t_a t_c} dp_tc/dτ`.
+
+use super::state::{Modes, Normal, Setup, Tangent, MAXK, PER, PN, PT, S, WT};
+
+/// The quantities of one point of the path: the contact velocities, the normal forces and the
+/// tangential impulse rates.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Eval {
+    /// `v = v⁻ + W p`.
+    pub v: [f64; 2 * MAXK],
+    /// `F_j = dp_nj/dτ`.
+    pub f: [f64; MAXK],
+    /// `dp_tj/dτ`.
+    pub pt: [f64; MAXK],
+}
+
+/// The tangential impulse rates given the normal forces `f`: slip `−μ σ F`, stick by the
+/// stick set's least-norm solve.
+#[inline]
+pub(super) fn tangential_rates(setup: &Setup, modes: &Modes, f: &[f64; MAXK]) -> [f64; MAXK] {
+    let k = setup.k;
+    let mut pt = [0.0; MAXK];
+    for j in 0..k {
+        if let (true, Tangent::Slip(sigma)) = (modes.active(j), modes.tangent[j]) {
+            pt[j] = -setup.mu[j] * sigma * f[j];
+        }
+    }
+    let st = &modes.stick;
+    if st.n > 0 {
+        let mut r = [0.0; MAXK];
+        for (a, ra) in r.iter_mut().enumerate().take(st.n) {
+            let row = &setup.w[2 * st.idx[a]];
+            let mut x = 0.0;
+            for c in 0..k {
+                x += row[2 * c + 1] * f[c] + row[2 * c] * pt[c];
+            }
+            *ra = x;
+        }
+        for a in 0..st.n {
+            let mut x = 0.0;
+            for (b, rb) in r.iter().enumerate().take(st.n) {
+                x -= st.pinv[a][b] * rb;
+            }
+            pt[st.idx[a]] = x;
+        }
+    }
+    pt
+}
+
+/// The velocities, forces and tangential rates at the state `y`.
+#[inline]
+pub(super) fn eval(setup: &Setup, modes: &Modes, y: &[f64]) -> Eval {
+    let k = setup.k;
+    let mut v = [0.0; 2 * MAXK];
+    for (i, vi) in v.iter_mut().enumerate().take(2 * k) {
+        let row = &setup.w[i];
+        let mut x = setup.v0[i];
+        for c in 0..k {
+            x += row[2 * c] * y[PER * c + PT] + row[2 * c + 1] * y[PER * c + PN];
+        }
+        *vi = x;
+    }
+    let mut f = [0.0; MAXK];
+    for (j, fj) in f.iter_mut().enumerate().take(k) {
+        if modes.active(j) {
+            *fj = setup.force(j, y[PER * j + S]);
+        }
+    }
+    let pt = tangential_rates(setup, modes, &f);
+    Eval { v, f, pt }
+}
+
+/// `dy/dτ` (module docs) and the quantities of the point.
+#[inline]
+pub(super) fn rates<const N: usize>(setup: &Setup, modes: &Modes, y: &[f64; N]) -> ([f64; N], Eval) {
+    let ev = eval(setup, modes, y);
+    let mut dy = [0.0; N];
+    for j in 0..setup.k {
+        let vn = ev.v[2 * j + 1];
+        let o = PER * j;
+        dy[o + PT] = ev.pt[j];
+        dy[o + PN] = ev.f[j];
+        dy[o + S] = match modes.normal[j] {
+            Normal::Off => 0.0,
+            Normal::Compression => -vn,
+            Normal::Expansion => -vn / (setup.e[j] * setup.e[j]),
+        };
+        dy[o + WT] = ev.v[2 * j] * ev.pt[j];
+    }
+    (dy, ev)
+}
+
+/// The rates of change of the tangential velocities, `dv_t/dτ = (W dp/dτ)_t`, given the
+/// normal forces `f` and the tangential rates `pt`.
+#[inline]
+pub(super) fn tangential_acceleration(
+    setup: &Setup,
+    f: &[f64; MAXK],
+    pt: &[f64; MAXK],
+) -> [f64; MAXK] {
+    let k = setup.k;
+    let mut a = [0.0; MAXK];
+    for (j, aj) in a.iter_mut().enumerate().take(k) {
+        let row = &setup.w[2 * j];
+        let mut x = 0.0;
+        for c in 0..k {
+            x += row[2 * c] * pt[c] + row[2 * c + 1] * f[c];
+        }
+        *aj = x;
+    }
+    a
+}

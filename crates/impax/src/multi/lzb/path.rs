@@ -1,0 +1,722 @@
+//! The path of the impact in `τ`: the adaptive DOP853 integration with its error test, the
+//! first event inside an accepted step located on the discrete solution, what each event
+//! changes, and the record of each contact (works, phases) and of the primary contact.
+//!
+//! An event is located on the step's seventh-order dense output: the root of the event
+//! function in the step's fraction `θ` by the Illinois iteration ([`illinois`]) to `4ε` in
+//! `θ` (of the events inside one step, the first). The path goes on from the discrete
+//! solution there, by re-stepping from the step's start to that `θ`; if the event's function
+//! is still below zero on the discrete solution, its crossing on the discrete solution is
+//! found by Newton's iteration with the dense output's slope ([`newton_from_seed`]), so that
+//! the event has happened where the path goes on.
+
+use super::events::{self, Event};
+use super::field::{eval, tangential_acceleration, tangential_rates, Eval};
+use super::variable::Var;
+use super::friction::{choose, rebuild, Allowed};
+use super::state::{Modes, Normal, Setup, StickSet, Tangent, MAXK, PER, PN, PT, S, WT};
+use super::{MAX_STEPS, PRIMARY_MARGIN, RTOL};
+use crate::law::{BreakdownReason, WorkSplit};
+use crate::math::Vec2;
+use crate::multi::{ContactPhaseKind, ContactResult, LzbPrimary};
+use crate::numerics::dop853::{dop853_step, error_measure, Dense};
+use crate::numerics::roots::{illinois, newton_from_seed};
+use crate::planar::SlipDirection;
+
+/// What the path ends with (canonical units).
+pub(super) struct End {
+    /// One result per contact.
+    pub contacts: Vec<ContactResult>,
+    /// The primary contacts in turn.
+    pub primaries: Vec<LzbPrimary>,
+    /// The accepted steps.
+    pub steps: usize,
+}
+
+/// One contact's record.
+#[derive(Debug, Clone)]
+struct Track {
+    /// `Ê` at the start of the current normal phase.
+    mark: f64,
+    /// Normal work in compression so far.
+    compression: f64,
+    /// Normal work in expansion so far.
+    restitution: f64,
+    /// The current tangential regime, while the contact carries a force.
+    label: Option<ContactPhaseKind>,
+    /// The result being built (phases).
+    result: ContactResult,
+    /// Whether it has carried a force.
+    engaged: bool,
+}
+
+/// The regimes, the records and the primary.
+struct Path<'a> {
+    setup: &'a Setup,
+    modes: Modes,
+    tracks: Vec<Track>,
+    primary: usize,
+    primaries: Vec<LzbPrimary>,
+}
+
+/// Integrate the impact to its end (module docs of [`super`]); `N = 4K`.
+pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason> {
+    debug_assert_eq!(N, PER * setup.k);
+    let k = setup.k;
+    let mut y = [0.0; N];
+    let mut path = Path::start(setup, &y);
+    // The shortest time a contact alone would compress in.
+    let mut shortest = f64::INFINITY;
+    for j in 0..k {
+        let vn = setup.v0[2 * j + 1];
+        if vn < 0.0 {
+            let energy = 0.5 * vn * vn / setup.w[2 * j + 1][2 * j + 1];
+            let smax = ((setup.eta + 1.0) * energy / setup.kappa[j]).powf(1.0 / (setup.eta + 1.0));
+            shortest = shortest.min(smax / -vn);
+        }
+    }
+    // The start in u = τ^(1/m) (a quarter of that time), or in τ for an integer exponent; the
+    // first step a tenth of the way.
+    let (mut var, mut x, mut h) = if setup.m == 1 {
+        (Var::Time, 0.0, 0.01 * shortest)
+    } else {
+        (
+            Var::Root,
+            0.0,
+            0.1 * (0.25 * shortest).powf(1.0 / f64::from(setup.m)),
+        )
+    };
+    let root_end = 0.25 * shortest;
+    let (mut attempts, mut steps) = (0usize, 0usize);
+    let mut modes = path.modes;
+    let mut k1 = var.rhs::<N>(setup, &modes, x, &y);
+    let ev0 = eval(setup, &modes, &y);
+    let mut watch = events::watch(setup, &modes, &y, &ev0);
+    let mut g_a = events::values(setup, &modes, &watch, &y, &ev0);
+    while (0..k).any(|j| modes.active(j)) {
+        attempts += 1;
+        if attempts > MAX_STEPS {
+            return Err(BreakdownReason::TooManySteps { limit: MAX_STEPS });
+        }
+        // A separation ends exactly at σ = 0.
+        let lands = matches!(var, Var::Separation { .. }) && x + h <= 0.0;
+        if lands {
+            h = -x;
+        }
+        let f = |xx: f64, yy: &[f64; N]| var.rhs::<N>(setup, &modes, xx, yy);
+        let st = dop853_step(&f, x, &y, &k1, h);
+        let en = error_measure(&st, |i| {
+            setup.atol[i] + RTOL * y[i].abs().max(st.y[i].abs())
+        });
+        if !(en <= 1.0) {
+            if std::env::var("LZB_TRACE2").is_ok() { eprintln!("reject {var:?} x {x:e} h {h:e} en {en:e}"); }
+            h *= shrink(en);
+            continue;
+        }
+        if std::env::var("LZB_TRACE2").is_ok() { eprintln!("accept {var:?} x {x:e} h {h:e} en {en:e}"); }
+        let y1 = st.y;
+        let k_end = f(x + h, &y1);
+        let ev_b = eval(setup, &modes, &y1);
+        let g_b = events::values(setup, &modes, &watch, &y1, &ev_b);
+        // (In the separation variable its own separation is the end of the range.)
+        let own = var.separating();
+        let crosses = |i: usize| {
+            g_a[i] <= 0.0 && g_b[i] > 0.0 && Some(watch.list[i]) != own.map(Event::Separation)
+        };
+        let crossing = (0..watch.n).any(crosses);
+        if !crossing && settled(setup, &modes, &y1, &ev_b.v) {
+            y = y1;
+            steps += 1;
+            path.end_settled(&y);
+            break;
+        }
+        if !crossing {
+            path.follow_primary(1.0, &y, &y1, &|| Dense::new(&f, x, &y, &st, &k_end, h));
+            y = y1;
+            steps += 1;
+            if let (true, Some(j)) = (lands, own) {
+                // The contact separates: on in time.
+                path.apply(Event::Separation(j), &mut y);
+                if settled(setup, &path.modes, &y, &eval(setup, &path.modes, &y).v) {
+                    path.end_settled(&y);
+                    break;
+                }
+                modes = path.modes;
+                let ev = eval(setup, &modes, &y);
+                h = guard(var.to_time(setup, x, h, &ev_b.v), shortest);
+                var = Var::Time.next(setup, &modes, 0.0, h, &y, &ev.v, root_end);
+                (x, h) = var.from_time(setup, &y, h);
+                k1 = var.rhs::<N>(setup, &modes, x, &y);
+                watch = events::watch(setup, &modes, &y, &ev);
+                g_a = events::values(setup, &modes, &watch, &y, &ev);
+                continue;
+            }
+            x += h;
+            k1 = k_end;
+            g_a = g_b;
+            h *= grow(en);
+            // The next variable: the start ends in u; a separation nears or stops nearing.
+            let next = var.next(setup, &modes, x, h, &y1, &ev_b.v, root_end);
+            if next != var {
+                h = guard(var.to_time(setup, x, h, &ev_b.v), shortest);
+                (x, h) = next.from_time(setup, &y, h);
+                var = next;
+                k1 = var.rhs::<N>(setup, &modes, x, &y);
+            }
+            continue;
+        }
+        // The first event inside the step, located on the dense output.
+        let dense = Dense::new(&f, x, &y, &st, &k_end, h);
+        let mut first: Option<(f64, usize)> = None;
+        for i in (0..watch.n).filter(|&i| crosses(i)) {
+            let seed = if g_a[i] == 0.0 {
+                0.0
+            } else {
+                let g = |th: f64| {
+                    let z = dense.at(th);
+                    events::value(setup, &modes, &watch, i, &z, &eval(setup, &modes, &z))
+                };
+                illinois(g, 0.0, g_a[i], 1.0, g_b[i])
+            };
+            if first.is_none_or(|(th, _)| seed < th) {
+                first = Some((seed, i));
+            }
+        }
+        let (seed, i) = first.expect("a crossing");
+        let event = watch.list[i];
+        // On the discrete solution: re-step to the seed; unless the event's function is there
+        // at or just past zero, Newton's iteration by re-stepping.
+        let value_at = |th: f64| {
+            let z = dop853_step(&f, x, &y, &k1, th * h).y;
+            let g = events::value(setup, &modes, &watch, i, &z, &eval(setup, &modes, &z));
+            (g, z)
+        };
+        let (theta, ye) = if seed == 0.0 {
+            (0.0, y)
+        } else {
+            let (g_seed, y_seed) = value_at(seed);
+            let close = 1e-13 * g_a[i].abs().max(g_b[i].abs());
+            if (0.0..=close).contains(&g_seed) {
+                (seed, y_seed)
+            } else {
+                let g_dense = |th: f64| {
+                    let z = dense.at(th);
+                    events::value(setup, &modes, &watch, i, &z, &eval(setup, &modes, &z))
+                };
+                let (lo, hi) = ((seed - 1e-6).max(0.0), (seed + 1e-6).min(1.0));
+                let slope = (g_dense(hi) - g_dense(lo)) / (hi - lo);
+                let mut last = (seed, y_seed);
+                let theta = newton_from_seed(
+                    |th| {
+                        let (g, z) = value_at(th);
+                        last = (th, z);
+                        g
+                    },
+                    g_a[i],
+                    g_b[i],
+                    seed,
+                    slope,
+                );
+                if last.0 == theta {
+                    (theta, last.1)
+                } else {
+                    (theta, value_at(theta).1)
+                }
+            }
+        };
+        path.follow_primary(theta, &y, &ye, &|| {
+            Dense::new(&f, x, &y, &st, &k_end, h)
+        });
+        y = ye;
+        steps += 1;
+        path.apply(event, &mut y);
+        if settled(setup, &path.modes, &y, &eval(setup, &path.modes, &y).v) {
+            path.end_settled(&y);
+            break;
+        }
+        // On from the event (its regimes may have changed): in time, or in a separation's
+        // variable if one is near.
+        modes = path.modes;
+        let ev = eval(setup, &modes, &y);
+        h = guard(var.to_time(setup, x, h, &ev.v), shortest);
+        var = Var::Time.next(setup, &modes, 0.0, h, &y, &ev.v, root_end);
+        (x, h) = var.from_time(setup, &y, h);
+        k1 = var.rhs::<N>(setup, &modes, x, &y);
+        watch = events::watch(setup, &modes, &y, &ev);
+        g_a = events::values(setup, &modes, &watch, &y, &ev);
+    }
+    if std::env::var("LZB_ATTEMPTS").is_ok() {
+        eprintln!("attempts {attempts} steps {steps}");
+    }
+    Ok(path.finish(&y, steps))
+}
+
+/// Whether the impact has settled at `y` (velocities `v`): every contact that carries a
+/// force moves by at most the settled round-off (`|v_nj| ≤ d`, [`super::SETTLED`] of the
+/// largest `|v⁻_i|`) and stores at most the energy that could move it by that much alone
+/// (`Ê_j ≤ ½ d² / W_njnj`), and no other contact approaches by more than `d`. (A geometric
+/// tail of ever smaller exchanges, an inelastic collapse, would otherwise never end.)
+fn settled(setup: &Setup, modes: &Modes, y: &[f64], v: &[f64; 2 * MAXK]) -> bool {
+    let d = setup.settled;
+    (0..setup.k).all(|j| {
+        let vn = v[2 * j + 1];
+        if modes.active(j) {
+            vn.abs() <= d
+                && setup.energy(j, y[PER * j + S]) <= 0.5 * d * d / setup.w[2 * j + 1][2 * j + 1]
+        } else {
+            vn >= -d
+        }
+    })
+}
+
+/// A step of `τ` for going on: `h`, or a hundredth of the shortest compression time if `h`
+/// is not a positive number (a change of variable where `dτ/dx` vanishes).
+#[inline]
+fn guard(h: f64, shortest: f64) -> f64 {
+    if h > 0.0 && h.is_finite() {
+        h
+    } else {
+        0.01 * shortest
+    }
+}
+
+/// Step-size factor after a rejected step (`en > 1` or NaN): `0.9 en^(-1/8)`, at least 0.2.
+#[inline]
+fn shrink(en: f64) -> f64 {
+    if en.is_finite() {
+        (0.9 / en.sqrt().sqrt().sqrt()).max(0.2)
+    } else {
+        0.2
+    }
+}
+
+/// Step-size factor after an accepted step: `0.9 en^(-1/8)`, at most 6.
+#[inline]
+fn grow(en: f64) -> f64 {
+    (0.9 / en.max(1e-10).sqrt().sqrt().sqrt()).min(6.0)
+}
+
+impl<'a> Path<'a> {
+    /// The regimes at the start: the approaching contacts in compression, the tangential
+    /// regimes chosen with the forces' limiting ratios `F_j ∝ κ_j |v_nj⁻|^η` (at `τ → 0`,
+    /// `s_j ≈ −v_nj⁻ τ`).
+    fn start(setup: &'a Setup, y: &[f64]) -> Path<'a> {
+        let k = setup.k;
+        let mut modes = Modes {
+            normal: [Normal::Off; MAXK],
+            tangent: [Tangent::Slip(0.0); MAXK],
+            stick: StickSet::EMPTY,
+        };
+        let mut f = [0.0; MAXK];
+        let mut best = (f64::NEG_INFINITY, 0);
+        for (j, fj) in f.iter_mut().enumerate().take(k) {
+            let vn = setup.v0[2 * j + 1];
+            if vn < 0.0 {
+                modes.normal[j] = Normal::Compression;
+                *fj = setup.kappa[j] * setup.power.of(-vn);
+                // The energy grows as κ_j |v_nj|^(η+1) τ^(η+1)/(η+1).
+                let growth = *fj * -vn;
+                if growth > best.0 {
+                    best = (growth, j);
+                }
+            }
+        }
+        let tracks = (0..k)
+            .map(|j| Track {
+                mark: 0.0,
+                compression: 0.0,
+                restitution: 0.0,
+                label: None,
+                result: ContactResult {
+                    impulse: Vec2::zeros(),
+                    velocity_after: Vec2::zeros(),
+                    phases: Vec::new(),
+                    work: WorkSplit::default(),
+                },
+                engaged: modes.active(j),
+            })
+            .collect();
+        let mut path = Path {
+            setup,
+            modes,
+            tracks,
+            primary: best.1,
+            primaries: vec![LzbPrimary {
+                contact: best.1,
+                impulse: 0.0,
+            }],
+        };
+        let mut rest = Vec::new();
+        for j in 0..k {
+            if path.modes.active(j) {
+                path.set_slip_or_rest(j, setup.v0[2 * j], &mut rest);
+            }
+        }
+        let allowed = vec![Allowed::ANY; rest.len()];
+        let v = eval(setup, &path.modes, y).v;
+        path.decide(&f, &v, y, rest, allowed);
+        path
+    }
+
+    /// An active contact with friction at rest (`|v_t| ≤` the round-off) goes to `rest` (its
+    /// regime to be chosen); otherwise it slips in the direction of `v_t` (a frictionless
+    /// contact at rest: its direction chosen with the others).
+    fn set_slip_or_rest(&mut self, j: usize, vt: f64, rest: &mut Vec<usize>) {
+        if vt.abs() > self.setup.approach {
+            self.modes.tangent[j] = Tangent::Slip(vt.signum());
+        } else if self.setup.mu[j] > 0.0 {
+            rest.push(j);
+        } else {
+            self.modes.tangent[j] = Tangent::Slip(0.0);
+        }
+    }
+
+    /// What `event` changes at the point `y` (located there), then the other contacts'
+    /// changes due at the same point and the tangential regimes.
+    fn apply(&mut self, event: Event, y: &mut [f64]) {
+        let setup = self.setup;
+        let j = event.contact();
+        let mut rest = Vec::new();
+        let mut allowed = Vec::new();
+        let v = eval(setup, &self.modes, y).v;
+        if std::env::var("LZB_TRACE3").is_ok() {
+            let en: f64 = (0..setup.k).map(|c| setup.energy(c, y[PER*c+S])).sum();
+            let vm = (0..setup.k).map(|c| v[2*c+1].abs()).fold(0.0f64, f64::max);
+            eprintln!("E {en:e} vmax {vm:e}");
+        }
+        if std::env::var("LZB_TRACE").is_ok() {
+            eprintln!("event {event:?} at pn {:?} v {:?} modes {:?} {:?}", (0..setup.k).map(|c| y[PER*c+PN]).collect::<Vec<_>>(), &v[..2*setup.k], &self.modes.normal[..setup.k], &self.modes.tangent[..setup.k]);
+        }
+        match event {
+            Event::CompressionEnd(_) => self.end_compression(j, y),
+            Event::Separation(_) => self.separate(j, y),
+            Event::Recompression(_) => self.recompress(j, y),
+            Event::Join(_) => {
+                self.join(j, y);
+                self.set_slip_or_rest(j, v[2 * j], &mut rest);
+                allowed.resize(rest.len(), Allowed::ANY);
+            }
+            Event::Halt(_) => {
+                let Tangent::Slip(sigma) = self.modes.tangent[j] else {
+                    unreachable!("a halt ends a slip")
+                };
+                if setup.mu[j] > 0.0 {
+                    // It sticks or reverses (as with one contact).
+                    rest.push(j);
+                    allowed.push(Allowed {
+                        stick: true,
+                        positive: sigma < 0.0,
+                        negative: sigma > 0.0,
+                    });
+                } else {
+                    self.modes.tangent[j] = Tangent::Slip(0.0);
+                }
+            }
+            Event::StickBreak(_) => {
+                rest.push(j);
+                allowed.push(Allowed {
+                    stick: false,
+                    positive: true,
+                    negative: true,
+                });
+            }
+        }
+        self.settle(j, y, &mut rest, &mut allowed);
+        let ev = eval(setup, &self.modes, y);
+        self.decide(&ev.f, &ev.v, y, rest, allowed);
+        self.after_change(y);
+        if std::env::var("LZB_TRACE").is_ok() {
+            eprintln!("   -> {:?} {:?}", &self.modes.normal[..setup.k], &self.modes.tangent[..setup.k]);
+        }
+    }
+
+    /// The normal changes of the contacts other than `except` already due at `y` (events of
+    /// several contacts at one point: a symmetric body).
+    fn settle(
+        &mut self,
+        except: usize,
+        y: &mut [f64],
+        rest: &mut Vec<usize>,
+        allowed: &mut Vec<Allowed>,
+    ) {
+        let setup = self.setup;
+        for _ in 0..3 * setup.k {
+            let v = eval(setup, &self.modes, y).v;
+            let mut changed = false;
+            for j in (0..setup.k).filter(|&j| j != except) {
+                let (vn, s) = (v[2 * j + 1], y[PER * j + S]);
+                match self.modes.normal[j] {
+                    Normal::Compression if vn > 0.0 => self.end_compression(j, y),
+                    Normal::Expansion if s <= 0.0 => self.separate(j, y),
+                    Normal::Expansion if vn < -setup.approach => self.recompress(j, y),
+                    Normal::Off if vn < -setup.approach => {
+                        self.join(j, y);
+                        let before = rest.len();
+                        self.set_slip_or_rest(j, v[2 * j], rest);
+                        allowed.resize(allowed.len() + rest.len() - before, Allowed::ANY);
+                    }
+                    _ => continue,
+                }
+                changed = true;
+            }
+            if !changed {
+                return;
+            }
+        }
+    }
+
+    /// Compression of `j` ends (`v_nj = 0`): its compression work is the energy stored in
+    /// this compression; it expands, or with `e_j = 0` its energy is lost and it is off.
+    fn end_compression(&mut self, j: usize, y: &mut [f64]) {
+        let setup = self.setup;
+        let energy = setup.energy(j, y[PER * j + S]);
+        let tr = &mut self.tracks[j];
+        tr.compression -= energy - tr.mark;
+        if setup.e[j] == 0.0 {
+            y[PER * j + S] = 0.0;
+            self.go_off(j, y);
+        } else {
+            self.modes.normal[j] = Normal::Expansion;
+            self.tracks[j].mark = energy;
+        }
+    }
+
+    /// `j` separates (its stored energy is back to zero): the restitution work of this
+    /// expansion is `e_j²` times the energy released.
+    fn separate(&mut self, j: usize, y: &mut [f64]) {
+        let setup = self.setup;
+        let energy = setup.energy(j, y[PER * j + S]);
+        let e2 = setup.e[j] * setup.e[j];
+        let tr = &mut self.tracks[j];
+        tr.restitution += e2 * (tr.mark - energy);
+        y[PER * j + S] = 0.0;
+        self.go_off(j, y);
+    }
+
+    /// `j` approaches again while loaded: the expansion so far is restitution work, a new
+    /// compression begins.
+    fn recompress(&mut self, j: usize, y: &[f64]) {
+        let setup = self.setup;
+        let energy = setup.energy(j, y[PER * j + S]);
+        let e2 = setup.e[j] * setup.e[j];
+        let tr = &mut self.tracks[j];
+        tr.restitution += e2 * (tr.mark - energy);
+        tr.mark = energy;
+        self.modes.normal[j] = Normal::Compression;
+    }
+
+    /// An off contact starts approaching: a new compression from zero energy.
+    fn join(&mut self, j: usize, y: &[f64]) {
+        let tr = &mut self.tracks[j];
+        if tr.engaged {
+            tr.result
+                .push_phase(ContactPhaseKind::Off, y[PER * j + PN]);
+        }
+        tr.engaged = true;
+        tr.mark = 0.0;
+        self.modes.normal[j] = Normal::Compression;
+        self.modes.tangent[j] = Tangent::Slip(0.0);
+    }
+
+    /// `j` carries no force any more: its phase ends; if it was the primary, the contact with
+    /// the most stored energy takes over.
+    fn go_off(&mut self, j: usize, y: &[f64]) {
+        self.modes.normal[j] = Normal::Off;
+        self.modes.tangent[j] = Tangent::Slip(0.0);
+        let tr = &mut self.tracks[j];
+        if let Some(label) = tr.label.take() {
+            tr.result.push_phase(label, y[PER * j + PN]);
+        }
+        if j == self.primary {
+            let setup = self.setup;
+            let mut best = (0.0, j);
+            for c in (0..setup.k).filter(|&c| self.modes.active(c)) {
+                let q = setup.energy_order(c, y[PER * c + S]);
+                if q > best.0 {
+                    best = (q, c);
+                }
+            }
+            if best.1 != j {
+                self.primary = best.1;
+                self.primaries.push(LzbPrimary {
+                    contact: best.1,
+                    impulse: y[PER * best.1 + PN],
+                });
+            }
+        }
+    }
+
+    /// Choose the tangential regimes: the contacts `rest` (restricted by `allowed`) and
+    /// every contact in stick, given the normal forces `f`; then the direction of the
+    /// frictionless contacts at rest (that of their tangential acceleration).
+    fn decide(
+        &mut self,
+        f: &[f64; MAXK],
+        v: &[f64; 2 * MAXK],
+        y: &[f64],
+        mut rest: Vec<usize>,
+        mut allowed: Vec<Allowed>,
+    ) {
+        let setup = self.setup;
+        let k = setup.k;
+        // Keep only active contacts with friction; add those in stick.
+        let mut c = 0;
+        while c < rest.len() {
+            let j = rest[c];
+            if !self.modes.active(j) || setup.mu[j] == 0.0 {
+                rest.remove(c);
+                allowed.remove(c);
+            } else {
+                c += 1;
+            }
+        }
+        for j in 0..k {
+            if self.modes.active(j) && self.modes.tangent[j] == Tangent::Stick && !rest.contains(&j)
+            {
+                rest.push(j);
+                allowed.push(Allowed::ANY);
+            }
+        }
+        if rest.is_empty() {
+            rebuild(setup, &mut self.modes);
+        } else {
+            choose(setup, &mut self.modes, f, &rest, &allowed);
+        }
+        // Frictionless contacts at rest: the direction their slip takes.
+        let pt = tangential_rates(setup, &self.modes, f);
+        let acc = tangential_acceleration(setup, f, &pt);
+        let ascale = acc[..k].iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        for j in 0..k {
+            if self.modes.active(j) && setup.mu[j] == 0.0 {
+                if let Tangent::Slip(0.0) = self.modes.tangent[j] {
+                    let vt = v[2 * j];
+                    let sigma = if vt.abs() > setup.approach {
+                        vt.signum()
+                    } else if acc[j].abs() > 1e-10 * ascale {
+                        acc[j].signum()
+                    } else {
+                        0.0
+                    };
+                    self.modes.tangent[j] = Tangent::Slip(sigma);
+                }
+            }
+        }
+        self.after_change(y);
+    }
+
+    /// Record the tangential regimes that changed (a phase ends at the contact's own normal
+    /// impulse).
+    fn after_change(&mut self, y: &[f64]) {
+        for j in 0..self.setup.k {
+            if !self.modes.active(j) {
+                continue;
+            }
+            let label = match self.modes.tangent[j] {
+                Tangent::Stick => ContactPhaseKind::Stick,
+                Tangent::Slip(s) if s > 0.0 => ContactPhaseKind::Slip(SlipDirection::Positive),
+                Tangent::Slip(s) if s < 0.0 => ContactPhaseKind::Slip(SlipDirection::Negative),
+                // Frictionless and not slipping: held at rest, as the one-contact path labels it.
+                Tangent::Slip(_) => ContactPhaseKind::Stick,
+            };
+            let tr = &mut self.tracks[j];
+            match tr.label {
+                Some(old) if old != label => {
+                    tr.result.push_phase(old, y[PER * j + PN]);
+                    tr.label = Some(label);
+                }
+                Some(_) => {}
+                None => tr.label = Some(label),
+            }
+        }
+    }
+
+    /// The primary contact along a step from `(t, y0)` to the fraction `theta` of `h`, where
+    /// the state is `y1`: a contact whose stored energy exceeds the primary's by more than
+    /// [`PRIMARY_MARGIN`] takes over, where its energy overtook the primary's (located on the
+    /// dense output, which is built only then).
+    fn follow_primary<const N: usize>(
+        &mut self,
+        theta: f64,
+        y0: &[f64; N],
+        y1: &[f64; N],
+        dense: &dyn Fn() -> Dense<N>,
+    ) {
+        let setup = self.setup;
+        let m = self.primary;
+        let order = |j: usize, y: &[f64]| setup.energy_order(j, y[PER * j + S]);
+        let qm = order(m, y1);
+        let mut best = (qm * (1.0 + PRIMARY_MARGIN), m);
+        for j in (0..setup.k).filter(|&j| self.modes.active(j)) {
+            let q = order(j, y1);
+            if q > best.0 {
+                best = (q, j);
+            }
+        }
+        let c = best.1;
+        if c == m {
+            return;
+        }
+        let g = |y: &[f64]| order(c, y) - (1.0 + PRIMARY_MARGIN) * order(m, y);
+        let g0 = g(y0);
+        let at = if g0 > 0.0 {
+            y0[PER * c + PN]
+        } else {
+            let d = dense();
+            let th = illinois(|th| g(&d.at(th)), 0.0, g0, theta, g(y1).max(0.0));
+            d.at(th)[PER * c + PN]
+        };
+        self.primary = c;
+        self.primaries.push(LzbPrimary {
+            contact: c,
+            impulse: at,
+        });
+    }
+
+    /// The impact has settled ([`settled`]): the contacts still carrying a force are off,
+    /// their stored energy (below round-off) lost.
+    fn end_settled(&mut self, y: &[f64]) {
+        for j in 0..self.setup.k {
+            if self.modes.active(j) {
+                let energy = self.setup.energy(j, y[PER * j + S]);
+                let tr = &mut self.tracks[j];
+                if self.modes.normal[j] == Normal::Compression {
+                    tr.compression -= energy - tr.mark;
+                } else {
+                    let e2 = self.setup.e[j] * self.setup.e[j];
+                    tr.restitution += e2 * (tr.mark - energy);
+                }
+                self.go_off(j, y);
+            }
+        }
+    }
+
+    /// The results at the end `y`.
+    fn finish(self, y: &[f64], steps: usize) -> End {
+        let setup = self.setup;
+        let ev: Eval = eval(setup, &self.modes, y);
+        let contacts = self
+            .tracks
+            .into_iter()
+            .enumerate()
+            .map(|(j, mut tr)| {
+                let o = PER * j;
+                tr.result.impulse = Vec2::new(y[o + PT], y[o + PN]);
+                tr.result.velocity_after = Vec2::new(ev.v[2 * j], ev.v[2 * j + 1]);
+                tr.result.work = WorkSplit {
+                    compression: tr.compression,
+                    restitution: tr.restitution,
+                    friction: y[o + WT],
+                };
+                if !tr.engaged {
+                    tr.result.push_phase(ContactPhaseKind::Off, 0.0);
+                }
+                tr.result
+            })
+            .collect();
+        End {
+            contacts,
+            primaries: self.primaries,
+            steps,
+        }
+    }
+}

@@ -1,0 +1,152 @@
+//! The independent variables of the integration. The right-hand side is autonomous in the
+//! contact-force time `τ`, and smooth except where a contact's force law is: at `s_j = 0`,
+//! where `F_j = κ_j s_j^η` is not analytic. Two such points are met on every path, and a
+//! Runge–Kutta step across either has a low order (its error estimate then fails too):
+//!
+//! * **the start**, `τ = 0`, where every approaching contact has `s_j ≈ −v_nj⁻ τ`, so
+//!   `F_j ∝ τ^η`: the path starts in `u = τ^(1/m)` (`dτ = m u^(m−1) du`), until `τ` reaches
+//!   a quarter of the shortest compression time of a contact alone. With `m = 2` and
+//!   `η = 3/2` the path is analytic in `u` (every term `τ^(a + 3b/2)` is a power of `u`);
+//! * **a separation**, where an expanding contact's `s_j` falls linearly to zero, so
+//!   `F_j ∝ (τ_e − τ)^η`: once the separation is predicted within the next two steps, the
+//!   path goes on in `σ = s_j^(1/m)` (`dτ/dσ = −m σ^(m−1) e_j²/v_nj`, regular while
+//!   `v_nj > 0`), in which the separating contact's force `κ_j σ^(mη)` is analytic for
+//!   `η = 3/2`, `m = 2`, and the separation is the end of the range, `σ = 0`, reached exactly
+//!   (back to `τ` if `v_nj` falls below a quarter of its value on entry: the contact may be
+//!   about to recompress).
+//!
+//! The power `m` is 2 when `2η` is an integer, else the least with `m η ≥ 9` (the force then
+//! smooth to beyond the integrator's order); an integer `η` (a linear spring, `η = 1`) has no
+//! singular point and is integrated in `τ` throughout. A contact joining mid-impact starts at
+//! `v_nj = 0` with `s_j ∝ (τ − τ_j)²`, so its force `∝ (τ − τ_j)^(2η)` is analytic for
+//! `η = 3/2`. Any event returns the path to `τ`.
+
+use super::field::rates;
+use super::state::{Modes, Normal, Setup, MAXK, PER, S};
+
+/// The variable the path is integrated in.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) enum Var {
+    /// The contact-force time `τ` (`dp_nj = F_j dτ`).
+    Time,
+    /// `u = √τ`, at the start.
+    Root,
+    /// `σ = √s_j` while contact `contact`'s expansion ends (`σ` decreasing to 0); `entry` its
+    /// normal velocity when the variable was taken.
+    Separation { contact: usize, entry: f64 },
+}
+
+impl Var {
+    /// `dτ/dx` at `x`, given the velocities `v`.
+    #[inline]
+    fn dtau(self, setup: &Setup, x: f64, v: &[f64; 2 * MAXK]) -> f64 {
+        let m = setup.m;
+        match self {
+            Var::Time => 1.0,
+            Var::Root => f64::from(m) * x.powi(m - 1),
+            Var::Separation { contact: j, .. } => {
+                -f64::from(m) * x.powi(m - 1) * setup.e[j] * setup.e[j] / v[2 * j + 1]
+            }
+        }
+    }
+
+    /// `dy/dx` at `(x, y)`.
+    #[inline]
+    pub(super) fn rhs<const N: usize>(
+        self,
+        setup: &Setup,
+        modes: &Modes,
+        x: f64,
+        y: &[f64; N],
+    ) -> [f64; N] {
+        let (mut dy, ev) = rates::<N>(setup, modes, y);
+        if self != Var::Time {
+            let c = self.dtau(setup, x, &ev.v);
+            for d in dy.iter_mut() {
+                *d *= c;
+            }
+            if let Var::Separation { contact: j, .. } = self {
+                // s_j = σ^m exactly.
+                dy[PER * j + S] = f64::from(setup.m) * x.powi(setup.m - 1);
+            }
+        }
+        dy
+    }
+
+    /// The separating contact, in the separation variable.
+    #[inline]
+    pub(super) fn separating(self) -> Option<usize> {
+        match self {
+            Var::Separation { contact, .. } => Some(contact),
+            _ => None,
+        }
+    }
+
+    /// A step `h` of this variable at `x` as a step of `τ` (positive).
+    #[inline]
+    pub(super) fn to_time(self, setup: &Setup, x: f64, h: f64, v: &[f64; 2 * MAXK]) -> f64 {
+        (h * self.dtau(setup, x, v)).abs()
+    }
+
+    /// The variable to go on in after an accepted step that ended at `x` (state `y`,
+    /// velocities `v`), the next step being `h` in this variable; `root_end` the `τ` where
+    /// the start ends.
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn next(
+        self,
+        setup: &Setup,
+        modes: &Modes,
+        x: f64,
+        h: f64,
+        y: &[f64],
+        v: &[f64; 2 * MAXK],
+        root_end: f64,
+    ) -> Var {
+        match self {
+            Var::Root if x.powi(setup.m) >= root_end => Var::Time,
+            Var::Root => Var::Root,
+            Var::Time if setup.m == 1 => Var::Time,
+            Var::Time => {
+                // The expanding contact whose separation is soonest, within two steps.
+                let mut best: Option<(f64, usize)> = None;
+                for j in 0..setup.k {
+                    let vn = v[2 * j + 1];
+                    if modes.normal[j] != Normal::Expansion || !(vn > setup.settled) {
+                        continue;
+                    }
+                    let e2 = setup.e[j] * setup.e[j];
+                    let ahead = y[PER * j + S] * e2 / vn;
+                    if ahead <= 2.0 * h && best.is_none_or(|(b, _)| ahead < b) {
+                        best = Some((ahead, j));
+                    }
+                }
+                match best {
+                    Some((_, j)) => Var::Separation {
+                        contact: j,
+                        entry: v[2 * j + 1],
+                    },
+                    None => Var::Time,
+                }
+            }
+            Var::Separation { contact: j, entry } => {
+                if modes.normal[j] != Normal::Expansion || v[2 * j + 1] < 0.25 * entry {
+                    Var::Time
+                } else {
+                    self
+                }
+            }
+        }
+    }
+
+    /// Where this variable starts at the state `y` and its first step, from a step `h` of `τ`.
+    pub(super) fn from_time(self, setup: &Setup, y: &[f64], h: f64) -> (f64, f64) {
+        match self {
+            Var::Time | Var::Root => (0.0, h),
+            Var::Separation { contact: j, .. } => {
+                // The whole way to the separation at once (the error test shortens it).
+                let sigma = y[PER * j + S].max(0.0).powf(1.0 / f64::from(setup.m));
+                (sigma, -sigma)
+            }
+        }
+    }
+}
