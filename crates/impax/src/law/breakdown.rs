@@ -61,6 +61,14 @@ pub enum BreakdownReason {
         /// The bound that was reached.
         limit: usize,
     },
+    /// `lzb` (several contacts) came to rest with energy still stored in its contacts: every
+    /// contact that carries a force is at rest and the forces balance (redundant contacts
+    /// wedged by friction, `W` singular). The compliant contacts never release that energy:
+    /// the impact does not end.
+    Jammed {
+        /// The energy held in the contacts.
+        stored: f64,
+    },
 }
 
 impl BreakdownReason {
@@ -78,6 +86,7 @@ impl BreakdownReason {
             BreakdownReason::TooManyImpacts { .. } => "too-many-impacts",
             BreakdownReason::TooManyContacts { .. } => "too-many-contacts",
             BreakdownReason::TooManySteps { .. } => "too-many-steps",
+            BreakdownReason::Jammed { .. } => "jammed",
         }
     }
 }
@@ -121,6 +130,10 @@ impl fmt::Display for BreakdownReason {
             BreakdownReason::TooManySteps { limit } => write!(
                 f,
                 "{limit} integration steps and a contact still carries an impulse: the impact does not settle"
+            ),
+            BreakdownReason::Jammed { stored } => write!(
+                f,
+                "the contacts came to rest holding energy {stored:.6} (wedged): the impact does not end"
             ),
         }
     }

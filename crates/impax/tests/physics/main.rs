@@ -12,7 +12,6 @@ mod lcp_spatial;
 mod mechanisms;
 mod multi_contact;
 mod multi_lzb;
-mod multi_lzb_scratch;
 mod paper_liu2012;
 mod properties;
 mod regression_brach_frictionless;

@@ -21,12 +21,12 @@
 //!   result leaves a contact approaching;
 //! * errors name their field; the one-contact laws are refused with two contacts.
 
-use impax::math::{SplitMix64, Vec2};
-use impax::multi::{lcp, sequential, ContactPhaseKind, MultiDetail, MultiOutcome, MultiProblem};
 use crate::support::{
     body_after, contact_space, cradle_jacobian, dump, flat, kinetic, random_multi, random_one,
     rod_jacobian, Random,
 };
+use impax::math::{SplitMix64, Vec2};
+use impax::multi::{lcp, sequential, ContactPhaseKind, MultiDetail, MultiOutcome, MultiProblem};
 use impax::planar::{ContactProblem, Verdict};
 use impax::LawId;
 use nalgebra::{DMatrix, DVector};

@@ -35,7 +35,11 @@ pub fn rotation(rng: &mut SplitMix64) -> Mat3 {
 }
 
 /// `W = J M⁻¹ Jᵀ` and `v = J u` from a contact Jacobian, a diagonal mass matrix and `u`.
-pub fn contact_space(j: &DMatrix<f64>, masses: &[f64], u: &DVector<f64>) -> (DMatrix<f64>, Vec<f64>) {
+pub fn contact_space(
+    j: &DMatrix<f64>,
+    masses: &[f64],
+    u: &DVector<f64>,
+) -> (DMatrix<f64>, Vec<f64>) {
     let minv = DMatrix::from_diagonal(&DVector::from_iterator(
         masses.len(),
         masses.iter().map(|m| 1.0 / m),

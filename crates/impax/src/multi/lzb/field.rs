@@ -27,7 +27,7 @@ pub(super) struct Eval {
 
 /// The tangential impulse rates given the normal forces `f`: slip `−μ σ F`, stick by the
 /// stick set's least-norm solve.
-#[inline]
+#[inline(always)]
 pub(super) fn tangential_rates(setup: &Setup, modes: &Modes, f: &[f64; MAXK]) -> [f64; MAXK] {
     let k = setup.k;
     let mut pt = [0.0; MAXK];
@@ -37,39 +37,44 @@ pub(super) fn tangential_rates(setup: &Setup, modes: &Modes, f: &[f64; MAXK]) ->
         }
     }
     let st = &modes.stick;
-    if st.n > 0 {
-        let mut r = [0.0; MAXK];
-        for (a, ra) in r.iter_mut().enumerate().take(st.n) {
-            let row = &setup.w[2 * st.idx[a]];
-            let mut x = 0.0;
-            for c in 0..k {
-                x += row[2 * c + 1] * f[c] + row[2 * c] * pt[c];
-            }
-            *ra = x;
+    let n = st.n;
+    if n > 0 {
+        // (Stick contacts have no rate yet: pt is zero there.)
+        let mut q = [0.0; 2 * MAXK];
+        for c in 0..k {
+            q[2 * c] = pt[c];
+            q[2 * c + 1] = f[c];
         }
-        for a in 0..st.n {
-            let mut x = 0.0;
-            for (b, rb) in r.iter().enumerate().take(st.n) {
-                x -= st.pinv[a][b] * rb;
-            }
-            pt[st.idx[a]] = x;
+        let mut r = [0.0; MAXK];
+        for (ra, &a) in r.iter_mut().zip(&st.idx[..n]) {
+            *ra = dot(&setup.w[2 * a][..2 * k], &q[..2 * k]);
+        }
+        for (row, &a) in st.pinv.iter().zip(&st.idx[..n]) {
+            pt[a] = -dot(&row[..n], &r[..n]);
         }
     }
     pt
 }
 
+/// `Σ a_i b_i`.
+#[inline(always)]
+fn dot(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| x * y).sum()
+}
+
 /// The velocities, forces and tangential rates at the state `y`.
-#[inline]
+#[inline(always)]
 pub(super) fn eval(setup: &Setup, modes: &Modes, y: &[f64]) -> Eval {
     let k = setup.k;
+    let n = 2 * k;
+    let mut p = [0.0; 2 * MAXK];
+    for c in 0..k {
+        p[2 * c] = y[PER * c + PT];
+        p[2 * c + 1] = y[PER * c + PN];
+    }
     let mut v = [0.0; 2 * MAXK];
-    for (i, vi) in v.iter_mut().enumerate().take(2 * k) {
-        let row = &setup.w[i];
-        let mut x = setup.v0[i];
-        for c in 0..k {
-            x += row[2 * c] * y[PER * c + PT] + row[2 * c + 1] * y[PER * c + PN];
-        }
-        *vi = x;
+    for ((vi, row), v0) in v.iter_mut().zip(&setup.w[..n]).zip(&setup.v0[..n]) {
+        *vi = v0 + dot(&row[..n], &p[..n]);
     }
     let mut f = [0.0; MAXK];
     for (j, fj) in f.iter_mut().enumerate().take(k) {
@@ -82,8 +87,12 @@ pub(super) fn eval(setup: &Setup, modes: &Modes, y: &[f64]) -> Eval {
 }
 
 /// `dy/dτ` (module docs) and the quantities of the point.
-#[inline]
-pub(super) fn rates<const N: usize>(setup: &Setup, modes: &Modes, y: &[f64; N]) -> ([f64; N], Eval) {
+#[inline(always)]
+pub(super) fn rates<const N: usize>(
+    setup: &Setup,
+    modes: &Modes,
+    y: &[f64; N],
+) -> ([f64; N], Eval) {
     let ev = eval(setup, modes, y);
     let mut dy = [0.0; N];
     for j in 0..setup.k {

@@ -224,13 +224,7 @@ pub(super) fn rebuild(setup: &Setup, modes: &mut Modes) {
 /// How far the regimes of `rest` are from consistent, relative to the force scale (0 when
 /// consistent): a sticking contact's friction beyond its cone, a slipping one's tangential
 /// acceleration against its direction.
-fn violation(
-    setup: &Setup,
-    modes: &Modes,
-    f: &[f64; MAXK],
-    rest: &[usize],
-    fscale: f64,
-) -> f64 {
+fn violation(setup: &Setup, modes: &Modes, f: &[f64; MAXK], rest: &[usize], fscale: f64) -> f64 {
     let pt = tangential_rates(setup, modes, f);
     let acc = tangential_acceleration(setup, f, &pt);
     // The round-off of an acceleration: |W| times the rates.

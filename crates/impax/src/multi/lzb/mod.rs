@@ -36,7 +36,7 @@ pub const APPROACH_ROUND_OFF: f64 = 1e-12;
 /// most `SETTLED · max_i |v⁻_i|` and stores at most the energy that would move it by that much,
 /// and no other contact approaches by more: the tail of ever smaller exchanges of an
 /// inelastic collapse (three nearly plastic contacts pressing on each other) is cut there.
-pub const SETTLED: f64 = 1e-10;
+pub const SETTLED: f64 = 1e-9;
 
 /// A contact becomes the primary when its stored energy exceeds the primary's by more than
 /// this fraction (in `Ê^(1/(η+1))`): ties (a symmetric body) keep the primary.

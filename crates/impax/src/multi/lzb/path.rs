@@ -5,22 +5,22 @@
 //! An event is located on the step's seventh-order dense output: the root of the event
 //! function in the step's fraction `θ` by the Illinois iteration ([`illinois`]) to `4ε` in
 //! `θ` (of the events inside one step, the first). The path goes on from the discrete
-//! solution there, by re-stepping from the step's start to that `θ`; if the event's function
-//! is still below zero on the discrete solution, its crossing on the discrete solution is
-//! found by Newton's iteration with the dense output's slope ([`newton_from_seed`]), so that
-//! the event has happened where the path goes on.
+//! solution there, by re-stepping from the step's start to that `θ` (the dense output and
+//! the discrete solution differ by less than the step's error; where the event's function is
+//! there a hair below zero, the regime it starts is offset so that it starts below zero all
+//! the same: `events.rs`).
 
 use super::events::{self, Event};
 use super::field::{eval, tangential_acceleration, tangential_rates, Eval};
-use super::variable::Var;
 use super::friction::{choose, rebuild, Allowed};
 use super::state::{Modes, Normal, Setup, StickSet, Tangent, MAXK, PER, PN, PT, S, WT};
+use super::variable::Var;
 use super::{MAX_STEPS, PRIMARY_MARGIN, RTOL};
 use crate::law::{BreakdownReason, WorkSplit};
 use crate::math::Vec2;
 use crate::multi::{ContactPhaseKind, ContactResult, LzbPrimary};
 use crate::numerics::dop853::{dop853_step, error_measure, Dense};
-use crate::numerics::roots::{illinois, newton_from_seed};
+use crate::numerics::roots::illinois;
 use crate::planar::SlipDirection;
 
 /// What the path ends with (canonical units).
@@ -109,14 +109,11 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
             setup.atol[i] + RTOL * y[i].abs().max(st.y[i].abs())
         });
         if !(en <= 1.0) {
-            if std::env::var("LZB_TRACE2").is_ok() { eprintln!("reject {var:?} x {x:e} h {h:e} en {en:e}"); }
             h *= shrink(en);
             continue;
         }
-        if std::env::var("LZB_TRACE2").is_ok() { eprintln!("accept {var:?} x {x:e} h {h:e} en {en:e}"); }
         let y1 = st.y;
-        let k_end = f(x + h, &y1);
-        let ev_b = eval(setup, &modes, &y1);
+        let (k_end, ev_b) = var.rhs_eval::<N>(setup, &modes, x + h, &y1);
         let g_b = events::values(setup, &modes, &watch, &y1, &ev_b);
         // (In the separation variable its own separation is the end of the range.)
         let own = var.separating();
@@ -129,6 +126,11 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
             steps += 1;
             path.end_settled(&y);
             break;
+        }
+        if !crossing {
+            if let Some(stored) = jammed(setup, &modes, &y1, &ev_b) {
+                return Err(BreakdownReason::Jammed { stored });
+            }
         }
         if !crossing {
             path.follow_primary(1.0, &y, &y1, &|| Dense::new(&f, x, &y, &st, &k_end, h));
@@ -184,49 +186,13 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
         }
         let (seed, i) = first.expect("a crossing");
         let event = watch.list[i];
-        // On the discrete solution: re-step to the seed; unless the event's function is there
-        // at or just past zero, Newton's iteration by re-stepping.
-        let value_at = |th: f64| {
-            let z = dop853_step(&f, x, &y, &k1, th * h).y;
-            let g = events::value(setup, &modes, &watch, i, &z, &eval(setup, &modes, &z));
-            (g, z)
-        };
+        // On the discrete solution: re-step from the step's start to the seed.
         let (theta, ye) = if seed == 0.0 {
             (0.0, y)
         } else {
-            let (g_seed, y_seed) = value_at(seed);
-            let close = 1e-13 * g_a[i].abs().max(g_b[i].abs());
-            if (0.0..=close).contains(&g_seed) {
-                (seed, y_seed)
-            } else {
-                let g_dense = |th: f64| {
-                    let z = dense.at(th);
-                    events::value(setup, &modes, &watch, i, &z, &eval(setup, &modes, &z))
-                };
-                let (lo, hi) = ((seed - 1e-6).max(0.0), (seed + 1e-6).min(1.0));
-                let slope = (g_dense(hi) - g_dense(lo)) / (hi - lo);
-                let mut last = (seed, y_seed);
-                let theta = newton_from_seed(
-                    |th| {
-                        let (g, z) = value_at(th);
-                        last = (th, z);
-                        g
-                    },
-                    g_a[i],
-                    g_b[i],
-                    seed,
-                    slope,
-                );
-                if last.0 == theta {
-                    (theta, last.1)
-                } else {
-                    (theta, value_at(theta).1)
-                }
-            }
+            (seed, dop853_step(&f, x, &y, &k1, seed * h).y)
         };
-        path.follow_primary(theta, &y, &ye, &|| {
-            Dense::new(&f, x, &y, &st, &k_end, h)
-        });
+        path.follow_primary(theta, &y, &ye, &|| Dense::new(&f, x, &y, &st, &k_end, h));
         y = ye;
         steps += 1;
         path.apply(event, &mut y);
@@ -244,9 +210,6 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
         k1 = var.rhs::<N>(setup, &modes, x, &y);
         watch = events::watch(setup, &modes, &y, &ev);
         g_a = events::values(setup, &modes, &watch, &y, &ev);
-    }
-    if std::env::var("LZB_ATTEMPTS").is_ok() {
-        eprintln!("attempts {attempts} steps {steps}");
     }
     Ok(path.finish(&y, steps))
 }
@@ -267,6 +230,40 @@ fn settled(setup: &Setup, modes: &Modes, y: &[f64], v: &[f64; 2 * MAXK]) -> bool
             vn >= -d
         }
     })
+}
+
+/// The energy stored in the contacts if they are jammed at `y` (quantities `ev`): every
+/// contact that carries a force at rest (its velocity within the settled round-off) and no
+/// velocity changing (`|dv_i/dτ|` at those contacts below `1e-9` of `Σ_c |W_ic| |dp_c/dτ|`):
+/// the path is at an equilibrium holding energy, which a positive definite `W` cannot have
+/// (`W dp/dτ = 0` needs zero forces).
+fn jammed(setup: &Setup, modes: &Modes, y: &[f64], ev: &Eval) -> Option<f64> {
+    let d = setup.settled;
+    let k = setup.k;
+    let mut stored = 0.0;
+    for j in (0..k).filter(|&j| modes.active(j)) {
+        if ev.v[2 * j].abs() > d || ev.v[2 * j + 1].abs() > d {
+            return None;
+        }
+        stored += setup.energy(j, y[PER * j + S]);
+    }
+    if !(stored > 0.0) {
+        return None;
+    }
+    for j in (0..k).filter(|&j| modes.active(j)) {
+        for i in [2 * j, 2 * j + 1] {
+            let row = &setup.w[i];
+            let (mut acc, mut scale) = (0.0, 0.0);
+            for c in 0..k {
+                acc += row[2 * c] * ev.pt[c] + row[2 * c + 1] * ev.f[c];
+                scale += (row[2 * c] * ev.pt[c]).abs() + (row[2 * c + 1] * ev.f[c]).abs();
+            }
+            if acc.abs() > 1e-9 * scale {
+                return None;
+            }
+        }
+    }
+    Some(setup.units.work(stored))
 }
 
 /// A step of `τ` for going on: `h`, or a hundredth of the shortest compression time if `h`
@@ -379,14 +376,6 @@ impl<'a> Path<'a> {
         let mut rest = Vec::new();
         let mut allowed = Vec::new();
         let v = eval(setup, &self.modes, y).v;
-        if std::env::var("LZB_TRACE3").is_ok() {
-            let en: f64 = (0..setup.k).map(|c| setup.energy(c, y[PER*c+S])).sum();
-            let vm = (0..setup.k).map(|c| v[2*c+1].abs()).fold(0.0f64, f64::max);
-            eprintln!("E {en:e} vmax {vm:e}");
-        }
-        if std::env::var("LZB_TRACE").is_ok() {
-            eprintln!("event {event:?} at pn {:?} v {:?} modes {:?} {:?}", (0..setup.k).map(|c| y[PER*c+PN]).collect::<Vec<_>>(), &v[..2*setup.k], &self.modes.normal[..setup.k], &self.modes.tangent[..setup.k]);
-        }
         match event {
             Event::CompressionEnd(_) => self.end_compression(j, y),
             Event::Separation(_) => self.separate(j, y),
@@ -425,9 +414,6 @@ impl<'a> Path<'a> {
         let ev = eval(setup, &self.modes, y);
         self.decide(&ev.f, &ev.v, y, rest, allowed);
         self.after_change(y);
-        if std::env::var("LZB_TRACE").is_ok() {
-            eprintln!("   -> {:?} {:?}", &self.modes.normal[..setup.k], &self.modes.tangent[..setup.k]);
-        }
     }
 
     /// The normal changes of the contacts other than `except` already due at `y` (events of
@@ -509,8 +495,7 @@ impl<'a> Path<'a> {
     fn join(&mut self, j: usize, y: &[f64]) {
         let tr = &mut self.tracks[j];
         if tr.engaged {
-            tr.result
-                .push_phase(ContactPhaseKind::Off, y[PER * j + PN]);
+            tr.result.push_phase(ContactPhaseKind::Off, y[PER * j + PN]);
         }
         tr.engaged = true;
         tr.mark = 0.0;

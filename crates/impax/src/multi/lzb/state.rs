@@ -12,6 +12,7 @@
 //! The velocities are not integrated: `v = v⁻ + W p` at every point.
 
 use super::{MAX_CONTACTS, RTOL};
+use crate::math::Units;
 use crate::multi::MultiProblem;
 
 /// The largest number of contacts (the arrays' size).
@@ -80,6 +81,8 @@ pub(super) struct Setup {
     /// The impact has settled when no velocity exceeds this ([`super::SETTLED`] times
     /// `max_i |v⁻_i|`; `path.rs`).
     pub settled: f64,
+    /// The problem's canonical units (for the numbers of a breakdown).
+    pub units: Units,
     /// The absolute tolerance of each component of the state (the relative one is
     /// [`RTOL`]).
     pub atol: [f64; PER * MAXK],
@@ -88,7 +91,7 @@ pub(super) struct Setup {
 impl Setup {
     /// The working form of `problem` (`K ≤ MAXK`, checked by the caller).
     pub(super) fn new(problem: &MultiProblem) -> Setup {
-        let (_, w, v, _) = problem.canonical();
+        let (units, w, v, _) = problem.canonical();
         let k = problem.contacts();
         debug_assert!(k <= MAXK);
         let mut s = Setup {
@@ -103,6 +106,7 @@ impl Setup {
             m: 1,
             approach: 0.0,
             settled: 0.0,
+            units,
             atol: [0.0; PER * MAXK],
         };
         s.power = if s.eta == 1.0 {

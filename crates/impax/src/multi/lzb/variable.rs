@@ -21,7 +21,7 @@
 //! `v_nj = 0` with `s_j ∝ (τ − τ_j)²`, so its force `∝ (τ − τ_j)^(2η)` is analytic for
 //! `η = 3/2`. Any event returns the path to `τ`.
 
-use super::field::rates;
+use super::field::{rates, Eval};
 use super::state::{Modes, Normal, Setup, MAXK, PER, S};
 
 /// The variable the path is integrated in.
@@ -38,7 +38,7 @@ pub(super) enum Var {
 
 impl Var {
     /// `dτ/dx` at `x`, given the velocities `v`.
-    #[inline]
+    #[inline(always)]
     fn dtau(self, setup: &Setup, x: f64, v: &[f64; 2 * MAXK]) -> f64 {
         let m = setup.m;
         match self {
@@ -51,7 +51,7 @@ impl Var {
     }
 
     /// `dy/dx` at `(x, y)`.
-    #[inline]
+    #[inline(always)]
     pub(super) fn rhs<const N: usize>(
         self,
         setup: &Setup,
@@ -59,6 +59,18 @@ impl Var {
         x: f64,
         y: &[f64; N],
     ) -> [f64; N] {
+        self.rhs_eval(setup, modes, x, y).0
+    }
+
+    /// `dy/dx` at `(x, y)` and the point's quantities.
+    #[inline(always)]
+    pub(super) fn rhs_eval<const N: usize>(
+        self,
+        setup: &Setup,
+        modes: &Modes,
+        x: f64,
+        y: &[f64; N],
+    ) -> ([f64; N], Eval) {
         let (mut dy, ev) = rates::<N>(setup, modes, y);
         if self != Var::Time {
             let c = self.dtau(setup, x, &ev.v);
@@ -70,7 +82,7 @@ impl Var {
                 dy[PER * j + S] = f64::from(setup.m) * x.powi(setup.m - 1);
             }
         }
-        dy
+        (dy, ev)
     }
 
     /// The separating contact, in the separation variable.
