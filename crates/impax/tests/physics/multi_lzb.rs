@@ -292,8 +292,14 @@ fn housner_rocking_block() {
     // lifts it, i.e. (along the straight stick path from 0 to Housner's end) as long as A
     // leaves upwards after, ω⁺ ≥ 0 relative to ω⁻: b² ≤ 2 h².
     let mut worst = 0.0f64;
-    for (b, h) in [(0.2, 1.0), (0.5, 1.0), (1.0, 1.0), (1.3, 1.0), (0.05, 0.3)] {
-        let alpha = (b / h as f64).atan();
+    for (b, h) in [
+        (0.2f64, 1.0f64),
+        (0.5, 1.0),
+        (1.0, 1.0),
+        (1.3, 1.0),
+        (0.05, 0.3),
+    ] {
+        let alpha = (b / h).atan();
         let ratio = 1.0 - 1.5 * alpha.sin().powi(2);
         for (m, omega) in [(1.0, -1.0), (7.5, -0.3)] {
             let (j, masses, u) = block(b, h, m, omega);
@@ -329,13 +335,13 @@ fn housner_rocking_block() {
     println!("Housner's block (b² ≤ 2h²): ω⁺/ω⁻ within {worst:.1e} of 1 − (3/2) sin²α");
     // A wide block (b² > 2 h²): the impulse at B presses A down, A engages and Housner's
     // single-impact assumption no longer holds.
-    for (b, h) in [(1.6, 1.0), (3.0, 1.0)] {
+    for (b, h) in [(1.6f64, 1.0f64), (3.0, 1.0)] {
         let (j, masses, u) = block(b, h, 1.0, -1.0);
         let (w, v) = contact_space(&j, &masses, &u);
         let p = MultiProblem::new(w, &v, &[2.0], &[0.5, 0.0]).unwrap();
         let o = lzb::resolve(&p).unwrap();
         let ua = body_after(&j, &masses, &u, &o);
-        let alpha = (b / h as f64).atan();
+        let alpha = (b / h).atan();
         println!(
             "wide block b/h = {}: lzb ω⁺/ω⁻ = {:.6}, Housner {:.6}, impulse at A {:?}",
             b / h,

@@ -147,7 +147,7 @@ pub(super) fn choose(
     let z = rest.len().min(ENUMERATED);
     // Past the enumerated ones (not observed), slip against the all-stick friction.
     if rest.len() > z {
-        for &j in &rest[..] {
+        for &j in rest {
             modes.tangent[j] = Tangent::Stick;
         }
         rebuild(setup, modes);
@@ -263,6 +263,7 @@ mod tests {
     use super::*;
 
     #[test]
+    #[allow(clippy::needless_range_loop)] // matrices indexed as written
     fn pseudo_inverse_of_a_singular_and_a_regular_matrix() {
         // [[1, 1], [1, 1]]⁺ = [[1, 1], [1, 1]] / 4.
         let mut a = [[0.0; MAXK]; MAXK];

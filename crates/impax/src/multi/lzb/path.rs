@@ -108,7 +108,8 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
         let en = error_measure(&st, |i| {
             setup.atol[i] + RTOL * y[i].abs().max(st.y[i].abs())
         });
-        if !(en <= 1.0) {
+        // (NaN: rejected.)
+        if en.is_nan() || en > 1.0 {
             h *= shrink(en);
             continue;
         }
@@ -147,7 +148,7 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
                 let ev = eval(setup, &modes, &y);
                 h = guard(var.to_time(setup, x, h, &ev_b.v), shortest);
                 var = Var::Time.next(setup, &modes, 0.0, h, &y, &ev.v, root_end);
-                (x, h) = var.from_time(setup, &y, h);
+                (x, h) = var.start_from_time(setup, &y, h);
                 k1 = var.rhs::<N>(setup, &modes, x, &y);
                 watch = events::watch(setup, &modes, &y, &ev);
                 g_a = events::values(setup, &modes, &watch, &y, &ev);
@@ -161,7 +162,7 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
             let next = var.next(setup, &modes, x, h, &y1, &ev_b.v, root_end);
             if next != var {
                 h = guard(var.to_time(setup, x, h, &ev_b.v), shortest);
-                (x, h) = next.from_time(setup, &y, h);
+                (x, h) = next.start_from_time(setup, &y, h);
                 var = next;
                 k1 = var.rhs::<N>(setup, &modes, x, &y);
             }
@@ -206,7 +207,7 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
         let ev = eval(setup, &modes, &y);
         h = guard(var.to_time(setup, x, h, &ev.v), shortest);
         var = Var::Time.next(setup, &modes, 0.0, h, &y, &ev.v, root_end);
-        (x, h) = var.from_time(setup, &y, h);
+        (x, h) = var.start_from_time(setup, &y, h);
         k1 = var.rhs::<N>(setup, &modes, x, &y);
         watch = events::watch(setup, &modes, &y, &ev);
         g_a = events::values(setup, &modes, &watch, &y, &ev);
@@ -247,7 +248,7 @@ fn jammed(setup: &Setup, modes: &Modes, y: &[f64], ev: &Eval) -> Option<f64> {
         }
         stored += setup.energy(j, y[PER * j + S]);
     }
-    if !(stored > 0.0) {
+    if stored.is_nan() || stored <= 0.0 {
         return None;
     }
     for j in (0..k).filter(|&j| modes.active(j)) {

@@ -123,7 +123,7 @@ impl Var {
                 let mut best: Option<(f64, usize)> = None;
                 for j in 0..setup.k {
                     let vn = v[2 * j + 1];
-                    if modes.normal[j] != Normal::Expansion || !(vn > setup.settled) {
+                    if modes.normal[j] != Normal::Expansion || vn.is_nan() || vn <= setup.settled {
                         continue;
                     }
                     let e2 = setup.e[j] * setup.e[j];
@@ -151,7 +151,7 @@ impl Var {
     }
 
     /// Where this variable starts at the state `y` and its first step, from a step `h` of `τ`.
-    pub(super) fn from_time(self, setup: &Setup, y: &[f64], h: f64) -> (f64, f64) {
+    pub(super) fn start_from_time(self, setup: &Setup, y: &[f64], h: f64) -> (f64, f64) {
         match self {
             Var::Time | Var::Root => (0.0, h),
             Var::Separation { contact: j, .. } => {
