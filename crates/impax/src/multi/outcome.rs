@@ -66,12 +66,14 @@ pub struct ContactResult {
     /// The contact velocity after, `(v_t⁺, v_n⁺)`.
     pub velocity_after: Vec2,
     /// The regimes in order (`lcp`: one; `sequential`: those of every binary impact at this
-    /// contact, one `off` if it had none).
+    /// contact, one `off` if it had none; `lzb`: the tangential regimes while the contact
+    /// carries a force, `off` between two engagements, one `off` if it never engaged).
     pub phases: Vec<ContactPhase>,
     /// The work done at this contact, `∫ v_n dp_n` split at the end of its compression, and
     /// `∫ v_t dp_t`, along the law's path (`lcp`: the straight path `s p`, `0 ≤ s ≤ 1`, of all
-    /// the impulses together; `sequential`: the binary impacts'). The contacts' works sum to
-    /// `ΔT`.
+    /// the impulses together; `sequential`: the binary impacts'; `lzb`: its integrated path,
+    /// the normal work split by the sign of `v_n`). The contacts' works sum to `ΔT` (`lzb`: to
+    /// the integration's tolerance).
     pub work: WorkSplit,
 }
 
