@@ -45,13 +45,17 @@
 pub mod lcp;
 mod outcome;
 mod problem;
+pub mod scenarios;
 pub mod sequential;
+mod system;
 
 pub use outcome::{
     is_energy_gain, BinaryImpact, ContactPhase, ContactPhaseKind, ContactResult, LcpSolution,
     MultiDetail, MultiOutcome, MultiResolution, VELOCITY_ROUND_OFF,
 };
 pub use problem::{MultiProblem, RANGE_TOL, RANK_TOL};
+pub use scenarios::MultiScenario;
+pub use system::{MultiImpact, SystemOutcome};
 
 use crate::error::{Error, Result};
 use crate::law::LawId;

@@ -11,6 +11,7 @@ mod lcp;
 mod lcp_spatial;
 mod mechanisms;
 mod multi_contact;
+mod multi_scenarios;
 mod paper_liu2012;
 mod properties;
 mod regression_brach_frictionless;
