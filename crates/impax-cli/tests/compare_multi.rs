@@ -2,34 +2,10 @@
 //! the published answers through the command line (Housner's rocking ratio, the cradle's two
 //! answers, the rod leaving level), and flags that do not apply refused with exit 2.
 
-use assert_cmd::Command;
+mod support;
+
 use serde_json::Value;
-
-fn impax() -> Command {
-    Command::cargo_bin("impax").expect("the impax binary is built")
-}
-
-fn json(args: &[&str]) -> Value {
-    let out = impax().args(args).output().unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).unwrap()
-}
-
-fn fails(args: &[&str]) -> String {
-    let out = impax().args(args).output().unwrap();
-    assert_eq!(out.status.code(), Some(2), "{args:?}");
-    let err = String::from_utf8_lossy(&out.stderr).to_string();
-    assert_eq!(err.trim_end().lines().count(), 1, "one line: {err}");
-    err
-}
-
-fn f(v: &Value) -> f64 {
-    v.as_f64().unwrap()
-}
+use support::{f, fails, json};
 
 fn law<'a>(doc: &'a Value, id: &str) -> &'a Value {
     doc["results"]

@@ -4,34 +4,9 @@
 //! flat through the command line, K = 1 equal to the one-contact command, and bad input as one
 //! line with exit 2 naming the field.
 
-use assert_cmd::Command;
-use serde_json::Value;
+mod support;
 
-fn impax() -> Command {
-    Command::cargo_bin("impax").expect("the impax binary is built")
-}
-
-fn json(args: &[&str]) -> Value {
-    let out = impax().args(args).output().unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).unwrap()
-}
-
-fn fails(args: &[&str]) -> String {
-    let out = impax().args(args).output().unwrap();
-    assert_eq!(out.status.code(), Some(2), "{args:?}");
-    let err = String::from_utf8_lossy(&out.stderr).to_string();
-    assert_eq!(err.trim_end().lines().count(), 1, "one line: {err}");
-    err
-}
-
-fn f(v: &Value) -> f64 {
-    v.as_f64().unwrap()
-}
+use support::{f, fails, json};
 
 /// Three equal balls (m = 1) in a row touching, frictionless, e = 1: contact 1 closes at 1.
 const CRADLE: [&str; 9] = [

@@ -17,6 +17,7 @@
 
 use super::MultiImpact;
 use crate::error::{Error, Result};
+use crate::mechanism::builtin::positive;
 use nalgebra::DMatrix;
 
 /// The names of the built-in multi-contact systems.
@@ -35,19 +36,6 @@ pub struct MultiScenario {
     pub friction: f64,
     /// The default coefficient of restitution (every contact).
     pub restitution: f64,
-}
-
-fn positive(field: &str, x: f64) -> Result<f64> {
-    crate::error::finite(field, x)?;
-    if x > 0.0 {
-        Ok(x)
-    } else {
-        Err(Error::OutOfRange {
-            field: field.into(),
-            value: x,
-            reason: "must be positive".into(),
-        })
-    }
 }
 
 fn finite(field: &str, x: f64) -> Result<f64> {
