@@ -354,7 +354,8 @@ def main():
     if binary is None:
         subprocess.run(["cargo", "build", "--release", "--quiet", "--bin", "impax"], cwd=ROOT,
                        check=True)
-        binary = str(ROOT / "target" / "release" / "impax")
+        target = Path(os.environ.get("CARGO_TARGET_DIR") or ROOT / "target")
+        binary = str((ROOT / target).resolve() / "release" / "impax")
     run = Run(binary)
     rng = random.Random(a.seed)
     t0 = time.monotonic()

@@ -127,9 +127,11 @@ pub struct MapArgs {
 
 #[derive(Debug, Args)]
 pub struct CompareArgs {
-    /// A TOML scenario file (the book: docs/src/scenarios.md), or a built-in mechanism:
+    /// A TOML scenario file (the book: docs/src/scenarios.md), a built-in mechanism:
     /// `double-pendulum` (θ1, θ2 from the downward vertical; the tip of rod 2 strikes the
-    /// floor), `ring-pendulum`, `cart-pendulum`; default: the seed's sphere.
+    /// floor), `ring-pendulum`, `cart-pendulum`, or a built-in system struck at several
+    /// contacts: `rod-flat`, `rocking-block`, `cradle`, `ball-ball-wall`; default: the seed's
+    /// sphere.
     pub scenario: Option<PathBuf>,
     /// Angle of the approach velocity from the normal, degrees (round bodies).
     #[arg(long, allow_hyphen_values = true)]
@@ -157,6 +159,8 @@ pub struct CompareArgs {
     pub law: Vec<String>,
     #[command(flatten)]
     pub mechanism: MechanismFlags,
+    #[command(flatten)]
+    pub multi: MultiFlags,
     /// Print one JSON object instead of the table.
     #[arg(long)]
     pub json: bool,
@@ -164,6 +168,62 @@ pub struct CompareArgs {
     /// (.png or .svg).
     #[arg(long, value_name = "FILE")]
     pub plot: Option<PathBuf>,
+}
+
+/// The parameters of the built-in systems struck at several contacts (`rod-flat`,
+/// `rocking-block`, `cradle`, `ball-ball-wall`; each has defaults). `--mass` and `--radius`
+/// apply to them too.
+#[derive(Debug, Args, Clone, Default)]
+pub struct MultiFlags {
+    /// rod-flat: the rod's length (default 1).
+    #[arg(long, allow_hyphen_values = true)]
+    pub length: Option<f64>,
+    /// rod-flat: the centre's horizontal velocity (default 0).
+    #[arg(long, allow_hyphen_values = true)]
+    pub vx: Option<f64>,
+    /// rod-flat: the centre's vertical velocity (default −1).
+    #[arg(long, allow_hyphen_values = true)]
+    pub vy: Option<f64>,
+    /// rod-flat: the angular velocity (default 0); rocking-block: the angular velocity about
+    /// corner A, negative (default −1).
+    #[arg(long, allow_hyphen_values = true)]
+    pub omega: Option<f64>,
+    /// rocking-block: the half-width b (default 0.2).
+    #[arg(long, allow_hyphen_values = true)]
+    pub half_width: Option<f64>,
+    /// rocking-block: the half-height h (default 0.6).
+    #[arg(long, allow_hyphen_values = true)]
+    pub half_height: Option<f64>,
+    /// cradle: the number of balls (default 3).
+    #[arg(long)]
+    pub balls: Option<usize>,
+    /// cradle: the first ball's velocity; ball-ball-wall: ball 2's speed (default 1).
+    #[arg(long, allow_hyphen_values = true)]
+    pub v0: Option<f64>,
+    /// ball-ball-wall: the angle of the line of centres from the wall's normal, degrees
+    /// (default 30).
+    #[arg(long, allow_hyphen_values = true)]
+    pub angle_deg: Option<f64>,
+}
+
+impl MultiFlags {
+    /// The flags given, by name without `--`.
+    pub fn given(&self) -> Vec<&'static str> {
+        [
+            ("length", self.length.is_some()),
+            ("vx", self.vx.is_some()),
+            ("vy", self.vy.is_some()),
+            ("omega", self.omega.is_some()),
+            ("half-width", self.half_width.is_some()),
+            ("half-height", self.half_height.is_some()),
+            ("balls", self.balls.is_some()),
+            ("v0", self.v0.is_some()),
+            ("angle-deg", self.angle_deg.is_some()),
+        ]
+        .into_iter()
+        .filter_map(|(flag, given)| given.then_some(flag))
+        .collect()
+    }
 }
 
 /// The parameters and state of a built-in mechanism (each has defaults).

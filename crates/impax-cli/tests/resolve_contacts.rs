@@ -4,34 +4,9 @@
 //! flat through the command line, K = 1 equal to the one-contact command, and bad input as one
 //! line with exit 2 naming the field.
 
-use assert_cmd::Command;
-use serde_json::Value;
+mod support;
 
-fn impax() -> Command {
-    Command::cargo_bin("impax").expect("the impax binary is built")
-}
-
-fn json(args: &[&str]) -> Value {
-    let out = impax().args(args).output().unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).unwrap()
-}
-
-fn fails(args: &[&str]) -> String {
-    let out = impax().args(args).output().unwrap();
-    assert_eq!(out.status.code(), Some(2), "{args:?}");
-    let err = String::from_utf8_lossy(&out.stderr).to_string();
-    assert_eq!(err.trim_end().lines().count(), 1, "one line: {err}");
-    err
-}
-
-fn f(v: &Value) -> f64 {
-    v.as_f64().unwrap()
-}
+use support::{f, fails, json};
 
 /// Three equal balls (m = 1) in a row touching, frictionless, e = 1: contact 1 closes at 1.
 const CRADLE: [&str; 9] = [
@@ -54,7 +29,7 @@ fn newtons_cradle_lcp_and_sequential() {
     assert_eq!(doc["problem"]["contacts"], 2);
     assert_eq!(doc["problem"]["rank"], 4);
     let results = doc["results"].as_array().unwrap();
-    assert_eq!(results.len(), 2);
+    assert_eq!(results.len(), 3);
     for r in results {
         for key in [
             "law",
@@ -73,7 +48,8 @@ fn newtons_cradle_lcp_and_sequential() {
             }
             assert!(c["impulse"].get("t").is_some() && c["impulse"].get("n").is_some());
         }
-        assert!(f(&r["energy_change"]).abs() < 1e-12);
+        // lcp and sequential exactly; lzb to its integration tolerance.
+        assert!(f(&r["energy_change"]).abs() < 1e-10);
         assert_eq!(r["verdict"], "consistent");
     }
     // lcp: p = (4/3, 2/3): the balls leave at (−1/3, 2/3, 2/3), so the second contact
@@ -83,6 +59,13 @@ fn newtons_cradle_lcp_and_sequential() {
     assert!((f(&lcp["contacts"][0]["impulse"]["n"]) - 4.0 / 3.0).abs() < 1e-12);
     assert!((f(&lcp["contacts"][1]["impulse"]["n"]) - 2.0 / 3.0).abs() < 1e-12);
     assert_eq!(lcp["detail"]["solutions"].as_array().unwrap().len(), 1);
+    // lzb: the Hertz chain's wave, momentum conserved, the balls in order.
+    let lzb = &results[2];
+    assert_eq!(lzb["law"], "lzb");
+    let v1 = f(&lzb["contacts"][0]["velocity_after"]["n"]);
+    let v2 = f(&lzb["contacts"][1]["velocity_after"]["n"]);
+    assert!(v1 > 0.0 && v2 > 0.0, "{v1} {v2}");
+    assert!(lzb["detail"]["steps"].as_u64().unwrap() > 0);
     // sequential: two binary impacts, unit impulses, the third ball leaves alone.
     let seq = &results[1];
     assert_eq!(seq["law"], "sequential");

@@ -244,6 +244,34 @@ impl Numbers for Vec<f64> {
     }
 }
 
+/// One number, or a sequence of them (per-contact coefficients: `friction=0.5` or
+/// `friction=[0.5, 0.3]`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct OneOrMany(pub Vec<f64>);
+
+impl Numbers for OneOrMany {
+    fn read(obj: &Bound<'_, PyAny>, field: &str) -> PyResult<Self> {
+        if items(obj)?.is_some() {
+            Vec::<f64>::read(obj, field).map(OneOrMany)
+        } else {
+            real(obj, field).map(|x| OneOrMany(vec![x]))
+        }
+    }
+}
+
+impl OneOrMany {
+    /// The one value of a single-contact problem.
+    pub fn single(&self, field: &str) -> PyResult<f64> {
+        match self.0[..] {
+            [x] => Ok(x),
+            _ => Err(value_error(format!(
+                "{field}: expected one number, got {} (one per contact needs contacts=K)",
+                self.0.len()
+            ))),
+        }
+    }
+}
+
 impl Numbers for (f64, f64) {
     fn read(obj: &Bound<'_, PyAny>, field: &str) -> PyResult<Self> {
         let v = Vec::<f64>::read(obj, field)?;

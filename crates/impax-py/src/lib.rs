@@ -18,6 +18,7 @@ use pyo3::prelude::*;
 mod batch;
 mod bodies;
 mod convert;
+mod multi;
 mod outcome;
 mod scenarios;
 mod single;
@@ -47,6 +48,13 @@ fn _impax(m: &Bound<'_, PyModule>) -> PyResult<()> {
             .map(|l| l.as_str())
             .collect::<Vec<_>>(),
     )?;
+    m.add(
+        "MULTI_CONTACT_LAWS",
+        impax::LawId::MULTI_CONTACT
+            .iter()
+            .map(|l| l.as_str())
+            .collect::<Vec<_>>(),
+    )?;
     m.add("MAX_THREADS", convert::MAX_THREADS)?;
     m.add("STATUSES", batch::STATUSES.to_vec())?;
     m.add("SEQUENCES", batch::SEQUENCES.to_vec())?;
@@ -56,6 +64,7 @@ fn _impax(m: &Bound<'_, PyModule>) -> PyResult<()> {
         impax::mechanism::builtin::BuiltIn::NAMES.to_vec(),
     )?;
     m.add_class::<outcome::Outcome>()?;
+    m.add_class::<multi::MultiOutcome>()?;
     m.add_class::<bodies::Body>()?;
     m.add_class::<bodies::BodyImpact>()?;
     m.add_class::<bodies::MechanismImpact>()?;

@@ -1,6 +1,7 @@
 //! `impax.resolve`: one contact-space problem.
 
-use crate::convert::{arg, lib, matrix, planar_law, spatial_law, vector, Matrix};
+use crate::convert::{arg, lib, matrix, planar_law, spatial_law, vector, Matrix, OneOrMany};
+use crate::multi::MultiOutcome;
 use crate::outcome::{Context, Outcome, Raw};
 use impax::math::{Vec2, Vec3};
 use impax::planar::ContactProblem;
@@ -13,13 +14,37 @@ use pyo3::prelude::*;
 /// upper triangle: 3 or 6 numbers as `impax resolve --w`), `v` the contact velocity before
 /// (tangent(s) first, normal last, `v_n < 0`), `friction` μ ≥ 0, `restitution` e ∈ [0, 1].
 /// During the impact `v(p) = v⁻ + W p` (theory §1).
+///
+/// With `contacts=K`: a planar problem with `K` contacts at once (`impax resolve --contacts
+/// K`): `W` `2K × 2K` (or its upper triangle), `v` `2K` numbers or `K` pairs, `friction` and
+/// `restitution` one number or `K`; the laws `lcp` and `sequential` (with `K = 1` every
+/// contact-space law); a [`MultiOutcome`].
 #[pyfunction]
-#[pyo3(signature = (w, v, friction, restitution, law = "energetic"))]
+#[pyo3(signature = (w, v, friction, restitution, law = "energetic", *, contacts = None))]
 pub fn resolve(
+    py: Python<'_>,
     w: &Bound<'_, PyAny>,
     v: &Bound<'_, PyAny>,
-    #[pyo3(from_py_with = arg::friction)] friction: f64,
-    #[pyo3(from_py_with = arg::restitution)] restitution: f64,
+    #[pyo3(from_py_with = arg::friction)] friction: OneOrMany,
+    #[pyo3(from_py_with = arg::restitution)] restitution: OneOrMany,
+    law: &str,
+    contacts: Option<usize>,
+) -> PyResult<Py<PyAny>> {
+    if let Some(k) = contacts {
+        let out: MultiOutcome = crate::multi::resolve(w, v, &friction.0, &restitution.0, law, k)?;
+        return Ok(Py::new(py, out)?.into_any());
+    }
+    let friction = friction.single("friction")?;
+    let restitution = restitution.single("restitution")?;
+    Ok(Py::new(py, one(w, v, friction, restitution, law)?)?.into_any())
+}
+
+/// One contact.
+fn one(
+    w: &Bound<'_, PyAny>,
+    v: &Bound<'_, PyAny>,
+    friction: f64,
+    restitution: f64,
     law: &str,
 ) -> PyResult<Outcome> {
     match matrix(w)? {

@@ -233,6 +233,7 @@ fn body_audit(file: &File, args: &AuditArgs) -> CliResult<Audit> {
         speed: None,
         law: Vec::new(),
         mechanism: Default::default(),
+        multi: Default::default(),
         json: args.json,
         plot: None,
     };

@@ -1,6 +1,9 @@
 //! JSON records of outcomes (the schema is documented in the book, docs/src/reference/json.md).
 
 use impax::bodies::BodyOutcome;
+use impax::law::WorkSplit;
+use impax::math::Vec2;
+use impax::multi::{ContactPhase, MultiDetail, MultiOutcome, MultiProblem, MultiResolution};
 use impax::planar::{Breakdown, ContactProblem, LawDetail, Outcome, SmithReading};
 use serde_json::{json, Map, Value};
 
@@ -143,4 +146,109 @@ pub fn problem(p: &ContactProblem) -> Value {
         "friction": p.friction(),
         "restitution": p.restitution(),
     })
+}
+
+// Several contacts at once (`impax resolve --contacts`, the multi-contact built-ins).
+
+/// `{t, n}`.
+pub fn vec2(v: Vec2) -> Value {
+    json!({ "t": num(v.x), "n": num(v.y) })
+}
+
+fn multi_phases(list: &[ContactPhase]) -> Value {
+    Value::Array(
+        list.iter()
+            .map(|p| json!({ "kind": p.kind.label(), "ends_at": num(p.ends_at) }))
+            .collect(),
+    )
+}
+
+fn multi_work(w: &WorkSplit) -> Value {
+    json!({
+        "compression": num(w.compression),
+        "restitution": num(w.restitution),
+        "friction": num(w.friction),
+    })
+}
+
+/// The problem as JSON: `contacts`, `w` (2K × 2K), `v` (one `{t, n}` per contact),
+/// `friction`, `restitution` (K each), `rank`.
+pub fn multi_problem(p: &MultiProblem) -> Value {
+    let k = p.contacts();
+    let w = p.w();
+    json!({
+        "contacts": k,
+        "w": (0..2 * k).map(|i| (0..2 * k).map(|j| num(w[(i, j)])).collect::<Vec<_>>()).collect::<Vec<_>>(),
+        "v": (0..k).map(|j| vec2(p.contact_velocity(j))).collect::<Vec<_>>(),
+        "friction": (0..k).map(|j| p.friction(j)).collect::<Vec<_>>(),
+        "restitution": (0..k).map(|j| p.restitution(j)).collect::<Vec<_>>(),
+        "rank": p.rank(),
+    })
+}
+
+/// One law's entry: `law`, `verdict`, `contacts`, `energy_change`, `inconsistency`,
+/// `breakdown`, `detail` (every number null when the law broke down).
+pub fn multi_entry(r: &MultiResolution) -> Value {
+    match r {
+        Ok(o) => json!({
+            "law": o.law.as_str(),
+            "verdict": o.verdict.id(),
+            "contacts": o.contacts.iter().map(|c| json!({
+                "impulse": vec2(c.impulse),
+                "velocity_after": vec2(c.velocity_after),
+                "phases": multi_phases(&c.phases),
+                "work": multi_work(&c.work),
+            })).collect::<Vec<_>>(),
+            "energy_change": num(o.energy_change),
+            "inconsistency": o.inconsistency.map_or(Value::Null, |i| json!({ "id": i.id(), "message": i.to_string() })),
+            "breakdown": Value::Null,
+            "detail": multi_detail(o),
+        }),
+        Err(b) => json!({
+            "law": b.law.as_str(),
+            "verdict": "breakdown",
+            "contacts": Value::Null,
+            "energy_change": Value::Null,
+            "inconsistency": Value::Null,
+            "breakdown": { "id": b.reason.id(), "message": b.reason.to_string() },
+            "detail": Value::Null,
+        }),
+    }
+}
+
+/// `lcp`: `solutions` (each `energy_change` and per contact `kind`, `impulse`,
+/// `velocity_after`; least kinetic energy after first). `sequential`: `impacts` (each
+/// `contact`, counted from 1, `velocity_before`, `impulse`, `velocity_after`, `phases`,
+/// `energy_change`). A one-contact law (K = 1): its own detail.
+fn multi_detail(o: &MultiOutcome) -> Value {
+    match &o.detail {
+        MultiDetail::Lcp { solutions } => json!({
+            "solutions": solutions.iter().map(|s| json!({
+                "energy_change": num(s.energy_change),
+                "contacts": (0..s.regimes.len()).map(|j| json!({
+                    "kind": s.regimes[j].label(),
+                    "impulse": vec2(s.impulses[j]),
+                    "velocity_after": vec2(s.velocities_after[j]),
+                })).collect::<Vec<_>>(),
+            })).collect::<Vec<_>>(),
+        }),
+        MultiDetail::Sequential { impacts } => json!({
+            "impacts": impacts.iter().map(|b| json!({
+                "contact": b.contact + 1,
+                "velocity_before": vec2(b.velocity_before),
+                "impulse": vec2(b.outcome.impulse),
+                "velocity_after": vec2(b.outcome.velocity_after),
+                "phases": Value::Array(b.outcome.phases.as_slice().iter().map(|p| json!({ "kind": p.kind.label(), "ends_at": num(p.ends_at) })).collect()),
+                "energy_change": num(b.outcome.energy_change),
+            })).collect::<Vec<_>>(),
+        }),
+        MultiDetail::Lzb { primaries, steps } => json!({
+            "primaries": primaries.iter().map(|p| json!({
+                "contact": p.contact + 1,
+                "impulse": num(p.impulse),
+            })).collect::<Vec<_>>(),
+            "steps": steps,
+        }),
+        MultiDetail::OneContact { detail, .. } => self::detail(detail),
+    }
 }

@@ -10,7 +10,8 @@ Contact space (theory §1): ``W = J M⁻¹ Jᵀ`` (2×2 planar, 3×3 spatial), t
 normal last; approach means ``v_n < 0``; the impulse ``p`` acts on the moving body and
 ``v(p) = v⁻ + W p``; ``ΔT = v⁻·p + ½ pᵀ W p``.
 
-* :func:`resolve` — one problem, an :class:`Outcome`;
+* :func:`resolve` — one problem, an :class:`Outcome` (with ``contacts=K``: a planar problem
+  with ``K`` contacts at once, a :class:`MultiOutcome`);
 * :func:`resolve_batch` — many problems on numpy arrays, in parallel with the GIL released;
 * :func:`sphere`, :func:`disc`, :func:`rod`, :func:`ellipse`, :func:`rigid_body`,
   :func:`double_pendulum`, :func:`mechanism` — bodies and mechanisms producing problems
@@ -30,6 +31,7 @@ from ._impax import (
     LAWS,
     MAX_THREADS,
     MECHANISMS,
+    MULTI_CONTACT_LAWS,
     SEQUENCES,
     SEQUENCES_3D,
     SPATIAL_LAWS,
@@ -37,6 +39,7 @@ from ._impax import (
     Body,
     BodyImpact,
     MechanismImpact,
+    MultiOutcome,
     Outcome,
     __version__,
     body,
@@ -58,6 +61,7 @@ __all__ = [
     "LAWS",
     "MAX_THREADS",
     "MECHANISMS",
+    "MULTI_CONTACT_LAWS",
     "SEQUENCES",
     "SEQUENCES_3D",
     "SPATIAL_LAWS",
@@ -65,6 +69,7 @@ __all__ = [
     "Body",
     "BodyImpact",
     "MechanismImpact",
+    "MultiOutcome",
     "Outcome",
     "__version__",
     "body",

@@ -1,6 +1,6 @@
 """Type stubs of the compiled core ``impax._impax`` (re-exported by ``impax``)."""
 
-from typing import Any, Literal, Sequence, TypedDict
+from typing import Any, Literal, Sequence, TypedDict, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -12,6 +12,8 @@ LAWS: list[str]
 CONTACT_SPACE_LAWS: list[str]
 #: The laws defined for spatial (3D) problems.
 SPATIAL_LAWS: list[str]
+#: The laws for several contacts at once (``lcp``, ``sequential``).
+MULTI_CONTACT_LAWS: list[str]
 #: ``resolve_batch`` status codes, by index: consistent, energy-gained,
 #: inconsistent-assumption, breakdown, invalid.
 STATUSES: list[str]
@@ -207,14 +209,59 @@ class MechanismImpact:
     def resolve(self, law: str = "energetic") -> Outcome:
         """Resolve with one law; ``velocities_after`` from ``M (u⁺ − u⁻) = Jᵀ p``."""
 
-def resolve(w: ArrayLike, v: ArrayLike, friction: float, restitution: float, law: str = "energetic") -> Outcome:
+@overload
+def resolve(w: ArrayLike, v: ArrayLike, friction: float, restitution: float, law: str = "energetic") -> Outcome: ...
+@overload
+def resolve(
+    w: ArrayLike,
+    v: ArrayLike,
+    friction: float | Sequence[float],
+    restitution: float | Sequence[float],
+    law: str = "energetic",
+    *,
+    contacts: int,
+) -> MultiOutcome: ...
+def resolve(w, v, friction, restitution, law="energetic", *, contacts=None):
     """Resolve one impact in contact space with one law.
 
     ``w``: ``W = J M⁻¹ Jᵀ``, 2×2 (planar) or 3×3 (spatial), or its upper triangle (3 or 6
     numbers, as ``impax resolve --w``); ``v``: the contact velocity before (tangent(s) first,
     normal last, ``v_n < 0``); ``friction`` μ ≥ 0; ``restitution`` e ∈ [0, 1]. During the
     impact ``v(p) = v⁻ + W p`` (theory §1). Raises ``ValueError`` with the CLI's message.
+
+    With ``contacts=K`` (``impax resolve --contacts K``): a planar problem with ``K`` contacts
+    at once — ``w`` the ``2K × 2K`` W (positive semidefinite) or its upper triangle, ``v``
+    ``2K`` numbers or ``K`` pairs, ``friction`` and ``restitution`` one number or ``K``; laws
+    ``lcp`` and ``sequential`` (``MULTI_CONTACT_LAWS``); returns a :class:`MultiOutcome`.
     """
+
+class MultiOutcome:
+    """The outcome of a law on a problem with several contacts."""
+
+    @property
+    def law(self) -> str: ...
+    @property
+    def verdict(self) -> str:
+        """``consistent``, ``energy-gained``, ``inconsistent-assumption`` or ``breakdown``."""
+    @property
+    def energy_change(self) -> float | None:
+        """``ΔT = ½ (v⁻ + v⁺)·p`` of the whole impact."""
+    @property
+    def impulses(self) -> list[tuple[float, float]] | None:
+        """``(p_t, p_n)`` per contact."""
+    @property
+    def velocities_after(self) -> list[tuple[float, float]] | None:
+        """``(v_t⁺, v_n⁺)`` per contact."""
+    @property
+    def contacts(self) -> list[dict[str, Any]] | None:
+        """Per contact ``impulse``, ``velocity_after``, ``phases`` (``(kind, ends_at)``), ``work``."""
+    @property
+    def inconsistency(self) -> dict[str, str] | None: ...
+    @property
+    def breakdown(self) -> dict[str, str] | None: ...
+    @property
+    def detail(self) -> dict[str, Any] | None:
+        """``lcp``: ``solutions``; ``sequential``: ``impacts`` (as the CLI's JSON)."""
 
 class BatchResult(TypedDict):
     law: str

@@ -48,13 +48,17 @@ pub mod lcp;
 pub mod lzb;
 mod outcome;
 mod problem;
+pub mod scenarios;
 pub mod sequential;
+mod system;
 
 pub use outcome::{
     is_energy_gain, BinaryImpact, ContactPhase, ContactPhaseKind, ContactResult, LcpSolution,
     LzbPrimary, MultiDetail, MultiOutcome, MultiResolution, VELOCITY_ROUND_OFF,
 };
 pub use problem::{MultiProblem, HERTZ_EXPONENT, RANGE_TOL, RANK_TOL};
+pub use scenarios::MultiScenario;
+pub use system::{MultiImpact, SystemOutcome};
 
 use crate::error::{Error, Result};
 use crate::law::LawId;

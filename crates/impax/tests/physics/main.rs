@@ -12,6 +12,7 @@ mod lcp_spatial;
 mod mechanisms;
 mod multi_contact;
 mod multi_lzb;
+mod multi_scenarios;
 mod paper_liu2012;
 mod properties;
 mod regression_brach_frictionless;

@@ -2,6 +2,7 @@
 //! file in [`spatial`], a mechanism in [`mechanism`]).
 
 pub mod mechanism;
+pub mod multi;
 pub mod spatial;
 
 use crate::cli::CompareArgs;
@@ -24,7 +25,17 @@ use serde_json::json;
 pub fn run(args: &CompareArgs, out: &mut Vec<u8>) -> CliResult<()> {
     let file = match &args.scenario {
         None => None,
+        Some(path)
+            if multi::BUILT_INS.contains(&path.to_string_lossy().as_ref()) && !path.is_file() =>
+        {
+            return multi::run(&path.to_string_lossy(), args, out);
+        }
         Some(path) => {
+            if let Some(flag) = args.multi.given().first() {
+                return Err(CliError::input(format!(
+                    "--{flag}: only for a built-in system struck at several contacts (`impax compare rod-flat`, `rocking-block`, `cradle`, `ball-ball-wall`)"
+                )));
+            }
             let unreadable = |e| {
                 CliError::input(format!(
                     "{}: cannot read scenario file: {e}",
@@ -85,6 +96,11 @@ pub fn run(args: &CompareArgs, out: &mut Vec<u8>) -> CliResult<()> {
 
 /// The mechanism flags are refused for body scenarios.
 fn reject_mechanism_flags(args: &CompareArgs) -> CliResult<()> {
+    if let Some(flag) = args.multi.given().first() {
+        return Err(CliError::input(format!(
+            "--{flag}: only for a built-in system struck at several contacts (`impax compare rod-flat`, `rocking-block`, `cradle`, `ball-ball-wall`)"
+        )));
+    }
     match args.mechanism.first_given() {
         Some(flag) => Err(CliError::input(format!(
             "--{flag}: only for a mechanism (e.g. `impax compare double-pendulum --{flag} …`)"

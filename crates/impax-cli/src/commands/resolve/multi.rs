@@ -5,11 +5,9 @@ use crate::input::{parse_numbers, CliError, CliResult};
 use crate::output::fmt::{signed, Plain, Table};
 use crate::output::json;
 use crate::sources::scenario::parse_laws;
-use impax::law::WorkSplit;
-use impax::math::Vec2;
-use impax::multi::{lcp, ContactPhase, MultiDetail, MultiOutcome, MultiProblem, MultiResolution};
+use impax::multi::{lcp, MultiDetail, MultiProblem, MultiResolution};
 use impax::LawId;
-use serde_json::{json, Value};
+use serde_json::json;
 
 /// The most binary impacts of `sequential` listed in a table's note.
 const LISTED_IMPACTS: usize = 12;
@@ -67,11 +65,11 @@ pub fn run(args: &ResolveArgs, k: usize, out: &mut Vec<u8>) -> CliResult<()> {
     }
     let text = if args.json {
         let doc = if args.law.len() == 1 {
-            entry(&results[0].1)
+            json::multi_entry(&results[0].1)
         } else {
             json!({
-                "problem": problem_json(&problem),
-                "results": results.iter().map(|(_, r)| entry(r)).collect::<Vec<_>>(),
+                "problem": json::multi_problem(&problem),
+                "results": results.iter().map(|(_, r)| json::multi_entry(r)).collect::<Vec<_>>(),
             })
         };
         serde_json::to_string_pretty(&doc).map_err(CliError::failure)? + "\n"
@@ -84,102 +82,6 @@ pub fn run(args: &ResolveArgs, k: usize, out: &mut Vec<u8>) -> CliResult<()> {
 
 fn too_many(k: usize) -> CliError {
     CliError::input(format!("--contacts: {k} contacts are too many"))
-}
-
-/// `{t, n}`.
-fn vec2(v: Vec2) -> Value {
-    json!({ "t": json::num(v.x), "n": json::num(v.y) })
-}
-
-fn phases(list: &[ContactPhase]) -> Value {
-    Value::Array(
-        list.iter()
-            .map(|p| json!({ "kind": p.kind.label(), "ends_at": json::num(p.ends_at) }))
-            .collect(),
-    )
-}
-
-fn work(w: &WorkSplit) -> Value {
-    json!({
-        "compression": json::num(w.compression),
-        "restitution": json::num(w.restitution),
-        "friction": json::num(w.friction),
-    })
-}
-
-/// The problem as JSON: `contacts`, `w` (2K × 2K), `v` (one `{t, n}` per contact),
-/// `friction`, `restitution` (K each), `rank`.
-fn problem_json(p: &MultiProblem) -> Value {
-    let k = p.contacts();
-    let w = p.w();
-    json!({
-        "contacts": k,
-        "w": (0..2 * k).map(|i| (0..2 * k).map(|j| json::num(w[(i, j)])).collect::<Vec<_>>()).collect::<Vec<_>>(),
-        "v": (0..k).map(|j| vec2(p.contact_velocity(j))).collect::<Vec<_>>(),
-        "friction": (0..k).map(|j| p.friction(j)).collect::<Vec<_>>(),
-        "restitution": (0..k).map(|j| p.restitution(j)).collect::<Vec<_>>(),
-        "rank": p.rank(),
-    })
-}
-
-/// One law's entry: `law`, `verdict`, `contacts`, `energy_change`, `inconsistency`,
-/// `breakdown`, `detail` (every number null when the law broke down).
-fn entry(r: &MultiResolution) -> Value {
-    match r {
-        Ok(o) => json!({
-            "law": o.law.as_str(),
-            "verdict": o.verdict.id(),
-            "contacts": o.contacts.iter().map(|c| json!({
-                "impulse": vec2(c.impulse),
-                "velocity_after": vec2(c.velocity_after),
-                "phases": phases(&c.phases),
-                "work": work(&c.work),
-            })).collect::<Vec<_>>(),
-            "energy_change": json::num(o.energy_change),
-            "inconsistency": o.inconsistency.map_or(Value::Null, |i| json!({ "id": i.id(), "message": i.to_string() })),
-            "breakdown": Value::Null,
-            "detail": detail(o),
-        }),
-        Err(b) => json!({
-            "law": b.law.as_str(),
-            "verdict": "breakdown",
-            "contacts": Value::Null,
-            "energy_change": Value::Null,
-            "inconsistency": Value::Null,
-            "breakdown": { "id": b.reason.id(), "message": b.reason.to_string() },
-            "detail": Value::Null,
-        }),
-    }
-}
-
-/// `lcp`: `solutions` (each `energy_change` and per contact `kind`, `impulse`,
-/// `velocity_after`; least kinetic energy after first). `sequential`: `impacts` (each
-/// `contact`, counted from 1, `velocity_before`, `impulse`, `velocity_after`, `phases`,
-/// `energy_change`). A one-contact law (K = 1): its own detail.
-fn detail(o: &MultiOutcome) -> Value {
-    match &o.detail {
-        MultiDetail::Lcp { solutions } => json!({
-            "solutions": solutions.iter().map(|s| json!({
-                "energy_change": json::num(s.energy_change),
-                "contacts": (0..s.regimes.len()).map(|j| json!({
-                    "kind": s.regimes[j].label(),
-                    "impulse": vec2(s.impulses[j]),
-                    "velocity_after": vec2(s.velocities_after[j]),
-                })).collect::<Vec<_>>(),
-            })).collect::<Vec<_>>(),
-        }),
-        MultiDetail::Sequential { impacts } => json!({
-            "impacts": impacts.iter().map(|b| json!({
-                "contact": b.contact + 1,
-                "velocity_before": vec2(b.velocity_before),
-                "impulse": vec2(b.outcome.impulse),
-                "velocity_after": vec2(b.outcome.velocity_after),
-                "phases": Value::Array(b.outcome.phases.as_slice().iter().map(|p| json!({ "kind": p.kind.label(), "ends_at": json::num(p.ends_at) })).collect()),
-                "energy_change": json::num(b.outcome.energy_change),
-            })).collect::<Vec<_>>(),
-        }),
-        MultiDetail::OneContact { detail, .. } => json::detail(detail),
-    }
 }
 
 /// `a | b | c`, or `a` when every contact has the same value.

@@ -17,6 +17,7 @@ pub fn law(law: LawId) -> RGBColor {
         LawId::Energetic => RGBColor(44, 160, 44),
         LawId::Lcp => RGBColor(127, 127, 127),
         LawId::Sequential => RGBColor(188, 189, 34),
+        LawId::Lzb => RGBColor(0, 0, 0),
     }
 }
 

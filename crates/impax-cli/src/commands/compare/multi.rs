@@ -1,0 +1,320 @@
+//! `impax compare NAME` for the built-in systems struck at several contacts (`rod-flat`,
+//! `rocking-block`, `cradle`, `ball-ball-wall`; `impax::multi::scenarios`): every multi-contact
+//! law side by side with the generalized velocities after and the energy ratio.
+
+use crate::cli::CompareArgs;
+use crate::input::{CliError, CliResult};
+use crate::output::fmt::{signed, Plain, Table};
+use crate::output::json::{self, num};
+use crate::sources::scenario::parse_laws;
+use impax::multi::scenarios::{BallBallWall, Cradle, RockingBlock, RodFlat, NAMES};
+use impax::multi::{lcp, MultiProblem, MultiScenario, SystemOutcome};
+use impax::LawId;
+use serde_json::{json, Value};
+
+/// The built-ins' names (for [`crate::sources::Source::classify`]'s callers).
+pub const BUILT_INS: [&str; 4] = NAMES;
+
+/// The flags each built-in takes (besides `--friction`, `--restitution`, `--law`, `--json`).
+fn accepted(name: &str) -> &'static [&'static str] {
+    match name {
+        "rod-flat" => &["mass", "length", "vx", "vy", "omega"],
+        "rocking-block" => &["mass", "half-width", "half-height", "omega"],
+        "cradle" => &["balls", "mass", "radius", "v0"],
+        _ => &["mass", "radius", "v0", "angle-deg"],
+    }
+}
+
+/// Build the built-in `name` from the flags (defaults for those not given).
+pub fn build(name: &str, args: &CompareArgs) -> CliResult<MultiScenario> {
+    for (flag, given) in [
+        ("alpha-deg", args.alpha_deg.is_some()),
+        ("spin-ratio", args.spin_ratio.is_some()),
+        ("speed", args.speed.is_some()),
+        ("plot", args.plot.is_some()),
+    ] {
+        if given {
+            return Err(CliError::input(format!(
+                "--{flag}: not a parameter of `{name}` (it takes --{})",
+                accepted(name).join(", --")
+            )));
+        }
+    }
+    if let Some(flag) = args.mechanism.first_given() {
+        return Err(CliError::input(format!(
+            "--{flag}: not a parameter of `{name}` (it takes --{})",
+            accepted(name).join(", --")
+        )));
+    }
+    let mut given = args.multi.given();
+    if args.mass.is_some() {
+        given.push("mass");
+    }
+    if args.radius.is_some() {
+        given.push("radius");
+    }
+    if let Some(flag) = given.iter().find(|f| !accepted(name).contains(f)) {
+        return Err(CliError::input(format!(
+            "--{flag}: not a parameter of `{name}` (it takes --{})",
+            accepted(name).join(", --")
+        )));
+    }
+    let f = &args.multi;
+    let scenario = match name {
+        "rod-flat" => {
+            let d = RodFlat::default();
+            RodFlat {
+                mass: args.mass.unwrap_or(d.mass),
+                length: f.length.unwrap_or(d.length),
+                vx: f.vx.unwrap_or(d.vx),
+                vy: f.vy.unwrap_or(d.vy),
+                omega: f.omega.unwrap_or(d.omega),
+            }
+            .build()?
+        }
+        "rocking-block" => {
+            let d = RockingBlock::default();
+            RockingBlock {
+                mass: args.mass.unwrap_or(d.mass),
+                half_width: f.half_width.unwrap_or(d.half_width),
+                half_height: f.half_height.unwrap_or(d.half_height),
+                omega: f.omega.unwrap_or(d.omega),
+            }
+            .build()?
+        }
+        "cradle" => {
+            let d = Cradle::default();
+            Cradle {
+                balls: f.balls.unwrap_or(d.balls),
+                mass: args.mass.unwrap_or(d.mass),
+                radius: args.radius.unwrap_or(d.radius),
+                v0: f.v0.unwrap_or(d.v0),
+            }
+            .build()?
+        }
+        _ => {
+            let d = BallBallWall::default();
+            BallBallWall {
+                mass: args.mass.unwrap_or(d.mass),
+                radius: args.radius.unwrap_or(d.radius),
+                v0: f.v0.unwrap_or(d.v0),
+                angle_deg: f.angle_deg.unwrap_or(d.angle_deg),
+            }
+            .build()?
+        }
+    };
+    Ok(scenario)
+}
+
+/// The laws: `--law`, or every multi-contact law that takes this many contacts.
+pub fn laws(ids: &[String], contacts: usize) -> CliResult<Vec<LawId>> {
+    Ok(if ids.is_empty() {
+        LawId::MULTI_CONTACT
+            .into_iter()
+            .filter(|l| *l != LawId::Lcp || contacts <= lcp::MAX_CONTACTS)
+            .collect()
+    } else {
+        parse_laws(ids)?
+    })
+}
+
+pub fn run(name: &str, args: &CompareArgs, out: &mut Vec<u8>) -> CliResult<()> {
+    let sc = build(name, args)?;
+    let friction = args.friction.unwrap_or(sc.friction);
+    let restitution = args.restitution.unwrap_or(sc.restitution);
+    let problem = sc
+        .impact
+        .problem(&[friction], &[restitution])
+        .map_err(|e| match e {
+            impax::Error::NotApproaching { .. } => {
+                let v = sc.impact.contact_velocities();
+                CliError::input(format!(
+                    "vy, omega: no end of the rod comes down (normal velocities {} and {}): `{name}` strikes only while an end approaches the floor",
+                    short(v[1]),
+                    short(v[3])
+                ))
+            }
+            other => other.into(),
+        })?;
+    let laws = laws(&args.law, problem.contacts())?;
+    let results = laws
+        .iter()
+        .map(|&law| Ok((law, sc.impact.resolve(law, &problem)?)))
+        .collect::<CliResult<Vec<_>>>()?;
+    let text = if args.json {
+        serde_json::to_string_pretty(&document(&sc, &problem, &results))
+            .map_err(CliError::failure)?
+            + "\n"
+    } else {
+        table(&sc, &problem, &results)
+    };
+    out.extend_from_slice(text.as_bytes());
+    Ok(())
+}
+
+/// The JSON document: `scenario`, `description`, `coordinates`, `u_before`, `contact_names`,
+/// `problem`, `energy_before`, `results` (each `impax resolve --contacts`'s entry plus
+/// `velocities_after`, `energy_after`, `energy_ratio`, `energy_change_from_velocities`).
+pub fn document(
+    sc: &MultiScenario,
+    problem: &MultiProblem,
+    results: &[(LawId, SystemOutcome)],
+) -> Value {
+    let t0 = sc.impact.energy_before();
+    let entries: Vec<Value> = results
+        .iter()
+        .map(|(_, r)| {
+            let mut e = json::multi_entry(&r.resolution);
+            let m = e.as_object_mut().expect("an object");
+            match (&r.resolution, &r.velocities_after) {
+                (Ok(o), Some(after)) => {
+                    m.insert(
+                        "velocities_after".into(),
+                        json!(after.iter().map(|&x| num(x)).collect::<Vec<_>>()),
+                    );
+                    m.insert("energy_after".into(), num(t0 + o.energy_change));
+                    m.insert("energy_ratio".into(), num((t0 + o.energy_change) / t0));
+                    m.insert(
+                        "energy_change_from_velocities".into(),
+                        r.energy_change_from_velocities.map_or(Value::Null, num),
+                    );
+                }
+                _ => {
+                    for k in [
+                        "velocities_after",
+                        "energy_after",
+                        "energy_ratio",
+                        "energy_change_from_velocities",
+                    ] {
+                        m.insert(k.into(), Value::Null);
+                    }
+                }
+            }
+            e
+        })
+        .collect();
+    json!({
+        "scenario": sc.name,
+        "description": sc.description,
+        "coordinates": sc.impact.coordinates(),
+        "u_before": sc.impact.velocities_before().iter().map(|&x| num(x)).collect::<Vec<_>>(),
+        "contact_names": sc.impact.contacts(),
+        "problem": json::multi_problem(problem),
+        "energy_before": t0,
+        "results": entries,
+    })
+}
+
+/// The coordinates worth a column: those moving before, or after under some law (a cradle's
+/// vertical velocities and spins stay zero).
+fn shown(sc: &MultiScenario, results: &[(LawId, SystemOutcome)]) -> Vec<usize> {
+    let before = sc.impact.velocities_before();
+    let scale = before.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    (0..before.len())
+        .filter(|&i| {
+            before[i] != 0.0
+                || results.iter().any(|(_, r)| {
+                    r.velocities_after
+                        .as_ref()
+                        .is_some_and(|a| a[i].abs() > 1e-12 * scale)
+                })
+        })
+        .collect()
+}
+
+/// Six significant digits, without trailing zeros (`-0.5`, `0.266667`).
+fn short(x: f64) -> String {
+    let s = format!("{:.6e}", x);
+    let v: f64 = s.parse().expect("a number");
+    Plain(v).to_string()
+}
+
+fn table(sc: &MultiScenario, problem: &MultiProblem, results: &[(LawId, SystemOutcome)]) -> String {
+    let coords = sc.impact.coordinates();
+    let names = sc.impact.contacts();
+    let k = names.len();
+    let t0 = sc.impact.energy_before();
+    let cols_shown = shown(sc, results);
+    let mut columns: Vec<(String, bool)> = vec![("law".into(), false)];
+    for &i in &cols_shown {
+        columns.push((format!("{}+", coords[i]), true));
+    }
+    for j in 1..=k {
+        columns.push((format!("p_n{j}"), true));
+    }
+    columns.extend([
+        ("ΔT".into(), true),
+        ("T+/T-".into(), true),
+        ("verdict".into(), false),
+    ]);
+    let cols: Vec<(&str, bool)> = columns.iter().map(|(s, r)| (s.as_str(), *r)).collect();
+    let mut t = Table::new(&cols);
+    let mut notes = Vec::new();
+    for (law, r) in results {
+        match (&r.resolution, &r.velocities_after) {
+            (Ok(o), Some(after)) => {
+                let mut row = vec![law.to_string()];
+                row.extend(cols_shown.iter().map(|&i| signed(after[i], 5)));
+                row.extend(o.contacts.iter().map(|c| signed(c.impulse.y, 5)));
+                row.extend([
+                    signed(o.energy_change, 5),
+                    format!("{:.5}", (t0 + o.energy_change) / t0),
+                    o.verdict.id().to_string(),
+                ]);
+                t.row(row);
+                if let Some(i) = o.inconsistency {
+                    notes.push(format!("{law}: {i}"));
+                }
+            }
+            _ => {
+                let mut row = vec![law.to_string()];
+                row.extend(std::iter::repeat_n(
+                    "—".to_string(),
+                    cols_shown.len() + k + 2,
+                ));
+                row.push("breakdown".into());
+                t.row(row);
+                if let Err(b) = &r.resolution {
+                    notes.push(format!("{law}: breakdown: {}", b.reason));
+                }
+            }
+        }
+    }
+    let v: Vec<String> = (0..k)
+        .map(|j| {
+            let c = problem.contact_velocity(j);
+            format!("{} {} ({}, {})", j + 1, names[j], short(c.x), short(c.y))
+        })
+        .collect();
+    let mut text = format!(
+        "impax compare — {}; μ = {}, e = {}\ncontacts (v⁻ = (v_t, v_n)): {}; W {n} × {n} of rank {}; T⁻ = {}\n\n",
+        sc.description,
+        Plain(problem.friction(0)),
+        Plain(problem.restitution(0)),
+        v.join(", "),
+        problem.rank(),
+        short(t0),
+        n = 2 * k,
+    );
+    text.push_str(&t.render());
+    let hidden = coords.len() - cols_shown.len();
+    text.push_str(&format!(
+        "\n{}: generalized velocities after{}; p_nj: contact j's normal impulse; ΔT = T⁺ − T⁻\n",
+        cols_shown
+            .iter()
+            .map(|&i| format!("{}+", coords[i]))
+            .collect::<Vec<_>>()
+            .join(", "),
+        if hidden == 1 {
+            " (the other one is 0 before and after)".to_string()
+        } else if hidden > 1 {
+            format!(" (the other {hidden} are 0 before and after)")
+        } else {
+            String::new()
+        }
+    ));
+    for n in notes {
+        text.push_str(&format!("note — {n}\n"));
+    }
+    text
+}

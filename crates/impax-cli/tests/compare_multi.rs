@@ -1,0 +1,132 @@
+//! `impax compare NAME` for the built-in systems struck at several contacts: the JSON keys,
+//! the published answers through the command line (Housner's rocking ratio, the cradle's two
+//! answers, the rod leaving level), and flags that do not apply refused with exit 2.
+
+mod support;
+
+use serde_json::Value;
+use support::{f, fails, json};
+
+fn law<'a>(doc: &'a Value, id: &str) -> &'a Value {
+    doc["results"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|r| r["law"] == id)
+        .unwrap_or_else(|| panic!("no {id}"))
+}
+
+#[test]
+fn every_built_in_has_the_keys() {
+    for name in ["rod-flat", "rocking-block", "cradle", "ball-ball-wall"] {
+        let doc = json(&["compare", name, "--json"]);
+        for key in [
+            "scenario",
+            "description",
+            "coordinates",
+            "u_before",
+            "contact_names",
+            "problem",
+            "energy_before",
+            "results",
+        ] {
+            assert!(doc.get(key).is_some(), "{name}: missing {key}");
+        }
+        assert_eq!(doc["scenario"], name);
+        let n = doc["coordinates"].as_array().unwrap().len();
+        for r in doc["results"].as_array().unwrap() {
+            assert_eq!(r["velocities_after"].as_array().unwrap().len(), n);
+            let (a, b) = (
+                f(&r["energy_change"]),
+                f(&r["energy_change_from_velocities"]),
+            );
+            assert!((a - b).abs() < 1e-12 * f(&doc["energy_before"]), "{name}");
+            // lzb is integrated (relative tolerance 1e-12): its ΔT carries that error.
+            assert!(f(&r["energy_ratio"]) <= 1.0 + 1e-10, "{name}");
+        }
+    }
+}
+
+#[test]
+fn housners_ratio_from_the_command_line() {
+    let (b, h, w) = (0.3, 0.9, -2.0);
+    let doc = json(&[
+        "compare",
+        "rocking-block",
+        "--half-width",
+        "0.3",
+        "--half-height",
+        "0.9",
+        "--omega",
+        "-2",
+        "--json",
+    ]);
+    let ratio = 1.0 - 1.5 * b * b / (b * b + h * h);
+    for id in ["lcp", "sequential"] {
+        let after = f(&law(&doc, id)["velocities_after"][2]);
+        assert!((after / w - ratio).abs() < 1e-12, "{id}: {}", after / w);
+    }
+}
+
+#[test]
+fn the_cradles_two_answers() {
+    let doc = json(&["compare", "cradle", "--balls", "4", "--v0", "2", "--json"]);
+    let x = |id: &str, i: usize| f(&law(&doc, id)["velocities_after"][3 * i]);
+    for i in 0..3 {
+        assert!(x("sequential", i).abs() < 1e-12);
+    }
+    assert!((x("sequential", 3) - 2.0).abs() < 1e-12);
+    // The LCP: momentum and energy conserved, the first ball not at rest.
+    let p: f64 = (0..4).map(|i| x("lcp", i)).sum();
+    let e: f64 = (0..4).map(|i| x("lcp", i).powi(2)).sum();
+    assert!((p - 2.0).abs() < 1e-12 && (e - 4.0).abs() < 1e-12);
+    assert!(x("lcp", 0) < -0.1);
+}
+
+#[test]
+fn the_rod_leaves_level_under_lcp() {
+    let doc = json(&[
+        "compare",
+        "rod-flat",
+        "--vy",
+        "-3",
+        "--restitution",
+        "0.4",
+        "--law",
+        "lcp",
+        "--json",
+    ]);
+    let after = law(&doc, "lcp")["velocities_after"].as_array().unwrap();
+    assert!(f(&after[0]).abs() < 1e-12);
+    assert!((f(&after[1]) - 1.2).abs() < 1e-12);
+    assert!(f(&after[2]).abs() < 1e-12);
+}
+
+#[test]
+fn flags_that_do_not_apply_are_refused() {
+    for (args, expected) in [
+        (&["compare", "cradle", "--vy", "2"][..], "--vy"),
+        (&["compare", "rod-flat", "--balls", "2"][..], "--balls"),
+        (
+            &["compare", "rod-flat", "--angles-deg", "2"][..],
+            "--angles-deg",
+        ),
+        (&["compare", "rocking-block", "--speed", "2"][..], "--speed"),
+        (&["compare", "--vy", "1"][..], "--vy"),
+        (
+            &["compare", "double-pendulum", "--balls", "3"][..],
+            "--balls",
+        ),
+        (&["compare", "rod-flat", "--vy", "1"][..], "vy"),
+        (&["compare", "rocking-block", "--omega", "1"][..], "omega"),
+        (&["compare", "cradle", "--balls", "1"][..], "balls"),
+        (&["compare", "cradle", "--law", "smith"][..], "law"),
+        (
+            &["compare", "ball-ball-wall", "--angle-deg", "95"][..],
+            "angle-deg",
+        ),
+    ] {
+        let err = fails(args);
+        assert!(err.contains(expected), "{args:?}: {err}");
+    }
+}

@@ -1,0 +1,81 @@
+"""Several contacts at once from Python: `impax.resolve(..., contacts=K)` gives the command
+line's `impax resolve --contacts K --json` numbers, Newton's cradle and the rod landing flat
+reproduce their known answers, and bad input raises `ValueError` naming the argument."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import impax
+
+CRADLE_W = [[2, 0, 0, 0], [0, 2, 0, -1], [0, 0, 2, 0], [0, -1, 0, 2]]
+ROD_UPPER = [1, 0, 1, 0, 4, 0, -2, 1, 0, 4]
+
+
+def test_cradle_lcp_and_sequential():
+    lcp = impax.resolve(CRADLE_W, [0, -1, 0, 0], 0.0, 1.0, "lcp", contacts=2)
+    assert lcp.law == "lcp" and lcp.verdict == "consistent"
+    assert lcp.impulses[0][1] == pytest.approx(4 / 3, abs=1e-12)
+    assert lcp.impulses[1][1] == pytest.approx(2 / 3, abs=1e-12)
+    assert abs(lcp.energy_change) < 1e-12
+    assert len(lcp.detail["solutions"]) == 1
+    seq = impax.resolve(CRADLE_W, [[0, -1], [0, 0]], 0.0, 1.0, "sequential", contacts=2)
+    assert [i["contact"] for i in seq.detail["impacts"]] == [1, 2]
+    assert seq.velocities_after[1][1] == pytest.approx(1.0, abs=1e-15)
+
+
+def test_rod_flat_agrees_with_the_cli(cli):
+    for law in ("lcp", "sequential"):
+        ref = cli.json(
+            "resolve",
+            "--contacts=2",
+            "--w=" + ",".join(str(x) for x in ROD_UPPER),
+            "--v=0.3,-1,0.3,-1",
+            "--friction=0.2,0.4",
+            "--restitution=0.6",
+            f"--law={law}",
+        )
+        out = impax.resolve(ROD_UPPER, [0.3, -1, 0.3, -1], [0.2, 0.4], 0.6, law, contacts=2)
+        assert out.verdict == ref["verdict"]
+        assert out.energy_change == pytest.approx(ref["energy_change"], rel=1e-13)
+        for py, c in zip(out.contacts, ref["contacts"]):
+            assert py["impulse"] == pytest.approx((c["impulse"]["t"], c["impulse"]["n"]), abs=1e-13)
+            assert py["velocity_after"] == pytest.approx(
+                (c["velocity_after"]["t"], c["velocity_after"]["n"]), abs=1e-13
+            )
+            assert [k for k, _ in py["phases"]] == [p["kind"] for p in c["phases"]]
+            for key in ("compression", "restitution", "friction"):
+                assert py["work"][key] == pytest.approx(c["work"][key], abs=1e-13)
+
+
+def test_one_contact_is_the_one_contact_law():
+    one = impax.resolve([3.5, 0.4, 1.2], [0.5, -0.866], 0.3, 0.7, "energetic")
+    many = impax.resolve(np.array([3.5, 0.4, 1.2]), [0.5, -0.866], 0.3, 0.7, "energetic", contacts=1)
+    assert many.impulses[0] == pytest.approx(one.impulse, rel=1e-13)
+    assert many.energy_change == pytest.approx(one.energy_change, rel=1e-13)
+    assert "lcp" in impax.MULTI_CONTACT_LAWS and "sequential" in impax.MULTI_CONTACT_LAWS
+
+
+@pytest.mark.parametrize(
+    "kwargs, field",
+    [
+        (dict(w=ROD_UPPER[:9], v=[0, -1, 0, -1]), "w"),
+        (dict(w=ROD_UPPER, v=[0, -1, 0]), "v"),
+        (dict(w=ROD_UPPER, v=[0.3, -1, 0, -1]), "v"),
+        (dict(w=ROD_UPPER, v=[0, -1, 0, -1], law="smith"), "law"),
+        (dict(w=ROD_UPPER, v=[0, -1, 0, -1], friction=[0.5, 0.5, 0.5]), "friction"),
+        (dict(w=ROD_UPPER, v=[0, -1, 0, -1], restitution=[0.5, 1.5]), "restitution[2]"),
+        (dict(w=ROD_UPPER, v=[0, -1, 0, -1], contacts=0), "contacts"),
+    ],
+)
+def test_bad_input_names_the_argument(kwargs, field):
+    args = dict(friction=0.5, restitution=0.5, law="lcp", contacts=2)
+    args.update(kwargs)
+    with pytest.raises(ValueError, match=field.replace("[", r"\[").replace("]", r"\]")):
+        impax.resolve(args.pop("w"), args.pop("v"), args.pop("friction"), args.pop("restitution"), args.pop("law"), **args)
+
+
+def test_several_coefficients_need_contacts():
+    with pytest.raises(ValueError, match="friction"):
+        impax.resolve([3.5, 0.4, 1.2], [0.5, -0.866], [0.3, 0.3], 0.7)

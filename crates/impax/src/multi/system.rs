@@ -1,0 +1,286 @@
+//! A rigid system struck at several contacts at once: generalized velocities, mass matrix and
+//! the contacts' rows, reduced to the contact-space problem of [`crate::multi`] and mapped back.
+//!
+//! With `n` generalized velocities `u`, the symmetric positive definite mass matrix `M` and
+//! `K` contacts whose velocities are `v_j = J_j u` (`J_j`: 2 × n, the tangent row then the
+//! normal row), the impulses `p_j` on the system act through `Jᵀ` (theory §1, §4, §6):
+//!
+//! ```text
+//! M (u⁺ − u⁻) = Σ_j J_jᵀ p_j,     W = J M⁻¹ Jᵀ (2K × 2K),   v⁻ = J u⁻,
+//! T⁺ − T⁻ = ½ u⁺ᵀ M u⁺ − ½ u⁻ᵀ M u⁻ = v⁻·p + ½ pᵀ W p.
+//! ```
+//!
+//! The rows of a contact between two bodies give the relative velocity of the second body's
+//! point with respect to the first's (so `p_j` is the impulse on the second body, `−p_j` on the
+//! first); a contact with a fixed surface gives the body point's velocity. Dependent rows (a
+//! rod lying flat: four rows, three degrees of freedom) make `W` singular, which
+//! [`MultiProblem`] accepts: the velocities after are then unique although the impulses are
+//! not, and `u⁺` is computed from whichever impulses the law reports (`J u⁺` does not depend
+//! on the choice; nor does `u⁺` itself, since `Jᵀ z = 0` whenever `W z = 0`).
+
+use super::{MultiProblem, MultiResolution};
+use crate::error::{Error, Num, Result};
+use crate::law::LawId;
+use crate::math::Vec2;
+use crate::mechanism::{dynamics, Mechanism};
+use nalgebra::{Cholesky, DMatrix, DVector, Dyn};
+
+/// A system at the instant of an impact at `K` contacts (module docs).
+#[derive(Debug, Clone)]
+pub struct MultiImpact {
+    coordinates: Vec<String>,
+    contacts: Vec<String>,
+    mass: DMatrix<f64>,
+    chol: Cholesky<f64, Dyn>,
+    jacobian: DMatrix<f64>,
+    u: DVector<f64>,
+}
+
+/// The result of one law on a [`MultiImpact`].
+#[derive(Debug, Clone)]
+pub struct SystemOutcome {
+    /// The contact-space result (or why the law does not apply).
+    pub resolution: MultiResolution,
+    /// `u⁺ = u⁻ + M⁻¹ Jᵀ p` (when the law applies).
+    pub velocities_after: Option<Vec<f64>>,
+    /// `½ u⁺ᵀ M u⁺ − ½ u⁻ᵀ M u⁻` (when the law applies): the contact-space `ΔT` up to
+    /// round-off, an independent check of it.
+    pub energy_change_from_velocities: Option<f64>,
+}
+
+impl MultiImpact {
+    /// A system from its mass matrix `M` (`n × n`, symmetric positive definite), its contact
+    /// rows `J` (`2K × n`, contact `j`'s tangent row `2j`, normal row `2j + 1`) and its
+    /// velocities before `u⁻` (`n`), with the names of the coordinates and of the contacts.
+    ///
+    /// # Errors
+    /// Naming the field: mismatched sizes (`jacobian`, `u`, `coordinates`, `contacts`),
+    /// non-finite entries, `M` not symmetric positive definite (`mass`), a kinetic energy
+    /// above `1e300` (`u`).
+    pub fn new(
+        coordinates: Vec<String>,
+        mass: DMatrix<f64>,
+        contacts: Vec<String>,
+        jacobian: DMatrix<f64>,
+        u: &[f64],
+    ) -> Result<Self> {
+        let n = mass.nrows();
+        let bad = |field: &str, reason: String| Error::Invalid {
+            field: field.into(),
+            reason,
+        };
+        if n == 0 || mass.ncols() != n {
+            return Err(bad(
+                "mass",
+                format!(
+                    "must be square and not empty, got {} × {}",
+                    mass.nrows(),
+                    mass.ncols()
+                ),
+            ));
+        }
+        if coordinates.len() != n {
+            return Err(bad(
+                "coordinates",
+                format!("expected {n} names, got {}", coordinates.len()),
+            ));
+        }
+        if contacts.is_empty() || jacobian.nrows() != 2 * contacts.len() || jacobian.ncols() != n {
+            return Err(bad(
+                "jacobian",
+                format!(
+                    "must be 2K × n = {} × {n} (tangent and normal rows of each of {} contacts), got {} × {}",
+                    2 * contacts.len(),
+                    contacts.len(),
+                    jacobian.nrows(),
+                    jacobian.ncols()
+                ),
+            ));
+        }
+        if u.len() != n {
+            return Err(bad("u", format!("expected {n} numbers, got {}", u.len())));
+        }
+        for (field, m) in [("mass", &mass), ("jacobian", &jacobian)] {
+            if let Some(x) = m.iter().find(|x| !x.is_finite()) {
+                return Err(bad(field, format!("has a non-finite entry {x}")));
+            }
+        }
+        for (i, &x) in u.iter().enumerate() {
+            crate::error::finite(&format!("u[{}]", coordinates[i]), x)?;
+        }
+        let scale = mass.amax();
+        for i in 0..n {
+            for j in i + 1..n {
+                if (mass[(i, j)] - mass[(j, i)]).abs() > 1e-12 * scale {
+                    return Err(bad("mass", "must be symmetric".into()));
+                }
+            }
+        }
+        let chol = Cholesky::new(mass.clone())
+            .ok_or_else(|| bad("mass", "must be positive definite".into()))?;
+        let u = DVector::from_column_slice(u);
+        let energy = 0.5 * u.dot(&(&mass * &u));
+        if !(energy.is_finite() && energy <= 1e300) {
+            return Err(Error::OutOfRange {
+                field: "u".into(),
+                value: u.amax(),
+                reason: format!(
+                    "the kinetic energy ½ uᵀMu = {} is not representable with room to spare (it must be below 1e300)",
+                    Num(energy)
+                ),
+            });
+        }
+        Ok(Self {
+            coordinates,
+            contacts,
+            mass,
+            chol,
+            jacobian,
+            u,
+        })
+    }
+
+    /// Contacts `contacts` of a planar mechanism at `(q, u)`, struck together: `M(q)` and
+    /// the contacts' Jacobians from the mechanism's kinematics (the same as
+    /// [`crate::mechanism::impact::MechanismImpact`] uses for one contact).
+    ///
+    /// # Errors
+    /// As [`MultiImpact::new`]; a contact index out of range or repeated (`contacts`); the
+    /// mechanism's own state checks.
+    pub fn from_mechanism<M: Mechanism + ?Sized>(
+        mechanism: &M,
+        q: &[f64],
+        u: &[f64],
+        contacts: &[usize],
+    ) -> Result<Self> {
+        dynamics::check_state(mechanism, q, Some(u))?;
+        let all = mechanism.contacts();
+        for (i, &k) in contacts.iter().enumerate() {
+            if k >= all.len() || contacts[..i].contains(&k) {
+                return Err(Error::Invalid {
+                    field: "contacts".into(),
+                    reason: format!(
+                        "contact {k} is {} (the mechanism has {} contact point(s))",
+                        if k >= all.len() {
+                            "out of range"
+                        } else {
+                            "repeated"
+                        },
+                        all.len()
+                    ),
+                });
+            }
+        }
+        dynamics::check_precision(mechanism, q)?;
+        let kin = dynamics::kinematics(mechanism, q);
+        let mass = dynamics::mass_matrix_of(mechanism, &kin);
+        let n = mechanism.dof();
+        let mut jacobian = DMatrix::zeros(2 * contacts.len(), n);
+        for (j, &k) in contacts.iter().enumerate() {
+            let jk = dynamics::contact_jacobian_of(mechanism, k, q, &kin);
+            jacobian.rows_mut(2 * j, 2).copy_from(&jk);
+        }
+        Self::new(
+            mechanism
+                .coordinates()
+                .iter()
+                .map(|c| c.to_string())
+                .collect(),
+            mass,
+            contacts.iter().map(|&k| all[k].name.to_string()).collect(),
+            jacobian,
+            u,
+        )
+    }
+
+    /// The names of the generalized coordinates.
+    pub fn coordinates(&self) -> &[String] {
+        &self.coordinates
+    }
+
+    /// The names of the contacts, in order.
+    pub fn contacts(&self) -> &[String] {
+        &self.contacts
+    }
+
+    /// The mass matrix `M`.
+    pub fn mass_matrix(&self) -> &DMatrix<f64> {
+        &self.mass
+    }
+
+    /// The contact rows `J` (`2K × n`).
+    pub fn jacobian(&self) -> &DMatrix<f64> {
+        &self.jacobian
+    }
+
+    /// The generalized velocities before, `u⁻`.
+    pub fn velocities_before(&self) -> &[f64] {
+        self.u.as_slice()
+    }
+
+    /// `W = J M⁻¹ Jᵀ` (symmetrised).
+    pub fn inverse_inertia(&self) -> DMatrix<f64> {
+        let w = &self.jacobian * self.chol.solve(&self.jacobian.transpose());
+        0.5 * (&w + w.transpose())
+    }
+
+    /// `v⁻ = J u⁻`, contact by contact (tangent, normal).
+    pub fn contact_velocities(&self) -> Vec<f64> {
+        (&self.jacobian * &self.u).as_slice().to_vec()
+    }
+
+    /// `T⁻ = ½ u⁻ᵀ M u⁻`.
+    pub fn energy_before(&self) -> f64 {
+        self.kinetic_energy(self.u.as_slice())
+    }
+
+    /// `½ uᵀ M u`.
+    pub fn kinetic_energy(&self, u: &[f64]) -> f64 {
+        let u = DVector::from_column_slice(u);
+        0.5 * u.dot(&(&self.mass * &u))
+    }
+
+    /// The contact-space problem with per-contact coefficients (one value for every contact
+    /// or `K`).
+    ///
+    /// # Errors
+    /// As [`MultiProblem::new`] (e.g. no contact approaching).
+    pub fn problem(&self, friction: &[f64], restitution: &[f64]) -> Result<MultiProblem> {
+        MultiProblem::new(
+            self.inverse_inertia(),
+            &self.contact_velocities(),
+            friction,
+            restitution,
+        )
+    }
+
+    /// `u⁺ = u⁻ + M⁻¹ Jᵀ p` for the impulses `p` (one per contact).
+    pub fn velocities_after(&self, p: &[Vec2]) -> Vec<f64> {
+        let flat = DVector::from_iterator(2 * p.len(), p.iter().flat_map(|x| [x.x, x.y]));
+        (&self.u + self.chol.solve(&(self.jacobian.transpose() * flat)))
+            .as_slice()
+            .to_vec()
+    }
+
+    /// Resolve `problem` (built by [`MultiImpact::problem`]) with `law` and map the impulses
+    /// back to the generalized velocities.
+    ///
+    /// # Errors
+    /// As [`LawId::resolve_multi`] (a one-contact law with several contacts names `law`).
+    pub fn resolve(&self, law: LawId, problem: &MultiProblem) -> Result<SystemOutcome> {
+        let resolution = law.resolve_multi(problem)?;
+        let (velocities_after, energy_change_from_velocities) = match &resolution {
+            Ok(o) => {
+                let after = self.velocities_after(&o.impulses());
+                let de = self.kinetic_energy(&after) - self.energy_before();
+                (Some(after), Some(de))
+            }
+            Err(_) => (None, None),
+        };
+        Ok(SystemOutcome {
+            resolution,
+            velocities_after,
+            energy_change_from_velocities,
+        })
+    }
+}
