@@ -38,9 +38,23 @@ fn geometry(shapes: &[Shape], poses: &[Pose<f64>]) -> Vec<Vec<f64>> {
                     p.y - 0.5 * l * c,
                 ]);
             }
+            Shape::Block(b, h) => {
+                // The four edges B–C, C–D, D–A, A–B (the path traced follows the last one's end, B).
+                let corners = block_corners(p, b, h);
+                for i in 0..4 {
+                    let (a, z) = (corners[(i + 1) % 4], corners[(i + 2) % 4]);
+                    out.push(vec![a.0, a.1, z.0, z.1]);
+                }
+            }
         }
     }
     out
+}
+
+/// The corners of a block at pose `p`: A (−b, −h), B (b, −h), C (b, h), D (−b, h) rotated.
+pub(crate) fn block_corners(p: &Pose<f64>, b: f64, h: f64) -> [(f64, f64); 4] {
+    let (s, c) = p.angle.sin_cos();
+    [(-b, -h), (b, -h), (b, h), (-b, h)].map(|(x, y)| (p.x + c * x - s * y, p.y + s * x + c * y))
 }
 
 /// The state's coordinates at time `t`, linearly interpolated between samples.
@@ -185,6 +199,19 @@ pub fn svg(case: &Case, run: &Run) -> String {
                     anim("y2", values(k, 3, &sy))
                 );
                 k += 1;
+            }
+            Shape::Block(..) => {
+                for _ in 0..4 {
+                    let _ = writeln!(
+                        s,
+                        r##"<line stroke="#08306b" stroke-width="4" stroke-linecap="round">{}{}{}{}</line>"##,
+                        anim("x1", values(k, 0, &sx)),
+                        anim("y1", values(k, 1, &sy)),
+                        anim("x2", values(k, 2, &sx)),
+                        anim("y2", values(k, 3, &sy))
+                    );
+                    k += 1;
+                }
             }
             Shape::Rod(_) | Shape::Pendulum(_) => {
                 let _ = writeln!(

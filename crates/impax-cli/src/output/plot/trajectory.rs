@@ -57,6 +57,10 @@ fn outlines(shapes: &[Shape], poses: &[Pose<f64>]) -> Vec<Vec<(f64, f64)>> {
                     (p.x + 0.5 * l * s, p.y - 0.5 * l * c),
                 ]
             }
+            Shape::Block(b, h) => {
+                let c = crate::output::animation::block_corners(p, b, h);
+                vec![c[0], c[1], c[2], c[3], c[0]]
+            }
         })
         .collect()
 }
