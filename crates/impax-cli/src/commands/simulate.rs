@@ -330,7 +330,8 @@ pub fn build(spec: &SimSpec) -> CliResult<Case> {
                 init,
                 vec![Shape::Ball(r); n],
                 format!(
-                    "Newton's cradle: {n} balls (m = {m}, r = {r}) in a row {gap} apart on a frictionless table, the first at v0 = {v0}"
+                    "Newton's cradle: {n} balls (m = {m}, r = {r}) {} on a frictionless table, the first at v0 = {v0}",
+                    if gap == 0.0 { "touching in a row".to_string() } else { format!("in a row {gap} apart") }
                 ),
             )
         }

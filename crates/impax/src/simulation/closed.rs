@@ -28,8 +28,9 @@
 //! `frictionless`, `λ_t = 0`). Each combination is a square linear system for the unknown
 //! forces (`stick`: `α_t = α_n = 0` for `λ_t, λ_n`; the others `α_n = 0` for `λ_n`), solved in
 //! the least-squares, least-norm sense (the complete-pivoting elimination of
-//! [`crate::multi::lcp`], pivots below `10⁻¹¹` of the largest entry taken as zero): a rod lying flat has two closed contacts with the same
-//! tangent row, and the least-norm forces share the friction equally between its ends. A
+//! [`crate::multi::lcp`], pivots below `10⁻¹¹` of the largest entry taken as zero): a rod
+//! lying flat has two closed contacts with the same tangent row, and the least-norm forces
+//! share the friction equally between its ends. A
 //! combination is a solution when its equations hold and every inequality holds to round-off
 //! ([`FORCE_ROUND_OFF`] of the scales `max_i (|α⁰_i| + Σ_k |W_ik| |λ_k|)` and `max |λ|`).
 //! Solutions whose generalized accelerations agree (to `10⁻⁸` of their scale) are one
@@ -43,9 +44,28 @@
 //! results on Painlevé paradoxes*, Eur. J. Mech. A/Solids 18, 1999), which the simulation does
 //! not model: it detects the situation and stops (`painleve`).
 //!
+//! ```
+//! use impax::mechanism::builtin::Rod;
+//! use impax::simulation::{simulate, SimulationOptions, StopReason};
+//! use impax::LawId;
+//! // A unit rod at tan θ = 2 (the bound 4/3) with its end A on the floor sliding towards −x,
+//! // μ = 1.5: no force satisfies the conditions.
+//! let rod = Rod::new(1.0, 1.0, 9.81, 0.0)?;
+//! let th = 2f64.atan();
+//! let q = [0.5 * th.cos(), 0.5 * th.sin(), th];
+//! let options = SimulationOptions::new(LawId::Energetic, 1.5, 0.5, 1.0);
+//! let run = simulate(&rod, &q, &[-1.0, 0.0, 0.0], &options)?;
+//! assert_eq!(run.stop, StopReason::Painleve { contact: 0, solutions: 0 });
+//! // Below the bound the end slides.
+//! let options = SimulationOptions::new(LawId::Energetic, 1.2, 0.5, 1.0);
+//! let run = simulate(&rod, &q, &[-1.0, 0.0, 0.0], &options)?;
+//! assert!(!matches!(run.stop, StopReason::Painleve { .. }));
+//! # Ok::<(), impax::Error>(())
+//! ```
+//!
 //! **Drift.** The constraint `φ_j = 0` is kept at the acceleration level (`α_nj = 0`) and
 //! integrated to tolerance; after every step the state is projected back:
-//! [`project`] moves `q` to zero gaps (Newton steps `Δq = −M⁻¹Gᵀ (G M⁻¹ Gᵀ)⁺ φ`, `G` the normal
+//! the projection moves `q` to zero gaps (Newton steps `Δq = −M⁻¹Gᵀ (G M⁻¹ Gᵀ)⁺ φ`, `G` the normal
 //! rows) and `u` to zero normal velocities at the closed contacts and zero tangential
 //! velocities at the sticking ones (`Δu = −M⁻¹Rᵀ (R M⁻¹ Rᵀ)⁺ R u`): the least change in the
 //! mass metric. The change of `T + V` it makes is recorded in the run's energy ledger.

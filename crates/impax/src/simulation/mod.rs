@@ -16,7 +16,7 @@
 //! * **contacts that stay closed**: a contact left touching with zero normal velocity (a
 //!   plastic impact, a bounce lower than the touching tolerance, an accumulation of impacts, a
 //!   contact pressed into its surface) is closed; the motion is integrated with the forces of
-//!   the closed contacts from the acceleration-level contact problem (`closed`: normal
+//!   the closed contacts from the acceleration-level contact problem ([`closed`]: normal
 //!   complementarity, Coulomb sliding and sticking, solved exactly by enumerating the
 //!   contacts' regimes), projected back onto the contacts after every step. Events: a normal
 //!   force vanishes (the contact opens), a slip halts (stick or reversal), a stick's friction
@@ -41,8 +41,25 @@
 //! velocities), and the total mechanical energy `T + V` before and after; the run's
 //! [`Ledger`] closes `T + V` at the end against the impacts, the work of the contact forces
 //! and the projections.
+//!
+//! ```
+//! use impax::simulation::{scenarios::rod_drop, simulate, SimulationOptions, StopReason};
+//! use impax::LawId;
+//! // A unit rod dropped flat from 0.5 m (μ = e = 0.5): both ends strike at once (one impact,
+//! // under lcp since energetic takes one contact), bounce, and the rod comes to rest lying flat.
+//! let init = rod_drop(1.0, 1.0, 0.0, 0.5, 9.81)?;
+//! let options = SimulationOptions::new(LawId::Energetic, 0.5, 0.5, 3.0);
+//! let run = simulate(&init.mechanism, &init.q, &init.u, &options)?;
+//! assert_eq!(run.impacts[0].contacts, vec![0, 1]);
+//! assert_eq!(run.impacts[0].law, LawId::Lcp);
+//! assert_eq!(run.stop, StopReason::Rest);
+//! let last = run.samples.last().unwrap();
+//! assert!(last.q[1].abs() < 1e-12 && last.q[2].abs() < 1e-12); // y = 0, θ = 0
+//! assert!(run.ledger.residual().abs() < 1e-12 * run.ledger.initial);
+//! # Ok::<(), impax::Error>(())
+//! ```
 
-mod closed;
+pub mod closed;
 mod contact;
 mod impacts;
 mod record;

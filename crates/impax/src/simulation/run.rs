@@ -188,9 +188,9 @@ struct Sim<'a, M: Mechanism + ?Sized> {
 ///
 /// Every contact of the mechanism is watched (both ends of a rod, a double pendulum's tip and
 /// elbow, a block's corners). An impact at one contact applies the run's law; at several at
-/// once (a contact striking while others touch) the multi-contact impact
-/// ([`super::impacts`]). Contacts left touching with zero normal velocity — a plastic impact,
-/// a bounce below the touching tolerance, an accumulation of impacts completed, a contact
+/// once (a contact striking while others touch) the multi-contact impact (`MultiImpact`; see
+/// the [module docs](super)). Contacts left touching with zero normal velocity — a plastic
+/// impact, a bounce below the touching tolerance, an accumulation of impacts completed, a contact
 /// pressed into its surface — stay closed: the motion is integrated with their forces, which
 /// the acceleration-level contact problem gives ([`super::closed`]), until a force vanishes (the
 /// contact opens), a slip halts (stick or reversal), a stick fails (slip), or another contact
