@@ -61,11 +61,14 @@
 
 pub mod closed;
 mod contact;
+mod events;
 mod impacts;
+mod options;
 mod record;
 mod run;
 pub mod scenarios;
 
 pub use closed::{Regime, FORCE_ROUND_OFF, MAX_CLOSED};
+pub use options::SimulationOptions;
 pub use record::{EventKind, ImpactRecord, Ledger, Mode, Run, Sample, StopReason};
-pub use run::{simulate, SimulationOptions};
+pub use run::simulate;

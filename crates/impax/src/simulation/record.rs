@@ -3,6 +3,7 @@
 use super::closed::Regime;
 use crate::law::LawId;
 use crate::math::Vec2;
+use crate::mechanism::{dynamics, Mechanism};
 use crate::multi::MultiOutcome;
 
 /// Why a simulation ended.
@@ -248,4 +249,32 @@ pub struct Run {
     pub steps: (usize, usize),
     /// The energy ledger.
     pub ledger: Ledger,
+}
+
+/// The samples of a run as they are taken: regular ones every `dt`, and those at events.
+pub(crate) struct Recorder<'a, M: Mechanism + ?Sized> {
+    pub m: &'a M,
+    pub dt: f64,
+    pub next: u64,
+    pub samples: Vec<Sample>,
+}
+
+impl<M: Mechanism + ?Sized> Recorder<'_, M> {
+    /// Record the state `y = (q, u, …)` at `t`.
+    pub fn push(&mut self, t: f64, y: &[f64], mode: Mode) {
+        let n = self.m.dof();
+        let (q, u) = (&y[..n], &y[n..2 * n]);
+        self.samples.push(Sample {
+            t,
+            q: q.to_vec(),
+            u: u.to_vec(),
+            kinetic: dynamics::kinetic_energy(self.m, q, u),
+            potential: dynamics::potential_energy(self.m, q),
+            mode,
+        });
+    }
+    /// The next regular sample time.
+    pub fn next_time(&self) -> f64 {
+        self.next as f64 * self.dt
+    }
 }

@@ -1,84 +1,17 @@
 //! The event-driven simulation loop: flight, impacts, contacts that stay closed.
 
 use super::closed::{self, Closed, ContactDynamics, Hint, Regime, FORCE_ROUND_OFF};
-use super::contact::Rolling;
+use super::contact::{roll, Rolling};
+use super::events::{accumulation, gap_of, locate, watched, watched_value, Watched};
 use super::impacts::{strike, Struck};
-use super::record::{EventKind, ImpactRecord, Ledger, Mode, Run, Sample, StopReason};
+use super::record::{EventKind, ImpactRecord, Ledger, Mode, Recorder, Run, StopReason};
+use super::SimulationOptions;
 use crate::error::{Error, Result};
-use crate::law::LawId;
 use crate::math::Vec2;
 use crate::mechanism::dynamics::{self, check_state};
 use crate::mechanism::{Mechanism, Pose};
-use crate::numerics::roots::illinois_with_bisection;
-use crate::ode::{Dopri5, Tolerances};
+use crate::ode::Dopri5;
 use crate::planar::SlipDirection;
-
-/// Options of a simulation.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct SimulationOptions {
-    /// The impact law applied at every impact at one contact; at several contacts at once the
-    /// same law if it is a multi-contact law ([`LawId::is_multi_contact`]), else `lcp`.
-    pub law: LawId,
-    /// Coulomb friction `μ ≥ 0` (impacts and closed contacts).
-    pub friction: f64,
-    /// Coefficient of restitution `e ∈ [0, 1]`.
-    pub restitution: f64,
-    /// End time (> 0).
-    pub until: f64,
-    /// Spacing of the output samples (> 0, at most 10⁶ samples in all).
-    pub sample_interval: f64,
-    /// Largest number of impacts before stopping with [`StopReason::ImpactLimit`].
-    pub max_impacts: usize,
-    /// Integrator tolerances of the smooth motion.
-    pub tolerances: Tolerances,
-}
-
-impl SimulationOptions {
-    /// `law`, `μ`, `e` until `until`, with 1000 sample intervals, at most 10,000 impacts and
-    /// tight tolerances (1e-12 relative).
-    pub fn new(law: LawId, friction: f64, restitution: f64, until: f64) -> Self {
-        SimulationOptions {
-            law,
-            friction,
-            restitution,
-            until,
-            sample_interval: until / 1000.0,
-            max_impacts: 10_000,
-            tolerances: Tolerances::TIGHT,
-        }
-    }
-
-    fn validate(&self) -> Result<()> {
-        crate::error::finite("friction", self.friction)?;
-        crate::error::finite("restitution", self.restitution)?;
-        crate::error::coefficients(self.friction, self.restitution)?;
-        if !(self.until.is_finite() && self.until > 0.0) {
-            return Err(Error::OutOfRange {
-                field: "until".into(),
-                value: self.until,
-                reason: "the end time must be finite and positive".into(),
-            });
-        }
-        let count = self.until / self.sample_interval;
-        if !(self.sample_interval > 0.0 && count.is_finite() && count <= 1e6) {
-            return Err(Error::OutOfRange {
-                field: "sample interval".into(),
-                value: self.sample_interval,
-                reason: "must be positive and give at most 10⁶ samples".into(),
-            });
-        }
-        if self.law.needs_body() {
-            return Err(Error::Invalid {
-                field: "law".into(),
-                reason: format!(
-                    "`{}` needs a single body's centre velocity; choose a contact-space law",
-                    self.law
-                ),
-            });
-        }
-        Ok(())
-    }
-}
 
 /// Relative round-off of velocities: a normal velocity within this fraction of the run's
 /// speed scale is zero (a contact that neither approaches nor leaves).
@@ -90,37 +23,6 @@ const PARTS: usize = 8;
 
 /// The most events in a row at one instant before the run is declared stalled.
 const STALL: usize = 64;
-
-struct Recorder<'a, M: Mechanism + ?Sized> {
-    m: &'a M,
-    dt: f64,
-    next: u64,
-    samples: Vec<Sample>,
-}
-
-impl<M: Mechanism + ?Sized> Recorder<'_, M> {
-    fn push(&mut self, t: f64, y: &[f64], mode: Mode) {
-        let n = self.m.dof();
-        let (q, u) = (&y[..n], &y[n..2 * n]);
-        self.samples.push(Sample {
-            t,
-            q: q.to_vec(),
-            u: u.to_vec(),
-            kinetic: dynamics::kinetic_energy(self.m, q, u),
-            potential: dynamics::potential_energy(self.m, q),
-            mode,
-        });
-    }
-    /// The next regular sample time.
-    fn next_time(&self) -> f64 {
-        self.next as f64 * self.dt
-    }
-}
-
-/// Gap of contact `k` at the state `y = (q, u, …)`.
-fn gap_of<M: Mechanism + ?Sized>(m: &M, k: usize, y: &[f64]) -> f64 {
-    dynamics::gap(m, k, &y[..m.dof()])
-}
 
 /// The contacts that touch their surfaces at `q` (gap within
 /// [`dynamics::touching_tolerance`]).
@@ -143,21 +45,6 @@ fn rhs<'a, M: Mechanism + ?Sized>(
     mu: f64,
 ) -> impl FnMut(f64, &[f64], &mut [f64]) + 'a {
     move |_t, y, dy| closed::derivative(m, &closed, mu, y, dy)
-}
-
-/// What a watched quantity signals when it falls through zero.
-#[derive(Debug, Clone, Copy, PartialEq)]
-enum Watched {
-    /// An open contact's gap: it reaches its surface.
-    Gap(usize),
-    /// A closed contact's normal force: it opens.
-    Force(usize),
-    /// A sliding contact's slip (times its direction): the slip halts.
-    Slip(usize),
-    /// A sticking contact's friction margin `μ λ_n − |λ_t|`: it starts to slip.
-    Margin(usize),
-    /// The sliding regime's force coefficient (relative determinant): Painlevé.
-    Singular,
 }
 
 /// Where the run is.
@@ -971,48 +858,6 @@ impl<M: Mechanism + ?Sized> Sim<'_, M> {
     }
 }
 
-/// The watched quantities of the closed contacts from their watch values: per closed contact
-/// its normal force and its slip (sliding) or friction margin (sticking); the singular one of
-/// a sliding regime whose determinant `det0` at the regime's start is not near zero.
-fn watched(closed: &[Closed], w: &closed::Watch, mu: f64, det0: f64) -> Vec<(Watched, f64)> {
-    let mut out = Vec::with_capacity(2 * closed.len() + 1);
-    for (j, c) in closed.iter().enumerate() {
-        let (lt, ln) = (w.lambda[2 * j], w.lambda[2 * j + 1]);
-        out.push((Watched::Force(c.contact), ln));
-        match c.regime {
-            Regime::Slip(d) => out.push((Watched::Slip(c.contact), d.sign() * w.v[2 * j])),
-            Regime::Stick => out.push((Watched::Margin(c.contact), mu * ln - lt.abs())),
-            Regime::Frictionless => {}
-        }
-    }
-    let slides = closed.iter().any(|c| matches!(c.regime, Regime::Slip(_)));
-    if slides && det0.abs() > 1e-6 {
-        out.push((Watched::Singular, w.det * det0.signum()));
-    }
-    out
-}
-
-/// The value of one watched quantity at `y` (NaN where it cannot be evaluated).
-fn watched_value<M: Mechanism + ?Sized>(
-    m: &M,
-    mu: f64,
-    closed: &[Closed],
-    what: Watched,
-    y: &[f64],
-    det0: f64,
-) -> f64 {
-    if let Watched::Gap(k) = what {
-        return gap_of(m, k, y);
-    }
-    let Ok(w) = closed::watch(m, closed, mu, y) else {
-        return f64::NAN;
-    };
-    watched(closed, &w, mu, det0)
-        .iter()
-        .find(|(x, _)| *x == what)
-        .map_or(f64::NAN, |x| x.1)
-}
-
 /// What a step ended with.
 enum Advance {
     /// Go on.
@@ -1021,134 +866,4 @@ enum Advance {
     Arrival(usize),
     /// The run ends at the current state.
     Stop(StopReason),
-}
-
-/// An accumulation of impacts: the last intervals shrink geometrically (three ratios equal to
-/// 1e-4) and the rest of the series is below a thousandth of the sample interval; or the last
-/// interval is below round-off of the time. Returns `(t∞, ratio)`.
-fn accumulation(times: &[f64], sample_interval: f64) -> Option<(f64, f64)> {
-    let k = times.len();
-    if k < 2 {
-        return None;
-    }
-    let last = times[k - 1];
-    let dt = last - times[k - 2];
-    if dt <= 64.0 * f64::EPSILON * last.abs().max(1.0) {
-        return Some((last, 0.0));
-    }
-    if k < 5 {
-        return None;
-    }
-    let d: Vec<f64> = (k - 4..k).map(|i| times[i] - times[i - 1]).collect();
-    let r: Vec<f64> = (1..4).map(|i| d[i] / d[i - 1]).collect();
-    let ratio = r[2];
-    let steady = r.iter().all(|&x| x > 0.0 && x < 1.0)
-        && (r[2] - r[1]).abs() <= 1e-4 * ratio
-        && (r[1] - r[0]).abs() <= 1e-4 * ratio;
-    let tail = dt * ratio / (1.0 - ratio);
-    (steady && tail <= 1e-3 * sample_interval).then_some((last + tail, ratio))
-}
-
-/// Locate where `g` (positive before, ≤ 0 at the event) falls through zero on the discrete
-/// solution (re-stepping from `(t0, y0)`), bracketed by `[a, b]` from the dense output; `None`
-/// when the discrete solution does not cross (a dense-output graze).
-#[allow(clippy::too_many_arguments)]
-fn locate(
-    ode: &mut Dopri5,
-    f: &mut impl FnMut(f64, &[f64], &mut [f64]),
-    t0: f64,
-    y0: &[f64],
-    t1: f64,
-    y1: &[f64],
-    a: f64,
-    b: f64,
-    trial: &mut [f64],
-    g: &mut impl FnMut(&[f64]) -> f64,
-) -> Option<f64> {
-    let mut at = |t: f64, g: &mut dyn FnMut(&[f64]) -> f64| -> f64 {
-        if t == t0 {
-            return g(y0);
-        }
-        if t == t1 {
-            return g(y1);
-        }
-        ode.trial_step(f, t0, y0, t - t0, trial);
-        g(trial)
-    };
-    let (mut lo, mut hi) = (a, b);
-    let mut glo = at(lo, g);
-    if glo.is_nan() || glo <= 0.0 {
-        lo = t0;
-        glo = at(t0, g);
-    }
-    let mut ghi = at(hi, g);
-    if ghi.is_nan() || ghi > 0.0 {
-        hi = t1;
-        ghi = at(t1, g);
-    }
-    if !(glo > 0.0 && ghi <= 0.0) {
-        return None;
-    }
-    // g falls through zero: its negative rises through zero, to round-off of t.
-    Some(illinois_with_bisection(|t| -at(t, g), lo, -glo, hi, -ghi))
-}
-
-/// Persistent contact of a round body: sliding (closed form) until rolling, then rolling to
-/// the end time, or rest. Returns the stop reason, its time and the energy `T + V` there.
-fn roll<M: Mechanism + ?Sized>(
-    m: &M,
-    body: &crate::mechanism::RoundOnFloor,
-    mut state: Rolling,
-    options: &SimulationOptions,
-    rec: &mut Recorder<'_, M>,
-    events: &mut Vec<(f64, EventKind)>,
-) -> (StopReason, f64, f64) {
-    let (mu, g, until) = (options.friction, m.gravity(), options.until);
-    let speed_scale = state.vx.abs() + (body.radius * state.omega).abs();
-    let mut t = state.t0;
-    let n = m.dof();
-    let energy_of = |s: &Rolling| {
-        let y = s.state(body);
-        dynamics::kinetic_energy(m, &y[..n], &y[n..]) + dynamics::potential_energy(m, &y[..n])
-    };
-    let push = |rec: &mut Recorder<'_, M>, s: &Rolling, mode: Mode| {
-        rec.push(s.t0, &s.state(body), mode);
-    };
-    rec.next = rec.next.max((t / rec.dt).floor() as u64 + 1);
-    let sliding = state.sliding_time(body, mu, g);
-    if sliding > 0.0 {
-        events.push((t, EventKind::Sliding));
-        push(rec, &state, Mode::Sliding);
-        let end = (t + sliding).min(until);
-        while rec.next_time() < end {
-            let s = state.sliding_at(body, mu, g, rec.next_time());
-            push(rec, &s, Mode::Sliding);
-            rec.next += 1;
-        }
-        if t + sliding >= until {
-            let s = state.sliding_at(body, mu, g, until);
-            push(rec, &s, Mode::Sliding);
-            return (StopReason::TimeLimit, until, energy_of(&s));
-        }
-        state = state.sliding_at(body, mu, g, t + sliding);
-        state.omega = -state.vx / body.radius; // the slip is exactly zero from here on
-        t = state.t0;
-    }
-    if state.vx.abs() <= 1e-12 * speed_scale.max(f64::MIN_POSITIVE) || state.vx == 0.0 {
-        state.vx = 0.0;
-        state.omega = 0.0;
-        events.push((t, EventKind::Rest));
-        push(rec, &state, Mode::Rest);
-        return (StopReason::Rest, t, energy_of(&state));
-    }
-    events.push((t, EventKind::Rolling));
-    push(rec, &state, Mode::Rolling);
-    while rec.next_time() < until {
-        let s = state.rolling_at(rec.next_time());
-        push(rec, &s, Mode::Rolling);
-        rec.next += 1;
-    }
-    let last = state.rolling_at(until);
-    push(rec, &last, Mode::Rolling);
-    (StopReason::TimeLimit, until, energy_of(&last))
 }
