@@ -16,7 +16,7 @@ pub enum Command {
     /// Every impact law side by side on one body or mechanism impact (default: the seed's
     /// sphere of Liu 2012: α = 30°, e = 0.7, μ = 0.4, γ = 0; or a built-in mechanism such as
     /// `double-pendulum`).
-    Compare(CompareArgs),
+    Compare(Box<CompareArgs>),
     /// Resolve a contact-space problem (W, v⁻, μ, e) directly: planar (W of 3 numbers, v⁻
     /// of 2), spatial (W of 6, v⁻ of 3), or planar with several contacts (--contacts K).
     Resolve(ResolveArgs),
@@ -29,9 +29,10 @@ pub enum Command {
     /// (generalized momenta, cyclic coordinates, energy, momentum, angular momentum, Noether
     /// charges).
     Conserved(ConservedArgs),
-    /// Simulate a motion with impacts (event-driven): `bouncing-ball`, `rod-drop`,
-    /// `double-pendulum-drop`, or a TOML scenario; impacts table, JSON, CSV, plot, animation.
-    Simulate(SimulateArgs),
+    /// Simulate a motion with impacts and contacts that stay closed (event-driven):
+    /// `bouncing-ball`, `rod-drop`, `double-pendulum-drop`, `rocking-block`, `cradle`, or a
+    /// TOML scenario; impacts table, JSON, CSV, plot, animation.
+    Simulate(Box<SimulateArgs>),
     /// Draw a 2-parameter sweep as maps, one panel per law: the energy-gain region (sign of
     /// ΔT), the phase sequence, or any numeric output as a heatmap (PNG or SVG).
     Map(MapArgs),
@@ -327,8 +328,8 @@ pub struct ConservedArgs {
 
 #[derive(Debug, Args)]
 pub struct SimulateArgs {
-    /// A built-in scenario (`bouncing-ball`, `rod-drop`, `double-pendulum-drop`) or a TOML
-    /// file with a `simulation` key.
+    /// A built-in scenario (`bouncing-ball`, `rod-drop`, `double-pendulum-drop`,
+    /// `rocking-block`, `cradle`) or a TOML file with a `simulation` key.
     pub scenario: String,
     /// The impact law (default `energetic`).
     #[arg(long)]
@@ -348,10 +349,10 @@ pub struct SimulateArgs {
     /// Gravitational acceleration along −y (default 9.81).
     #[arg(long, allow_hyphen_values = true)]
     pub gravity: Option<f64>,
-    /// bouncing-ball, rod-drop: the mass.
+    /// bouncing-ball, rod-drop, rocking-block, cradle: the mass (of each ball).
     #[arg(long, allow_hyphen_values = true)]
     pub mass: Option<f64>,
-    /// bouncing-ball: the radius.
+    /// bouncing-ball, cradle: the radius.
     #[arg(long, allow_hyphen_values = true)]
     pub radius: Option<f64>,
     /// bouncing-ball, rod-drop: the height of the lowest point above the floor.
@@ -372,9 +373,28 @@ pub struct SimulateArgs {
     /// rod-drop: the rod's length.
     #[arg(long, allow_hyphen_values = true)]
     pub length: Option<f64>,
-    /// rod-drop: the rod's angle from the floor, degrees.
+    /// rod-drop: the rod's angle from the floor; rocking-block: the initial tilt
+    /// (counter-clockwise, onto corner A), degrees.
     #[arg(long, allow_hyphen_values = true)]
     pub angle_deg: Option<f64>,
+    /// rocking-block: the half-width b.
+    #[arg(long, allow_hyphen_values = true)]
+    pub half_width: Option<f64>,
+    /// rocking-block: the half-height h.
+    #[arg(long, allow_hyphen_values = true)]
+    pub half_height: Option<f64>,
+    /// rocking-block: the initial angular velocity about the corner it stands on, rad/s.
+    #[arg(long, allow_hyphen_values = true)]
+    pub omega: Option<f64>,
+    /// cradle: the number of balls.
+    #[arg(long)]
+    pub balls: Option<usize>,
+    /// cradle: the first ball's velocity towards the others.
+    #[arg(long, allow_hyphen_values = true)]
+    pub v0: Option<f64>,
+    /// cradle: the gap between neighbouring balls (0: touching).
+    #[arg(long, allow_hyphen_values = true)]
+    pub gap: Option<f64>,
     /// double-pendulum-drop: the masses m1,m2.
     #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
     pub masses: Option<Vec<f64>>,

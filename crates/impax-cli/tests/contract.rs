@@ -126,9 +126,19 @@ fn compare_keeps_the_contract_for_bodies_and_mechanisms() {
 #[test]
 fn simulate_keeps_the_contract() {
     let mut rng = SplitMix64(43);
-    for i in 0..60 {
+    for i in 0..100 {
         let mut args = vec![s("simulate")];
-        match i % 3 {
+        match i % 5 {
+            3 => {
+                args.push(s("rocking-block"));
+                args.extend([s("--angle-deg"), format!("{}", rng.range(-30.0, 30.0))]);
+                args.extend([s("--omega"), format!("{}", rng.range(-3.0, 3.0))]);
+            }
+            4 => {
+                args.push(s("cradle"));
+                args.extend([s("--balls"), format!("{}", 2 + (rng.unit() * 6.0) as usize)]);
+                args.extend([s("--gap"), format!("{}", rng.range(0.0, 0.2))]);
+            }
             0 => {
                 args.push(s("bouncing-ball"));
                 for flag in ["--height", "--speed", "--mass", "--radius"] {

@@ -1,5 +1,6 @@
-//! `impax simulate` end to end: the three built-ins with table, JSON, CSV, plot and
-//! animation; the first bounce against `impax compare`; bad input.
+//! `impax simulate` end to end: the five built-ins with table, JSON, CSV, plot and
+//! animation; the first bounce against `impax compare`; impacts at several contacts and
+//! contacts that stay closed (rocking block, cradle, rod dropped flat); bad input.
 
 use assert_cmd::Command;
 use serde_json::Value;
@@ -39,7 +40,13 @@ fn tmp(name: &str) -> std::path::PathBuf {
 
 #[test]
 fn every_builtin_runs_with_every_output() {
-    for name in ["bouncing-ball", "rod-drop", "double-pendulum-drop"] {
+    for name in [
+        "bouncing-ball",
+        "rod-drop",
+        "double-pendulum-drop",
+        "rocking-block",
+        "cradle",
+    ] {
         let (csv, png, svg, anim) = (
             tmp(&format!("{name}.csv")),
             tmp(&format!("{name}.png")),
@@ -263,4 +270,130 @@ fn bad_simulations_are_one_line_and_exit_2() {
         "animated SVG",
     );
     bad(&["simulate", "bouncing-ball", "--samples", "0"], "samples");
+    bad(&["simulate", "cradle", "--balls", "1"], "balls");
+    bad(&["simulate", "cradle", "--balls", "21"], "balls");
+    bad(&["simulate", "cradle", "--gap", "-0.1"], "gap");
+    bad(&["simulate", "cradle", "--v0", "0"], "v0");
+    bad(&["simulate", "cradle", "--radius", "nan"], "radius");
+    bad(
+        &["simulate", "cradle", "--gravity", "9.81"],
+        "gravity: not a parameter of cradle",
+    );
+    bad(&["simulate", "rocking-block", "--angle-deg", "95"], "angle");
+    bad(
+        &["simulate", "rocking-block", "--half-width", "0"],
+        "half-width",
+    );
+    bad(
+        &["simulate", "rocking-block", "--half-height", "-1"],
+        "half-height",
+    );
+    bad(&["simulate", "rocking-block", "--omega", "inf"], "omega");
+    bad(
+        &["simulate", "rocking-block", "--balls", "3"],
+        "balls: not a parameter of rocking-block",
+    );
+    bad(
+        &["simulate", "rod-drop", "--v0", "1"],
+        "v0: not a parameter of rod-drop",
+    );
+}
+
+fn json(args: &[&str]) -> Value {
+    serde_json::from_str(&run_ok(args)).unwrap()
+}
+
+#[test]
+fn the_rocking_block_rocks_by_housner_and_comes_to_rest() {
+    let doc = json(&["simulate", "rocking-block", "--json"]);
+    assert_eq!(doc["stop"]["id"], "rest");
+    let impacts = doc["impacts"].as_array().unwrap();
+    assert!(impacts.len() > 20);
+    for i in impacts {
+        // Both bottom corners in every impact, the striking one first, under lcp (the run's
+        // law, energetic, takes one contact).
+        assert_eq!(i["law"], "lcp");
+        let contacts = i["contacts"].as_array().unwrap();
+        assert_eq!(contacts.len(), 2);
+        assert_eq!(contacts[0]["contact"], i["contact"]);
+        // Housner: ω⁺/ω⁻ = 1 − (3/2) sin²α = 0.85 for b = 0.2, h = 0.6.
+        let ratio = i["u_after"][2].as_f64().unwrap() / i["u_before"][2].as_f64().unwrap();
+        assert!((ratio - 0.85).abs() < 1e-12, "{ratio}");
+    }
+    let closes = doc["events"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|e| e["kind"] == "closes")
+        .count();
+    assert!(closes >= impacts.len());
+    let l = &doc["ledger"];
+    assert!(l["residual"].as_f64().unwrap().abs() < 1e-10, "{l}");
+    // The table names the contacts of each impact and the law.
+    let text = run_ok(&["simulate", "rocking-block"]);
+    assert!(
+        text.contains("corner B: stick; corner A: off (lcp)"),
+        "{text}"
+    );
+    assert!(text.contains("rest (at rest)"));
+}
+
+#[test]
+fn the_cradle_passes_the_velocity_with_gaps_and_is_one_impact_without() {
+    let speeds = |doc: &Value| -> Vec<f64> {
+        let last = doc["impacts"].as_array().unwrap().last().unwrap();
+        let u = last["u_after"].as_array().unwrap();
+        (0..u.len() / 3)
+            .map(|i| u[3 * i].as_f64().unwrap())
+            .collect()
+    };
+    let gaps = json(&[
+        "simulate", "cradle", "--balls", "4", "--gap", "0.05", "--json",
+    ]);
+    assert_eq!(gaps["impacts"].as_array().unwrap().len(), 3);
+    assert_eq!(speeds(&gaps), vec![0.0, 0.0, 0.0, 1.0]);
+    let touching = json(&["simulate", "cradle", "--law", "lcp", "--json"]);
+    let impacts = touching["impacts"].as_array().unwrap();
+    assert_eq!(impacts.len(), 1);
+    assert_eq!(impacts[0]["contacts"].as_array().unwrap().len(), 2);
+    for (v, x) in speeds(&touching)
+        .iter()
+        .zip([-1.0 / 3.0, 2.0 / 3.0, 2.0 / 3.0])
+    {
+        assert!((v - x).abs() < 1e-12);
+    }
+    let sequential = json(&["simulate", "cradle", "--law", "sequential", "--json"]);
+    assert_eq!(sequential["impacts"][0]["law"], "sequential");
+    assert_eq!(speeds(&sequential), vec![0.0, 0.0, 1.0]);
+    // Eight touching balls are seven contacts: more than lcp takes.
+    let many = json(&["simulate", "cradle", "--balls", "8", "--json"]);
+    assert_eq!(many["stop"]["id"], "unsupported-contact");
+    assert_eq!(many["stop"]["touching"].as_array().unwrap().len(), 6);
+}
+
+#[test]
+fn a_rod_dropped_flat_lands_on_both_ends_and_rests_lying_flat() {
+    let doc = json(&["simulate", "rod-drop", "--angle-deg", "0", "--json"]);
+    assert_eq!(doc["stop"]["id"], "rest");
+    let first = &doc["impacts"][0];
+    assert_eq!(first["law"], "lcp");
+    let names: Vec<&str> = first["contacts"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| c["contact"].as_str().unwrap())
+        .collect();
+    assert_eq!(names, vec!["end A", "end B"]);
+    let events = doc["events"].as_array().unwrap();
+    assert!(events.iter().any(|e| e["kind"] == "rest"));
+    // CSV: the modes of the samples include closed contacts and rest.
+    let csv = tmp("flat.csv");
+    impax()
+        .args(["simulate", "rod-drop", "--angle-deg", "10", "--csv"])
+        .arg(&csv)
+        .assert()
+        .success();
+    let text = std::fs::read_to_string(&csv).unwrap();
+    assert!(text.lines().any(|l| l.contains(",contact,")), "{text}");
+    assert!(text.lines().last().unwrap().contains(",rest,"));
 }

@@ -4,7 +4,7 @@
 //! Scenario files (TOML) name a built-in and override its parameters:
 //!
 //! ```toml
-//! simulation = "bouncing-ball"   # bouncing-ball | rod-drop | double-pendulum-drop
+//! simulation = "bouncing-ball"   # bouncing-ball | rod-drop | double-pendulum-drop | rocking-block | cradle
 //! law = "energetic"
 //! friction = 0.3
 //! restitution = 0.8
@@ -22,7 +22,7 @@ use crate::output::plot;
 use impax::mechanism::builtin::STANDARD_GRAVITY;
 use impax::mechanism::Mechanism;
 use impax::simulation::scenarios::{self, Initial};
-use impax::simulation::{simulate, EventKind, Run, SimulationOptions, StopReason};
+use impax::simulation::{simulate, EventKind, ImpactRecord, Run, SimulationOptions, StopReason};
 use impax::LawId;
 use serde::Deserialize;
 use serde_json::{json, Value};
@@ -30,7 +30,13 @@ use std::io::Write;
 use std::path::Path;
 
 /// The built-in scenarios.
-pub const NAMES: [&str; 3] = ["bouncing-ball", "rod-drop", "double-pendulum-drop"];
+pub const NAMES: [&str; 5] = [
+    "bouncing-ball",
+    "rod-drop",
+    "double-pendulum-drop",
+    "rocking-block",
+    "cradle",
+];
 
 /// Every parameter of every scenario (flags or TOML); each scenario accepts some.
 #[derive(Debug, Clone, Default, Deserialize)]
@@ -57,6 +63,12 @@ pub struct SimSpec {
     pub angles_deg: Option<Vec<f64>>,
     pub rates: Option<Vec<f64>>,
     pub floor: Option<f64>,
+    pub half_width: Option<f64>,
+    pub half_height: Option<f64>,
+    pub omega: Option<f64>,
+    pub balls: Option<usize>,
+    pub v0: Option<f64>,
+    pub gap: Option<f64>,
 }
 
 /// What to draw for each body in pictures.
@@ -68,6 +80,8 @@ pub enum Shape {
     Rod(f64),
     /// A pendulum rod of this length, its angle from the downward vertical.
     Pendulum(f64),
+    /// A rectangle of this half-width and half-height along its angle from the x axis.
+    Block(f64, f64),
 }
 
 /// A scenario ready to run.
@@ -102,6 +116,12 @@ fn flags(args: &SimulateArgs) -> SimSpec {
         angles_deg: args.angles_deg.clone(),
         rates: args.rates.clone(),
         floor: args.floor,
+        half_width: args.half_width,
+        half_height: args.half_height,
+        omega: args.omega,
+        balls: args.balls,
+        v0: args.v0,
+        gap: args.gap,
     }
 }
 
@@ -129,7 +149,13 @@ fn merge(spec: &mut SimSpec, over: &SimSpec) {
         lengths,
         angles_deg,
         rates,
-        floor
+        floor,
+        half_width,
+        half_height,
+        omega,
+        balls,
+        v0,
+        gap
     );
 }
 
@@ -195,6 +221,8 @@ pub fn build(spec: &SimSpec) -> CliResult<Case> {
         ],
         "rod-drop" => &["mass", "length", "angle_deg", "height"],
         "double-pendulum-drop" => &["masses", "lengths", "angles_deg", "rates", "floor"],
+        "rocking-block" => &["mass", "half_width", "half_height", "angle_deg", "omega"],
+        "cradle" => &["balls", "mass", "radius", "v0", "gap"],
         other => {
             return Err(CliError::input(format!(
                 "simulation: unknown scenario `{other}` (known: {})",
@@ -217,9 +245,17 @@ pub fn build(spec: &SimSpec) -> CliResult<Case> {
         ("angles_deg", spec.angles_deg.is_some()),
         ("rates", spec.rates.is_some()),
         ("floor", spec.floor.is_some()),
+        ("half_width", spec.half_width.is_some()),
+        ("half_height", spec.half_height.is_some()),
+        ("omega", spec.omega.is_some()),
+        ("balls", spec.balls.is_some()),
+        ("v0", spec.v0.is_some()),
+        ("gap", spec.gap.is_some()),
+        // The cradle's balls move on a horizontal table: gravity acts across it.
+        ("gravity", name == "cradle" && spec.gravity.is_some()),
     ];
     for (field, present) in given {
-        if present && !allowed.contains(&field) {
+        if present && (!allowed.contains(&field) || field == "gravity") {
             return Err(CliError::input(format!(
                 "{}: not a parameter of {name} (its parameters: {})",
                 field.replace('_', "-"),
@@ -230,6 +266,8 @@ pub fn build(spec: &SimSpec) -> CliResult<Case> {
     let g = spec.gravity.unwrap_or(STANDARD_GRAVITY);
     let (law_default, mu_default, e_default, until_default) = match name {
         "bouncing-ball" => ("energetic", 0.3, 0.8, 5.0),
+        "rocking-block" => ("energetic", 1.0, 0.0, 6.0),
+        "cradle" => ("energetic", 0.0, 1.0, 2.0),
         _ => ("energetic", 0.5, 0.5, 3.0),
     };
     let law: LawId = spec.law.as_deref().unwrap_or(law_default).trim().parse()?;
@@ -264,6 +302,37 @@ pub fn build(spec: &SimSpec) -> CliResult<Case> {
                 init,
                 vec![Shape::Rod(l)],
                 format!("rod (m = {m}, l = {l}) dropped from rest at {a}° to the floor, lower end {h} above it"),
+            )
+        }
+        "rocking-block" => {
+            let m = spec.mass.unwrap_or(1.0);
+            let (b, h) = (
+                spec.half_width.unwrap_or(0.2),
+                spec.half_height.unwrap_or(0.6),
+            );
+            let a = angle("angle-deg", spec.angle_deg.unwrap_or(10.0))?;
+            let w = spec.omega.unwrap_or(0.0);
+            let init = scenarios::rocking_block(m, b, h, a.to_radians(), w, g)?;
+            (
+                init,
+                vec![Shape::Block(b, h)],
+                format!(
+                    "block (m = {m}, half-width {b}, half-height {h}) tilted {a}° onto a corner, turning at {w} rad/s about it"
+                ),
+            )
+        }
+        "cradle" => {
+            let n = spec.balls.unwrap_or(3);
+            let (m, r) = (spec.mass.unwrap_or(1.0), spec.radius.unwrap_or(0.5));
+            let (v0, gap) = (spec.v0.unwrap_or(1.0), spec.gap.unwrap_or(0.0));
+            let init = scenarios::cradle(n, m, r, v0, gap)?;
+            (
+                init,
+                vec![Shape::Ball(r); n],
+                format!(
+                    "Newton's cradle: {n} balls (m = {m}, r = {r}) {} on a frictionless table, the first at v0 = {v0}",
+                    if gap == 0.0 { "touching in a row".to_string() } else { format!("in a row {gap} apart") }
+                ),
             )
         }
         _ => {
@@ -373,11 +442,14 @@ pub fn run(args: &SimulateArgs, out: &mut Vec<u8>) -> CliResult<()> {
 fn stop_json(stop: &StopReason, time: f64) -> Value {
     let mut v = json!({ "id": stop.id(), "time": time });
     match stop {
-        StopReason::PersistentContact { contact } => v["contact"] = json!(contact),
         StopReason::Breakdown { reason } => v["reason"] = json!(reason),
         StopReason::UnsupportedContact { contact, touching } => {
             v["contact"] = json!(contact);
             v["touching"] = json!(touching);
+        }
+        StopReason::Painleve { contact, solutions } => {
+            v["contact"] = json!(contact);
+            v["solutions"] = json!(solutions);
         }
         _ => {}
     }
@@ -388,7 +460,7 @@ fn stop_text(stop: &StopReason, case: &Case) -> String {
     let m = &case.initial.mechanism;
     match stop {
         StopReason::UnsupportedContact { contact, touching } => format!(
-            "the {} met its surface while the {} was in contact: contact at several points at once, which this simulator does not model yet",
+            "the {} met its surface while the {} touched: more contacts at once than the simulator resolves",
             m.contacts()[*contact].name,
             touching
                 .iter()
@@ -397,14 +469,38 @@ fn stop_text(stop: &StopReason, case: &Case) -> String {
                 .join(" and the ")
         ),
         StopReason::TimeLimit => "the end time was reached".into(),
-        StopReason::Rest => "the body came to rest on the floor".into(),
-        StopReason::PersistentContact { contact } => format!(
-            "the {} reached persistent contact, which this simulator does not model for this body",
-            m.contacts()[*contact].name
-        ),
+        StopReason::Rest => "at rest".into(),
         StopReason::ImpactLimit => format!("{} impacts (the limit)", case.options.max_impacts),
         StopReason::Breakdown { reason } => format!("the law does not apply: {reason}"),
+        StopReason::Painleve { contact, solutions } => format!(
+            "Painlevé's paradox at the {}: the contact forces have {} — a tangential impact would be needed, which is not modelled",
+            m.contacts()[*contact].name,
+            if *solutions == 0 {
+                "no solution".to_string()
+            } else {
+                format!("{solutions} solutions")
+            }
+        ),
     }
+}
+
+/// One entry per contact of an impact.
+fn impact_contacts(m: &impax::mechanism::builtin::BuiltIn, i: &ImpactRecord) -> Vec<Value> {
+    i.contacts
+        .iter()
+        .zip(&i.contact_velocities_before)
+        .zip(&i.outcome.contacts)
+        .map(|((&k, vb), c)| {
+            json!({
+                "contact": m.contacts()[k].name,
+                "velocity_before": { "t": num(vb.x), "n": num(vb.y) },
+                "velocity_after": { "t": num(c.velocity_after.x), "n": num(c.velocity_after.y) },
+                "impulse": { "t": num(c.impulse.x), "n": num(c.impulse.y) },
+                "work": { "compression": num(c.work.compression), "restitution": num(c.work.restitution), "friction": num(c.work.friction) },
+                "phases": c.phases.iter().map(|p| json!({ "kind": p.kind.label(), "ends_at": num(p.ends_at) })).collect::<Vec<_>>(),
+            })
+        })
+        .collect()
 }
 
 fn document(case: &Case, run: &Run) -> Value {
@@ -413,14 +509,17 @@ fn document(case: &Case, run: &Run) -> Value {
         .impacts
         .iter()
         .map(|i| {
-            let o = &i.outcome;
+            let o = i.struck();
+            let vb = i.contact_velocity_before();
             json!({
                 "time": i.time,
                 "contact": m.contacts()[i.contact].name,
+                "law": i.law.as_str(),
+                "contacts": impact_contacts(m, i),
                 "q": i.q,
                 "u_before": i.u_before,
                 "u_after": i.u_after,
-                "contact_velocity_before": { "t": num(i.contact_velocity_before.x), "n": num(i.contact_velocity_before.y) },
+                "contact_velocity_before": { "t": num(vb.x), "n": num(vb.y) },
                 "contact_velocity_after": { "t": num(o.velocity_after.x), "n": num(o.velocity_after.y) },
                 "impulse": { "t": num(o.impulse.x), "n": num(o.impulse.y) },
                 "energy_before": i.kinetic_before,
@@ -429,11 +528,12 @@ fn document(case: &Case, run: &Run) -> Value {
                 "work": { "compression": num(o.work.compression), "restitution": num(o.work.restitution), "friction": num(o.work.friction) },
                 "total_energy_before": i.total_energy_before,
                 "total_energy_after": i.total_energy_before + i.energy_change,
-                "phases": o.phases.as_slice().iter().map(|p| json!({ "kind": p.kind.label(), "ends_at": num(p.ends_at) })).collect::<Vec<_>>(),
-                "verdict": o.verdict.id(),
+                "phases": o.phases.iter().map(|p| json!({ "kind": p.kind.label(), "ends_at": num(p.ends_at) })).collect::<Vec<_>>(),
+                "verdict": i.outcome.verdict.id(),
             })
         })
         .collect();
+    let name = |k: &usize| m.contacts()[*k].name;
     let events: Vec<Value> = run
         .events
         .iter()
@@ -444,17 +544,27 @@ fn document(case: &Case, run: &Run) -> Value {
                 limit_time,
                 ratio,
             } => json!({
-                "time": t, "kind": "zeno", "contact": m.contacts()[*contact].name,
+                "time": t, "kind": "zeno", "contact": name(contact),
                 "limit_time": limit_time, "ratio": ratio,
             }),
             EventKind::Sliding => json!({ "time": t, "kind": "sliding" }),
             EventKind::Rolling => json!({ "time": t, "kind": "rolling" }),
             EventKind::Rest => json!({ "time": t, "kind": "rest" }),
+            EventKind::Closes { contact, regime } => json!({
+                "time": t, "kind": "closes", "contact": name(contact), "regime": regime.label(),
+            }),
+            EventKind::Opens { contact } => {
+                json!({ "time": t, "kind": "opens", "contact": name(contact) })
+            }
+            EventKind::Regime { contact, regime } => json!({
+                "time": t, "kind": "regime", "contact": name(contact), "regime": regime.label(),
+            }),
             EventKind::Impact { .. } => unreachable!("filtered"),
         })
         .collect();
     let e0 = run.samples.first().map_or(0.0, |s| s.kinetic + s.potential);
     let e1 = run.samples.last().map_or(0.0, |s| s.kinetic + s.potential);
+    let l = &run.ledger;
     json!({
         "scenario": case.name,
         "description": case.description,
@@ -470,11 +580,34 @@ fn document(case: &Case, run: &Run) -> Value {
         "energy_initial": e0,
         "energy_final": e1,
         "energy_rises_at_impacts": run.impacts.iter().filter(|i| i.energy_change > 0.0).count(),
+        "ledger": {
+            "initial": l.initial,
+            "impacts": num(l.impacts),
+            "contact_work": num(l.contact_work),
+            "corrections": num(l.corrections),
+            "end": l.end,
+            "residual": num(l.residual()),
+        },
         "impacts": impacts,
         "events": events,
         "samples": run.samples.len(),
         "steps": { "accepted": run.steps.0, "rejected": run.steps.1 },
     })
+}
+
+/// The phases column of an impact: the struck contact's phases; at several contacts each
+/// contact's, named, and the law.
+fn phases_cell(m: &impax::mechanism::builtin::BuiltIn, i: &ImpactRecord) -> String {
+    if i.contacts.len() == 1 {
+        return i.struck().phase_summary();
+    }
+    let each: Vec<String> = i
+        .contacts
+        .iter()
+        .zip(&i.outcome.contacts)
+        .map(|(&k, c)| format!("{}: {}", m.contacts()[k].name, c.phase_summary()))
+        .collect();
+    format!("{} ({})", each.join("; "), i.law)
 }
 
 fn table(case: &Case, run: &Run) -> String {
@@ -493,7 +626,8 @@ fn table(case: &Case, run: &Run) -> String {
     ]);
     const SHOWN: usize = 40;
     for (k, i) in run.impacts.iter().enumerate().take(SHOWN) {
-        let o = &i.outcome;
+        let o = i.struck();
+        let vb = i.contact_velocity_before();
         let c = m.contact_point(i.contact, &i.q);
         let mut delta = signed(i.energy_change, 6);
         if i.energy_change > 0.0 {
@@ -503,13 +637,13 @@ fn table(case: &Case, run: &Run) -> String {
             (k + 1).to_string(),
             format!("{:.6}", i.time),
             signed(c[0], 5),
-            signed(i.contact_velocity_before.x, 5),
-            signed(i.contact_velocity_before.y, 5),
+            signed(vb.x, 5),
+            signed(vb.y, 5),
             signed(o.velocity_after.x, 5),
             signed(o.velocity_after.y, 5),
             delta,
             signed(i.total_energy_before + i.energy_change, 6),
-            o.phases.summary(),
+            phases_cell(m, i),
         ]);
     }
     let mut text = format!(
@@ -534,16 +668,43 @@ fn table(case: &Case, run: &Run) -> String {
             ));
         }
     }
-    for (time, e) in &run.events {
-        match e {
-            EventKind::Zeno { limit_time, ratio, .. } => text.push_str(&format!(
-                "t = {time:.6}: impacts accumulate (interval ratio {ratio:.6}); their limit time t∞ = {limit_time:.12}\n"
+    let name = |k: &usize| m.contacts()[*k].name;
+    let lines: Vec<String> = run
+        .events
+        .iter()
+        .filter_map(|(time, e)| match e {
+            EventKind::Zeno { limit_time, ratio, .. } => Some(format!(
+                "t = {time:.6}: impacts accumulate (interval ratio {ratio:.6}); their limit time t∞ = {limit_time:.12}"
             )),
-            EventKind::Sliding => text.push_str(&format!("t = {time:.6}: sliding contact begins\n")),
-            EventKind::Rolling => text.push_str(&format!("t = {time:.6}: rolling begins\n")),
-            EventKind::Rest => text.push_str(&format!("t = {time:.6}: at rest\n")),
-            EventKind::Impact { .. } => {}
-        }
+            EventKind::Sliding => Some(format!("t = {time:.6}: sliding contact begins")),
+            EventKind::Rolling => Some(format!("t = {time:.6}: rolling begins")),
+            EventKind::Rest => Some(format!("t = {time:.6}: at rest")),
+            EventKind::Closes { contact, regime } => Some(format!(
+                "t = {time:.6}: the {} stays in contact ({})",
+                name(contact),
+                regime.label()
+            )),
+            EventKind::Opens { contact } => Some(format!(
+                "t = {time:.6}: the {} leaves its surface (its normal force vanished)",
+                name(contact)
+            )),
+            EventKind::Regime { contact, regime } => Some(format!(
+                "t = {time:.6}: the {} changes to {}",
+                name(contact),
+                regime.label()
+            )),
+            EventKind::Impact { .. } => None,
+        })
+        .collect();
+    for line in lines.iter().take(SHOWN) {
+        text.push_str(line);
+        text.push('\n');
+    }
+    if lines.len() > SHOWN {
+        text.push_str(&format!(
+            "… {} more events (all in --json)\n",
+            lines.len() - SHOWN
+        ));
     }
     let gains = run.impacts.iter().filter(|i| i.energy_change > 0.0).count();
     if gains > 0 {

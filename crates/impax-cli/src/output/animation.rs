@@ -38,9 +38,33 @@ fn geometry(shapes: &[Shape], poses: &[Pose<f64>]) -> Vec<Vec<f64>> {
                     p.y - 0.5 * l * c,
                 ]);
             }
+            Shape::Block(b, h) => {
+                // The four edges B–C, C–D, D–A, A–B (the path traced follows the last one's end, B).
+                let corners = block_corners(p, b, h);
+                for i in 0..4 {
+                    let (a, z) = (corners[(i + 1) % 4], corners[(i + 2) % 4]);
+                    out.push(vec![a.0, a.1, z.0, z.1]);
+                }
+            }
         }
     }
     out
+}
+
+/// The corners of a block at pose `p`: A (−b, −h), B (b, −h), C (b, h), D (−b, h) rotated.
+pub(crate) fn block_corners(p: &Pose<f64>, b: f64, h: f64) -> [(f64, f64); 4] {
+    let (s, c) = p.angle.sin_cos();
+    [(-b, -h), (b, -h), (b, h), (-b, h)].map(|(x, y)| (p.x + c * x - s * y, p.y + s * x + c * y))
+}
+
+/// The height of the mechanism's floor: the first contact with a fixed horizontal surface
+/// (`None` when every contact is between bodies, as in a cradle).
+pub(crate) fn floor<M: Mechanism>(m: &M) -> Option<f64> {
+    m.contacts()
+        .iter()
+        .enumerate()
+        .find(|(k, c)| m.surface_body(*k).is_none() && c.surface.normal.x == 0.0)
+        .map(|(_, c)| c.surface.point.y)
 }
 
 /// The state's coordinates at time `t`, linearly interpolated between samples.
@@ -83,8 +107,12 @@ pub fn svg(case: &Case, run: &Run) -> String {
         energy.push(e_of(t));
     }
     // World bounds (with the floor and the pivot of a pendulum).
-    let floor = m.contacts().first().map_or(0.0, |c| c.surface.point.y);
-    let (mut x0, mut x1, mut y0, mut y1) = (f64::INFINITY, f64::NEG_INFINITY, floor, floor);
+    let floor_at = floor(m);
+    let (mut x0, mut x1) = (f64::INFINITY, f64::NEG_INFINITY);
+    let (mut y0, mut y1) = match floor_at {
+        Some(f) => (f, f),
+        None => (f64::INFINITY, f64::NEG_INFINITY),
+    };
     let pad = case
         .shapes
         .iter()
@@ -128,16 +156,18 @@ pub fn svg(case: &Case, run: &Run) -> String {
         case.name, case.options.law, case.options.friction, case.options.restitution, duration
     );
     // Floor.
-    let fy = sy(floor);
-    let _ = writeln!(
-        s,
-        r##"<rect x="0" y="{fy:.2}" width="{w}" height="{:.2}" fill="#d9d9d9"/>"##,
-        h - fy
-    );
-    let _ = writeln!(
-        s,
-        r##"<line x1="0" y1="{fy:.2}" x2="{w}" y2="{fy:.2}" stroke="#444" stroke-width="2"/>"##
-    );
+    if let Some(floor) = floor_at {
+        let fy = sy(floor);
+        let _ = writeln!(
+            s,
+            r##"<rect x="0" y="{fy:.2}" width="{w}" height="{:.2}" fill="#d9d9d9"/>"##,
+            h - fy
+        );
+        let _ = writeln!(
+            s,
+            r##"<line x1="0" y1="{fy:.2}" x2="{w}" y2="{fy:.2}" stroke="#444" stroke-width="2"/>"##
+        );
+    }
     // The path traced by the first element (a ball's centre, a rod's end, a pendulum's tip).
     let mut trace = String::new();
     for frame in &geo {
@@ -185,6 +215,19 @@ pub fn svg(case: &Case, run: &Run) -> String {
                     anim("y2", values(k, 3, &sy))
                 );
                 k += 1;
+            }
+            Shape::Block(..) => {
+                for _ in 0..4 {
+                    let _ = writeln!(
+                        s,
+                        r##"<line stroke="#08306b" stroke-width="4" stroke-linecap="round">{}{}{}{}</line>"##,
+                        anim("x1", values(k, 0, &sx)),
+                        anim("y1", values(k, 1, &sy)),
+                        anim("x2", values(k, 2, &sx)),
+                        anim("y2", values(k, 3, &sy))
+                    );
+                    k += 1;
+                }
             }
             Shape::Rod(_) | Shape::Pendulum(_) => {
                 let _ = writeln!(

@@ -275,20 +275,23 @@ pub fn body_velocities(kin: &Kinematics, u: &[f64]) -> Vec<[f64; 3]> {
         .collect()
 }
 
-/// The gap `φ(q) = (c(q) − point)·n` of contact `k` (negative: penetration).
+/// The gap `φ(q) = (c(q) − s(q))·n` of contact `k` (negative: penetration), with `s` the
+/// surface's point ([`Mechanism::surface_point`]: fixed, or the other body's point).
 pub fn gap<M: Mechanism + ?Sized>(m: &M, k: usize, q: &[f64]) -> f64 {
-    let s = m.contacts()[k].surface;
+    let n = m.contacts()[k].surface.normal;
     let c = m.contact_point(k, q);
-    (c[0] - s.point.x) * s.normal.x + (c[1] - s.point.y) * s.normal.y
+    let s = m.surface_point(k, q);
+    (c[0] - s[0]) * n.x + (c[1] - s[1]) * n.y
 }
 
 /// The normal velocity of contact `k`, `φ̇ = ∇φ(q)·u` (one dual-number pass seeded `q + εu`;
 /// negative: approaching its surface).
 pub fn gap_rate<M: Mechanism + ?Sized>(m: &M, k: usize, q: &[f64], u: &[f64]) -> f64 {
-    let s = m.contacts()[k].surface;
+    let n = m.contacts()[k].surface.normal;
     let qd: Vec<Dual64> = q.iter().zip(u).map(|(&x, &v)| Dual64::new(x, v)).collect();
     let c = m.contact_point(k, &qd);
-    c[0].eps * s.normal.x + c[1].eps * s.normal.y
+    let s = m.surface_point(k, &qd);
+    (c[0].eps - s[0].eps) * n.x + (c[1].eps - s[1].eps) * n.y
 }
 
 /// Relative size, on the contact's own length scale, of a gap that counts as touching.
@@ -302,11 +305,12 @@ const TOUCHING: f64 = 1e-12;
 pub fn touching_tolerance<M: Mechanism + ?Sized>(m: &M, k: usize, q: &[f64]) -> f64 {
     let contact = m.contacts()[k];
     let c = m.contact_point(k, q);
+    let s = m.surface_point(k, q);
     let mut poses = vec![Pose::new(0.0, 0.0, 0.0); m.bodies().len()];
     m.poses(q, &mut poses);
     let b = poses[contact.body];
     let lever = (c[0] - b.x).hypot(c[1] - b.y);
-    let far = c[0].hypot(c[1]) + contact.surface.point.norm();
+    let far = c[0].hypot(c[1]) + s[0].hypot(s[1]);
     TOUCHING * lever + 64.0 * f64::EPSILON * far
 }
 
@@ -320,31 +324,38 @@ pub fn gap_rates<M: Mechanism + ?Sized>(
     u: &[f64],
     udot: &[f64],
 ) -> [f64; 3] {
-    let s = m.contacts()[k].surface;
-    let project = |c: [f64; 2]| c[0] * s.normal.x + c[1] * s.normal.y;
+    let nrm = m.contacts()[k].surface.normal;
+    let project = |c: [f64; 2]| c[0] * nrm.x + c[1] * nrm.y;
     let qh: Vec<HyperDual64> = q
         .iter()
         .zip(u)
         .map(|(&x, &v)| HyperDual64::new(x, v, v, 0.0))
         .collect();
     let ch = m.contact_point(k, &qh);
+    let sh = m.surface_point(k, &qh);
     let qd: Vec<Dual64> = q
         .iter()
         .zip(udot)
         .map(|(&x, &a)| Dual64::new(x, a))
         .collect();
     let cd = m.contact_point(k, &qd);
-    let phi = (ch[0].re - s.point.x) * s.normal.x + (ch[1].re - s.point.y) * s.normal.y;
+    let sd = m.surface_point(k, &qd);
     [
-        phi,
-        project([ch[0].eps1, ch[1].eps1]),
-        project([cd[0].eps, cd[1].eps]) + project([ch[0].eps1eps2, ch[1].eps1eps2]),
+        project([ch[0].re - sh[0].re, ch[1].re - sh[1].re]),
+        project([ch[0].eps1 - sh[0].eps1, ch[1].eps1 - sh[1].eps1]),
+        project([cd[0].eps - sd[0].eps, cd[1].eps - sd[1].eps])
+            + project([
+                ch[0].eps1eps2 - sh[0].eps1eps2,
+                ch[1].eps1eps2 - sh[1].eps1eps2,
+            ]),
     ]
 }
 
 /// The contact Jacobian of contact `k` at `q` (2 × n, rows tangent then normal): the
 /// velocity of the touching body's material point at `c(q)`,
-/// `v_c = v_b + ω_b × (c − r_b)`, projected on the contact frame.
+/// `v_c = v_b + ω_b × (c − r_b)`, projected on the contact frame; for a contact between two
+/// bodies ([`Mechanism::surface_body`]), minus the velocity of the other body's material
+/// point at the surface point `s(q)`.
 pub fn contact_jacobian_of<M: Mechanism + ?Sized>(
     m: &M,
     k: usize,
@@ -353,19 +364,80 @@ pub fn contact_jacobian_of<M: Mechanism + ?Sized>(
 ) -> DMatrix<f64> {
     let contact = m.contacts()[k];
     let (t, nrm) = (contact.surface.tangent(), contact.surface.normal);
-    let c = m.contact_point(k, q);
-    let pose = kin.poses[contact.body];
-    let r = Vec2::new(c[0] - pose.x, c[1] - pose.y);
-    let jac = &kin.jacobians[contact.body];
     let n = m.dof();
     let mut out = DMatrix::zeros(2, n);
-    for i in 0..n {
-        let vx = jac[(0, i)] - r.y * jac[(2, i)];
-        let vy = jac[(1, i)] + r.x * jac[(2, i)];
-        out[(0, i)] = t.x * vx + t.y * vy;
-        out[(1, i)] = nrm.x * vx + nrm.y * vy;
+    let mut add = |body: usize, point: [f64; 2], sign: f64| {
+        let pose = kin.poses[body];
+        let r = Vec2::new(point[0] - pose.x, point[1] - pose.y);
+        let jac = &kin.jacobians[body];
+        for i in 0..n {
+            let vx = jac[(0, i)] - r.y * jac[(2, i)];
+            let vy = jac[(1, i)] + r.x * jac[(2, i)];
+            out[(0, i)] += sign * (t.x * vx + t.y * vy);
+            out[(1, i)] += sign * (nrm.x * vx + nrm.y * vy);
+        }
+    };
+    add(contact.body, m.contact_point(k, q), 1.0);
+    if let Some(other) = m.surface_body(k) {
+        add(other, m.surface_point(k, q), -1.0);
     }
     out
+}
+
+/// The velocity-product terms `J̇ u` of contact `k`'s rows at `(q, u)`: `(J̇_t u, J̇_n u)`,
+/// what the rows' rates `d(J u)/dt = J u̇ + J̇ u` are at `u̇ = 0`.
+///
+/// * Normal: `J̇_n u = uᵀ ∇²φ u`, the second derivative of the gap along `u` (as
+///   [`gap_rates`]; `J_n = ∇φ` at a contact).
+/// * Tangent: the tangential velocity is that of the body's *material* point at the contact,
+///   `J_t(q) u = t·(v_b + ω_b ẑ × (c(q) − r_b))` (`v_b`, `ω_b` from the body Jacobian `J_b u`).
+///   Its rate at `u̇ = 0` is
+///   `t·(a_b⁰ + α_b⁰ ẑ × (c − r_b) + ω_b ẑ × (ċ − ṙ_b))`, with `(a_b⁰, α_b⁰) = J̇_b u` and
+///   `ċ` the velocity of the (geometric) contact point — which differs from the material
+///   point's for a rolling body. Minus the same for the other body of a contact between two.
+///
+/// Everything comes from one hyper-dual pass of the poses and the contact points seeded
+/// `q + ε₁u + ε₂u` (`.eps1` = rate along `u`, `.eps1eps2` = second rate): no finite
+/// differences.
+pub fn contact_velocity_products<M: Mechanism + ?Sized>(
+    m: &M,
+    k: usize,
+    q: &[f64],
+    u: &[f64],
+) -> [f64; 2] {
+    let contact = m.contacts()[k];
+    let (t, nrm) = (contact.surface.tangent(), contact.surface.normal);
+    let qh: Vec<HyperDual64> = q
+        .iter()
+        .zip(u)
+        .map(|(&x, &v)| HyperDual64::new(x, v, v, 0.0))
+        .collect();
+    let zero = HyperDual64::from(0.0);
+    let mut poses = vec![Pose::new(zero, zero, zero); m.bodies().len()];
+    m.poses(&qh, &mut poses);
+    // The rate at u̇ = 0 of the material velocity of `body`'s point currently at `p`.
+    let material = |body: usize, p: [HyperDual64; 2]| -> [f64; 2] {
+        let b = poses[body];
+        let (w, alpha) = (b.angle.eps1, b.angle.eps1eps2);
+        let (rx, ry) = (p[0].re - b.x.re, p[1].re - b.y.re);
+        let (drx, dry) = (p[0].eps1 - b.x.eps1, p[1].eps1 - b.y.eps1);
+        [
+            b.x.eps1eps2 - alpha * ry - w * dry,
+            b.y.eps1eps2 + alpha * rx + w * drx,
+        ]
+    };
+    let c = m.contact_point(k, &qh);
+    let s = m.surface_point(k, &qh);
+    let mut tangential = material(contact.body, c);
+    if let Some(other) = m.surface_body(k) {
+        let o = material(other, s);
+        tangential = [tangential[0] - o[0], tangential[1] - o[1]];
+    }
+    let normal = [c[0].eps1eps2 - s[0].eps1eps2, c[1].eps1eps2 - s[1].eps1eps2];
+    [
+        t.x * tangential[0] + t.y * tangential[1],
+        nrm.x * normal[0] + nrm.y * normal[1],
+    ]
 }
 
 /// The state derivative `(q̇, u̇) = (u, M⁻¹(Q − Σ J_bᵀ D_b J̇_b u))` for `y = (q, u)`, for the

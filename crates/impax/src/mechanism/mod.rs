@@ -91,13 +91,20 @@ impl Surface {
 }
 
 /// A contact of a mechanism: which body touches which surface.
+///
+/// The surface is a fixed line, or, when [`Mechanism::surface_body`] names a body of the
+/// mechanism, a line carried by that body that keeps the direction of [`Surface::normal`]
+/// (bodies that translate along a line and meet each other, like the balls of a cradle): its
+/// point is then [`Mechanism::surface_point`], and the contact's velocity is that of the
+/// touching body's point relative to the other body's point.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Contact {
     /// A name for messages and tables, e.g. `tip of rod 2`.
     pub name: &'static str,
     /// Index of the body that touches (into [`Mechanism::bodies`]).
     pub body: usize,
-    /// The surface it touches.
+    /// The surface it touches (for a contact between two bodies, its normal; its point is
+    /// [`Mechanism::surface_point`]).
     pub surface: Surface,
 }
 
@@ -134,6 +141,22 @@ pub trait Mechanism {
     /// `φ(q) = (c(q) − point)·n`). The default has no contacts and is never called.
     fn contact_point<D: Real>(&self, _k: usize, _q: &[D]) -> [D; 2] {
         unreachable!("a mechanism without contacts has no contact point")
+    }
+
+    /// The body that carries the surface of contact `k`, for a contact between two bodies of
+    /// the mechanism (default: `None`, the surface is fixed). The impulse or force of the
+    /// contact acts on the touching body ([`Contact::body`]) and its opposite on this one.
+    fn surface_body(&self, _k: usize) -> Option<usize> {
+        None
+    }
+
+    /// The point of the surface of contact `k` at `q` that the contact point meets: the fixed
+    /// surface's [`Surface::point`] (the default), or, for a contact between two bodies, the
+    /// other body's point nearest the contact point (its gap is
+    /// `φ(q) = (c(q) − surface_point(q))·n`).
+    fn surface_point<D: Real>(&self, k: usize, _q: &[D]) -> [D; 2] {
+        let p = self.contacts()[k].surface.point;
+        [D::from(p.x), D::from(p.y)]
     }
 
     /// Number of generalized coordinates.

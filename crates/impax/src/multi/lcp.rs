@@ -89,7 +89,7 @@ use crate::planar::SlipDirection;
 pub const MAX_CONTACTS: usize = 6;
 
 /// The largest system: two unknowns per contact.
-const DIM: usize = 2 * MAX_CONTACTS;
+pub(crate) const DIM: usize = 2 * MAX_CONTACTS;
 
 /// Pivots below this fraction of the largest entry end the elimination (rank deficiency).
 const PIVOT_TOL: f64 = 1e-11;
@@ -487,7 +487,12 @@ fn tidy(s: &Setup, c: &Candidate) -> LcpSolution {
 /// `y₁ = U₁₁⁻¹ (c₁ − U₁₂ y₂)`: `(GᵀG + I) y₂ = Gᵀ a₀`, `G = U₁₁⁻¹ U₁₂`, `a₀ = U₁₁⁻¹ c₁`). The
 /// equations left out are checked by the caller (through the velocities after).
 #[allow(clippy::needless_range_loop)] // the indices of the triangular factors, as written
-fn least_norm(a: &mut [[f64; DIM]; DIM], r: &mut [f64; DIM], n: usize, y: &mut [f64; DIM]) {
+pub(crate) fn least_norm(
+    a: &mut [[f64; DIM]; DIM],
+    r: &mut [f64; DIM],
+    n: usize,
+    y: &mut [f64; DIM],
+) {
     let mut col = [0usize; DIM];
     for (i, c) in col.iter_mut().enumerate() {
         *c = i;

@@ -193,6 +193,35 @@ impl Dopri5 {
         Ok(())
     }
 
+    /// Replace the current state by `(t, y)` — a small correction of it, such as a projection
+    /// onto constraints — keeping the step size the integrator has adapted (one evaluation of
+    /// `f`, where [`Dopri5::start`] estimates the first step anew).
+    ///
+    /// # Errors
+    /// [`Error::Integration`] when the right-hand side is not finite at `(t, y)`.
+    pub fn restart(
+        &mut self,
+        f: &mut impl FnMut(f64, &[f64], &mut [f64]),
+        t: f64,
+        y: &[f64],
+    ) -> Result<()> {
+        assert_eq!(
+            y.len(),
+            self.y.len(),
+            "state length differs from the integrator's"
+        );
+        self.y.copy_from_slice(y);
+        self.t = t;
+        f(t, &self.y, &mut self.k[0]);
+        if !self.k[0].iter().all(|x| x.is_finite()) {
+            return Err(Error::Integration {
+                reason: "the equations of motion are not finite at the corrected state".into(),
+            });
+        }
+        self.pending = false;
+        Ok(())
+    }
+
     /// The time of the current state (the end of the last accepted step).
     pub fn time(&self) -> f64 {
         self.t

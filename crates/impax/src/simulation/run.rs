@@ -1,316 +1,94 @@
-//! The event-driven simulation loop.
+//! The event-driven simulation loop: flight, impacts, contacts that stay closed.
 
-use super::contact::Rolling;
+use super::closed::{self, Closed, ContactDynamics, Hint, Regime, FORCE_ROUND_OFF};
+use super::contact::{roll, Rolling};
+use super::events::{accumulation, gap_of, locate, watched, watched_value, Watched};
+use super::impacts::{strike, Struck};
+use super::record::{EventKind, ImpactRecord, Ledger, Mode, Recorder, Run, StopReason};
+use super::SimulationOptions;
 use crate::error::{Error, Result};
-use crate::law::LawId;
 use crate::math::Vec2;
 use crate::mechanism::dynamics::{self, check_state};
-use crate::mechanism::impact::MechanismImpact;
-use crate::mechanism::Mechanism;
-use crate::numerics::roots::illinois_with_bisection;
-use crate::ode::{Dopri5, Tolerances};
-use crate::planar::Outcome;
+use crate::mechanism::{Mechanism, Pose};
+use crate::ode::Dopri5;
+use crate::planar::SlipDirection;
 
-/// Options of a simulation.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct SimulationOptions {
-    /// The impact law applied at every impact.
-    pub law: LawId,
-    /// Coulomb friction `μ ≥ 0` (impacts and sliding).
-    pub friction: f64,
-    /// Coefficient of restitution `e ∈ [0, 1]`.
-    pub restitution: f64,
-    /// End time (> 0).
-    pub until: f64,
-    /// Spacing of the output samples (> 0, at most 10⁶ samples in all).
-    pub sample_interval: f64,
-    /// Largest number of impacts before stopping with [`StopReason::ImpactLimit`].
-    pub max_impacts: usize,
-    /// Integrator tolerances of the free motion.
-    pub tolerances: Tolerances,
-}
+/// Relative round-off of velocities: a normal velocity within this fraction of the run's
+/// speed scale is zero (a contact that neither approaches nor leaves).
+const VELOCITY_ROUND_OFF: f64 = 1e-9;
 
-impl SimulationOptions {
-    /// `law`, `μ`, `e` until `until`, with 1000 sample intervals, at most 10,000 impacts and
-    /// tight tolerances (1e-12 relative).
-    pub fn new(law: LawId, friction: f64, restitution: f64, until: f64) -> Self {
-        SimulationOptions {
-            law,
-            friction,
-            restitution,
-            until,
-            sample_interval: until / 1000.0,
-            max_impacts: 10_000,
-            tolerances: Tolerances::TIGHT,
-        }
-    }
+/// Points of each step's dense output at which the gaps and the closed contacts' forces are
+/// watched (with the sample times inside the step).
+const PARTS: usize = 8;
 
-    fn validate(&self) -> Result<()> {
-        crate::error::finite("friction", self.friction)?;
-        crate::error::finite("restitution", self.restitution)?;
-        crate::error::coefficients(self.friction, self.restitution)?;
-        if !(self.until.is_finite() && self.until > 0.0) {
-            return Err(Error::OutOfRange {
-                field: "until".into(),
-                value: self.until,
-                reason: "the end time must be finite and positive".into(),
-            });
-        }
-        let count = self.until / self.sample_interval;
-        if !(self.sample_interval > 0.0 && count.is_finite() && count <= 1e6) {
-            return Err(Error::OutOfRange {
-                field: "sample interval".into(),
-                value: self.sample_interval,
-                reason: "must be positive and give at most 10⁶ samples".into(),
-            });
-        }
-        if self.law.needs_body() {
-            return Err(Error::Invalid {
-                field: "law".into(),
-                reason: format!(
-                    "`{}` needs a single body's centre velocity; choose a contact-space law",
-                    self.law
-                ),
-            });
-        }
-        Ok(())
-    }
-}
+/// The most events in a row at one instant before the run is declared stalled.
+const STALL: usize = 64;
 
-/// Why a simulation ended.
-#[derive(Debug, Clone, PartialEq)]
-pub enum StopReason {
-    /// The end time was reached.
-    TimeLimit,
-    /// A round body came to rest on the floor.
-    Rest,
-    /// A body reached persistent contact that the simulator does not model (any body but a
-    /// round one on a horizontal floor): a plastic impact, or an accumulation of impacts.
-    PersistentContact {
-        /// The contact.
-        contact: usize,
-    },
-    /// [`SimulationOptions::max_impacts`] impacts happened.
-    ImpactLimit,
-    /// The law does not apply at an impact (its breakdown reason).
-    Breakdown {
-        /// Why.
-        reason: String,
-    },
-    /// A contact struck, or was pressed into its surface, while other contacts touched theirs
-    /// (a rod landing on both ends, rocking onto its second end, a pendulum's elbow meeting
-    /// the floor where its tip rests): an impact or a resting contact at several points at
-    /// once, which this simulator does not model. The run ends at that instant, before the
-    /// impact.
-    UnsupportedContact {
-        /// The contact that struck or was pressed.
-        contact: usize,
-        /// The contacts touching their surfaces at that time.
-        touching: Vec<usize>,
-    },
-}
-
-impl StopReason {
-    /// Stable id: `time-limit`, `rest`, `persistent-contact`, `impact-limit`, `breakdown`,
-    /// `unsupported-contact`.
-    pub fn id(&self) -> &'static str {
-        match self {
-            StopReason::UnsupportedContact { .. } => "unsupported-contact",
-            StopReason::TimeLimit => "time-limit",
-            StopReason::Rest => "rest",
-            StopReason::PersistentContact { .. } => "persistent-contact",
-            StopReason::ImpactLimit => "impact-limit",
-            StopReason::Breakdown { .. } => "breakdown",
-        }
-    }
-}
-
-/// The regime of the motion at a sample.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Mode {
-    /// Free motion (no contact).
-    Flight,
-    /// A round body sliding on the floor.
-    Sliding,
-    /// A round body rolling on the floor.
-    Rolling,
-    /// At rest.
-    Rest,
-}
-
-impl Mode {
-    /// `flight`, `sliding`, `rolling`, `rest`.
-    pub fn id(self) -> &'static str {
-        match self {
-            Mode::Flight => "flight",
-            Mode::Sliding => "sliding",
-            Mode::Rolling => "rolling",
-            Mode::Rest => "rest",
-        }
-    }
-}
-
-/// Something that happened during the run.
-#[derive(Debug, Clone, PartialEq)]
-pub enum EventKind {
-    /// Impact number `index` (into [`Run::impacts`]).
-    Impact {
-        /// Index into the impacts.
-        index: usize,
-    },
-    /// An accumulation of impacts at `contact`, completed at its limit time.
-    Zeno {
-        /// The contact.
-        contact: usize,
-        /// `t∞`, the sum of the geometric series of impact intervals.
-        limit_time: f64,
-        /// The common ratio of the intervals.
-        ratio: f64,
-    },
-    /// Persistent sliding contact begins.
-    Sliding,
-    /// Rolling begins (the slip vanished).
-    Rolling,
-    /// The body comes to rest.
-    Rest,
-}
-
-/// One output sample of the trajectory.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Sample {
-    /// Time.
-    pub t: f64,
-    /// Generalized coordinates.
-    pub q: Vec<f64>,
-    /// Generalized velocities.
-    pub u: Vec<f64>,
-    /// Kinetic energy `T`.
-    pub kinetic: f64,
-    /// Potential energy `V`.
-    pub potential: f64,
-    /// The regime.
-    pub mode: Mode,
-}
-
-/// One impact and its energy ledger.
-#[derive(Debug, Clone, PartialEq)]
-pub struct ImpactRecord {
-    /// Time of the impact.
-    pub time: f64,
-    /// The contact that struck.
-    pub contact: usize,
-    /// Configuration at the impact.
-    pub q: Vec<f64>,
-    /// Generalized velocities before.
-    pub u_before: Vec<f64>,
-    /// Generalized velocities after.
-    pub u_after: Vec<f64>,
-    /// Contact velocity before, `(v_t, v_n)`.
-    pub contact_velocity_before: Vec2,
-    /// The law's result in contact space (impulse, work split, phases, verdict …).
-    pub outcome: Outcome,
-    /// Kinetic energy before.
-    pub kinetic_before: f64,
-    /// `ΔT` from the generalized velocities.
-    pub energy_change: f64,
-    /// Translational part of `ΔT`, `Σ_b ½ m_b Δ|v_b|²`.
-    pub translational_change: f64,
-    /// Rotational part of `ΔT`, `Σ_b ½ I_b Δω_b²`.
-    pub rotational_change: f64,
-    /// Total mechanical energy `T + V` before (`V` is continuous across the impact).
-    pub total_energy_before: f64,
-}
-
-/// The result of a simulation.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Run {
-    /// Output samples (at the sample interval, plus before and after every impact).
-    pub samples: Vec<Sample>,
-    /// Every impact.
-    pub impacts: Vec<ImpactRecord>,
-    /// Every event, with its time.
-    pub events: Vec<(f64, EventKind)>,
-    /// Why the run ended.
-    pub stop: StopReason,
-    /// When it ended.
-    pub end_time: f64,
-    /// Accepted and rejected integrator steps.
-    pub steps: (usize, usize),
-}
-
-struct Recorder<'a, M: Mechanism + ?Sized> {
-    m: &'a M,
-    dt: f64,
-    next: u64,
-    samples: Vec<Sample>,
-}
-
-impl<M: Mechanism + ?Sized> Recorder<'_, M> {
-    fn push(&mut self, t: f64, y: &[f64], mode: Mode) {
-        let n = self.m.dof();
-        let (q, u) = y.split_at(n);
-        self.samples.push(Sample {
-            t,
-            q: q.to_vec(),
-            u: u.to_vec(),
-            kinetic: dynamics::kinetic_energy(self.m, q, u),
-            potential: dynamics::potential_energy(self.m, q),
-            mode,
-        });
-    }
-    /// The next regular sample time.
-    fn next_time(&self) -> f64 {
-        self.next as f64 * self.dt
-    }
-}
-
-/// Gap of contact `k` at the state `y = (q, u)`.
-fn gap_of<M: Mechanism + ?Sized>(m: &M, k: usize, y: &[f64]) -> f64 {
-    dynamics::gap(m, k, &y[..m.dof()])
-}
-
-/// The contacts other than `except` that touch their surfaces at `q` (gap within
+/// The contacts that touch their surfaces at `q` (gap within
 /// [`dynamics::touching_tolerance`]).
-fn touching<M: Mechanism + ?Sized>(m: &M, q: &[f64], except: usize) -> Vec<usize> {
+fn touching<M: Mechanism + ?Sized>(m: &M, q: &[f64]) -> Vec<usize> {
     (0..m.contacts().len())
-        .filter(|&j| j != except && dynamics::gap(m, j, q) <= dynamics::touching_tolerance(m, j, q))
+        .filter(|&j| dynamics::gap(m, j, q) <= dynamics::touching_tolerance(m, j, q))
         .collect()
 }
 
-/// Contact `k` at `(q, u)` touches its surface without approaching it and is accelerated into
-/// it (`φ̇ = 0`, `φ̈ < 0`): it would stay closed, pressed against the surface.
-fn pressed<M: Mechanism + ?Sized>(m: &M, k: usize, q: &[f64], u: &[f64]) -> Result<bool> {
-    if dynamics::gap(m, k, q) > dynamics::touching_tolerance(m, k, q) {
-        return Ok(false);
-    }
-    let acc = dynamics::accelerations(m, q, u)?;
-    let [_, rate, accel] = dynamics::gap_rates(m, k, q, u, acc.as_slice());
-    Ok(rate <= 0.0 && accel < 0.0)
+/// `T + V` at `y`.
+fn energy<M: Mechanism + ?Sized>(m: &M, y: &[f64]) -> f64 {
+    let n = m.dof();
+    dynamics::kinetic_energy(m, &y[..n], &y[n..2 * n]) + dynamics::potential_energy(m, &y[..n])
 }
 
-/// What happens at `(t, y)` when contact `k` reaches its surface.
-#[derive(Debug, Clone, Copy, PartialEq)]
-enum Arrival {
-    /// Its gap crossed zero: an impact if it approaches (a graze otherwise).
-    Crossing(usize),
-    /// It touched its surface at the start of a step and the motion moved it into the
-    /// surface: an impact if it approaches, else it is pressed into persistent contact.
-    Pressing(usize),
+/// The right-hand side of the motion with the closed contacts `closed`.
+fn rhs<'a, M: Mechanism + ?Sized>(
+    m: &'a M,
+    closed: Vec<Closed>,
+    mu: f64,
+) -> impl FnMut(f64, &[f64], &mut [f64]) + 'a {
+    move |_t, y, dy| closed::derivative(m, &closed, mu, y, dy)
+}
+
+/// Where the run is.
+struct Sim<'a, M: Mechanism + ?Sized> {
+    m: &'a M,
+    opt: SimulationOptions,
+    n: usize,
+    rec: Recorder<'a, M>,
+    impacts: Vec<ImpactRecord>,
+    events: Vec<(f64, EventKind)>,
+    ledger: Ledger,
+    /// Impact times and their contacts since the last change of regime (accumulation).
+    series: Vec<(f64, Vec<usize>)>,
+    closed: Vec<Closed>,
+    t: f64,
+    /// `(q, u, w)`: `w` the work of the contact forces.
+    y: Vec<f64>,
+    ode: Dopri5,
+    /// The largest contact speed of the run (and `√(g L)`, `L` the largest lever).
+    vscale: f64,
+    /// Events at the current instant (a guard against endless switching).
+    stall: (f64, usize),
+    /// The end time and energy of a round body's closed form that ended the run.
+    rolled: Option<(f64, f64)>,
 }
 
 /// Simulate `m` from `(q0, u0)` at `t = 0` until `options.until` (or a stop).
 ///
 /// Every contact of the mechanism is watched (both ends of a rod, a double pendulum's tip and
-/// elbow). The run stops with [`StopReason::UnsupportedContact`] when a contact strikes, or is
-/// pressed into its surface, while another one touches its own (an impact or a resting
-/// contact at several points at once), and with [`StopReason::PersistentContact`] when a
-/// single contact stays closed on any body but a round one on a floor; the last sample is the
-/// state at the stop, with its true energy. No sampled state has a contact below its surface
-/// by more than [`dynamics::touching_tolerance`].
+/// elbow, a block's corners). An impact at one contact applies the run's law; at several at
+/// once (a contact striking while others touch) the multi-contact impact (`MultiImpact`; see
+/// the [module docs](super)). Contacts left touching with zero normal velocity — a plastic
+/// impact, a bounce below the touching tolerance, an accumulation of impacts completed, a contact
+/// pressed into its surface — stay closed: the motion is integrated with their forces, which
+/// the acceleration-level contact problem gives ([`super::closed`]), until a force vanishes (the
+/// contact opens), a slip halts (stick or reversal), a stick fails (slip), or another contact
+/// strikes. A round body on a horizontal floor slides and rolls in closed form instead. The
+/// run stops at rest ([`StopReason::Rest`]), at Painlevé's paradox ([`StopReason::Painleve`]),
+/// or where the laws do not apply. No sampled state has a contact below its surface by more
+/// than [`dynamics::touching_tolerance`]; the last sample is the state at the stop.
 ///
 /// # Errors
 /// Invalid state or options; a start below a surface; a singular mass matrix or a failed
-/// integration along the way.
+/// integration along the way; contact regimes that switch endlessly at one instant.
 pub fn simulate<M: Mechanism + ?Sized>(
     m: &M,
     q0: &[f64],
@@ -323,11 +101,11 @@ pub fn simulate<M: Mechanism + ?Sized>(
     dynamics::accelerations(m, q0, u0)?;
     let n = m.dof();
     let contacts = m.contacts().len();
-    let energy = dynamics::kinetic_energy(m, q0, u0) + dynamics::potential_energy(m, q0);
-    if !(energy.is_finite() && energy.abs() < 1e300) {
+    let e0 = dynamics::kinetic_energy(m, q0, u0) + dynamics::potential_energy(m, q0);
+    if !(e0.is_finite() && e0.abs() < 1e300) {
         return Err(Error::OutOfRange {
             field: "q".into(),
-            value: energy,
+            value: e0,
             reason: "the energy T + V of the initial state is not representable with room for the motion (it must be below 1e300)".into(),
         });
     }
@@ -344,251 +122,475 @@ pub fn simulate<M: Mechanism + ?Sized>(
             });
         }
     }
-    let mut f = |_t: f64, y: &[f64], dy: &mut [f64]| dynamics::state_derivative(m, y, dy);
-    let mut ode = Dopri5::new(2 * n, options.tolerances)?;
-    let mut rec = Recorder {
-        m,
-        dt: options.sample_interval,
-        next: 1,
-        samples: Vec::new(),
-    };
-    let mut y: Vec<f64> = q0.iter().chain(u0).copied().collect();
-    let mut t = 0.0;
-    rec.push(0.0, &y, Mode::Flight);
-    let mut impacts: Vec<ImpactRecord> = Vec::new();
-    let mut events: Vec<(f64, EventKind)> = Vec::new();
-    // Impact times of the current run of impacts at one contact (for accumulation).
-    let mut series: (usize, Vec<f64>) = (usize::MAX, Vec::new());
-    let until = options.until;
-
-    // A contact touching at the start: struck at t = 0 if it approaches, pressed if the
-    // motion pushes it into its surface.
-    let mut pending: Option<Arrival> = None;
-    for k in 0..contacts {
-        if dynamics::gap(m, k, q0) > dynamics::touching_tolerance(m, k, q0) {
-            continue;
-        }
-        if dynamics::gap_rate(m, k, q0, u0) < 0.0 {
-            pending = Some(Arrival::Crossing(k));
-            break;
-        }
-        if pending.is_none() && pressed(m, k, q0, u0)? {
-            pending = Some(Arrival::Pressing(k));
+    // The speed scale: the contacts' speeds and the speed of a fall through a lever.
+    let mut vscale = f64::MIN_POSITIVE;
+    {
+        let kin = dynamics::kinematics(m, q0);
+        let mut poses = vec![Pose::new(0.0, 0.0, 0.0); m.bodies().len()];
+        m.poses(q0, &mut poses);
+        for k in 0..contacts {
+            let j = dynamics::contact_jacobian_of(m, k, q0, &kin);
+            let v = &j * nalgebra::DVector::from_column_slice(u0);
+            let c = m.contact_point(k, q0);
+            let b = poses[m.contacts()[k].body];
+            let lever = (c[0] - b.x).hypot(c[1] - b.y);
+            vscale = vscale.max(v.norm()).max((m.gravity() * lever).sqrt());
         }
     }
-    ode.start(&mut f, t, &y, until)?;
-    let mut ystart = vec![0.0; 2 * n];
-    let mut trial = vec![0.0; 2 * n];
-    let mut buf = vec![0.0; 2 * n];
-    loop {
-        if let Some(arrival) = pending.take() {
-            let (Arrival::Crossing(k) | Arrival::Pressing(k)) = arrival;
-            let (q, u) = y.split_at(n);
-            let others = touching(m, q, k);
-            let v_k = dynamics::gap_rate(m, k, q, u);
-            if v_k >= 0.0 {
-                if let Arrival::Pressing(_) = arrival {
-                    // Pressed into the surface: persistent contact.
-                    if !others.is_empty() {
-                        let stop = StopReason::UnsupportedContact {
-                            contact: k,
-                            touching: others,
-                        };
-                        return Ok(stop_at(rec, impacts, events, stop, t, &y, &ode));
-                    }
-                    if let Some((body, state)) = rolling_from(m, k, t, &y) {
-                        let (stop, end) = roll(m, &body, state, options, &mut rec, &mut events);
-                        return Ok(finish(rec, impacts, events, stop, end, &ode));
-                    }
-                    let stop = StopReason::PersistentContact { contact: k };
-                    return Ok(stop_at(rec, impacts, events, stop, t, &y, &ode));
-                }
-            } else {
-                // ---- the impact at (t, y) on contact k ----
-                if impacts.len() >= options.max_impacts {
-                    return Ok(stop_at(
-                        rec,
-                        impacts,
-                        events,
-                        StopReason::ImpactLimit,
-                        t,
-                        &y,
-                        &ode,
-                    ));
-                }
-                // Another contact touching and approaching: an impact at several points.
-                if others.iter().any(|&j| dynamics::gap_rate(m, j, q, u) < 0.0) {
-                    let stop = StopReason::UnsupportedContact {
-                        contact: k,
-                        touching: others,
-                    };
-                    return Ok(stop_at(rec, impacts, events, stop, t, &y, &ode));
-                }
-                let imp = MechanismImpact::new(m, q, u, k)?;
-                let v = imp.contact_velocity();
-                // A contact that one coordinate alone moves (a double pendulum's elbow) has a
-                // singular W: no one-contact law applies there.
-                let problem = match imp.problem(options.friction, options.restitution) {
-                    Ok(p) => p,
-                    Err(e) => {
-                        let stop = StopReason::Breakdown {
-                            reason: format!(
-                                "the {} strikes, and its contact problem is not one a one-contact law takes: {e}",
-                                m.contacts()[k].name
-                            ),
-                        };
-                        return Ok(stop_at(rec, impacts, events, stop, t, &y, &ode));
-                    }
-                };
-                let outcome = match options.law.resolve(&problem) {
-                    Ok(o) => o,
-                    Err(b) => {
-                        let stop = StopReason::Breakdown {
-                            reason: b.reason.to_string(),
-                        };
-                        return Ok(stop_at(rec, impacts, events, stop, t, &y, &ode));
-                    }
-                };
-                let after = imp.velocities_after(outcome.impulse);
-                // The impulse at k must not drive another touching contact into its surface.
-                let speed = v.norm();
-                let mut blocked = false;
-                for &j in &others {
-                    let vj = dynamics::gap_rate(m, j, q, &after);
-                    if vj < 0.0 || (vj <= 1e-9 * speed && pressed(m, j, q, &after)?) {
-                        blocked = true;
-                    }
-                }
-                if blocked {
-                    let stop = StopReason::UnsupportedContact {
-                        contact: k,
-                        touching: others,
-                    };
-                    return Ok(stop_at(rec, impacts, events, stop, t, &y, &ode));
-                }
-                let (tr0, rot0) = energy_parts(m, imp.kinematics(), u);
-                let (tr1, rot1) = energy_parts(m, imp.kinematics(), &after);
-                let kinetic_before = imp.energy_before();
-                let potential = dynamics::potential_energy(m, q);
-                rec.push(t, &y, Mode::Flight);
-                impacts.push(ImpactRecord {
-                    time: t,
-                    contact: k,
-                    q: q.to_vec(),
-                    u_before: u.to_vec(),
-                    u_after: after.clone(),
-                    contact_velocity_before: v,
-                    energy_change: imp.kinetic_energy(&after) - kinetic_before,
-                    translational_change: tr1 - tr0,
-                    rotational_change: rot1 - rot0,
-                    total_energy_before: kinetic_before + potential,
-                    kinetic_before,
-                    outcome,
-                });
-                events.push((
-                    t,
-                    EventKind::Impact {
-                        index: impacts.len() - 1,
-                    },
-                ));
-                y[n..].copy_from_slice(&after);
-                rec.push(t, &y, Mode::Flight);
-                let vn_after = outcome.velocity_after.y;
-                // The height of the coming bounce, `φ̇² / 2|φ̈|`: below the touching tolerance
-                // the contact cannot be told apart from its surface.
-                let apex = {
-                    let (q, u) = y.split_at(n);
-                    let acc = dynamics::accelerations(m, q, u)?;
-                    let [_, rate, accel] = dynamics::gap_rates(m, k, q, u, acc.as_slice());
-                    if accel < 0.0 {
-                        rate.max(0.0).powi(2) / (2.0 * -accel)
-                    } else {
-                        f64::INFINITY
-                    }
-                };
-                // Persistent contact: a plastic impact, a bounce too low to leave the surface,
-                // or an accumulation of impacts.
-                let mut persistent: Option<f64> = None; // the time it starts
-                if vn_after <= 1e-9 * v.y.abs() {
-                    persistent = Some(t);
-                    series.1.clear();
-                } else {
-                    if series.0 != k {
-                        series = (k, Vec::new());
-                    }
-                    series.1.push(t);
-                    if let Some((limit, ratio)) = accumulation(&series.1, options.sample_interval) {
-                        events.push((
-                            t,
-                            EventKind::Zeno {
-                                contact: k,
-                                limit_time: limit,
-                                ratio,
-                            },
-                        ));
-                        // Complete the tail: the tangential motion continues, the normal
-                        // velocity vanishes at t∞.
-                        let tail = limit - t;
-                        for i in 0..n {
-                            y[i] += y[n + i] * tail;
-                        }
-                        t = limit;
-                        persistent = Some(t);
-                        series.1.clear();
-                    } else if apex <= dynamics::touching_tolerance(m, k, &y[..n]) {
-                        persistent = Some(t);
-                        series.1.clear();
-                    }
-                }
-                if let Some(t_contact) = persistent {
-                    if let Some((body, state)) = rolling_from(m, k, t_contact, &y) {
-                        let (stop, end) = roll(m, &body, state, options, &mut rec, &mut events);
-                        return Ok(finish(rec, impacts, events, stop, end, &ode));
-                    }
-                    let stop = StopReason::PersistentContact { contact: k };
-                    // Leave the state with zero normal contact velocity (plastic, frictionless).
-                    let (q, u) = y.split_at(n);
-                    let imp = MechanismImpact::new(m, q, u, k)?;
-                    let w = imp.inverse_inertia();
-                    let vn = imp.contact_velocity().y;
-                    if vn < 0.0 {
-                        let after = imp.velocities_after(Vec2::new(0.0, -vn / w[(1, 1)]));
-                        y[n..].copy_from_slice(&after);
-                    }
-                    return Ok(stop_at(rec, impacts, events, stop, t_contact, &y, &ode));
+    let mut y: Vec<f64> = q0.iter().chain(u0).copied().collect();
+    y.push(0.0);
+    let mut sim = Sim {
+        m,
+        opt: *options,
+        n,
+        rec: Recorder {
+            m,
+            dt: options.sample_interval,
+            next: 1,
+            samples: Vec::new(),
+        },
+        impacts: Vec::new(),
+        events: Vec::new(),
+        ledger: Ledger {
+            initial: e0,
+            ..Ledger::default()
+        },
+        series: Vec::new(),
+        closed: Vec::new(),
+        t: 0.0,
+        y,
+        ode: Dopri5::new(2 * n + 1, options.tolerances)?,
+        vscale,
+        stall: (0.0, 0),
+        rolled: None,
+    };
+    sim.rec.push(0.0, &sim.y, Mode::Flight);
+    sim.run()
+}
+
+/// How a new set of closed contacts came about.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Cause {
+    /// The start, an impact or a contact pressed into its surface.
+    Contact,
+    /// A change of the closed contacts' forces or slips (the openings are recorded).
+    Event,
+}
+
+impl<M: Mechanism + ?Sized> Sim<'_, M> {
+    fn q(&self) -> &[f64] {
+        &self.y[..self.n]
+    }
+    fn u(&self) -> &[f64] {
+        &self.y[self.n..2 * self.n]
+    }
+    fn tol_v(&self) -> f64 {
+        VELOCITY_ROUND_OFF * self.vscale
+    }
+    fn mode(&self) -> Mode {
+        if self.closed.is_empty() {
+            Mode::Flight
+        } else {
+            Mode::Contact
+        }
+    }
+
+    fn run(mut self) -> Result<Run> {
+        let m = self.m;
+        let n = self.n;
+        // A contact touching at the start: struck at t = 0 if it approaches; the others that
+        // touch without leaving may stay closed.
+        let mut pending: Option<usize> = None;
+        for k in touching(m, self.q()) {
+            if dynamics::gap_rate(m, k, self.q(), self.u()) < 0.0 {
+                pending = Some(k);
+                break;
+            }
+        }
+        if pending.is_none() {
+            if let Some(stop) = self.settle_touching()? {
+                return Ok(self.finish_at(stop));
+            }
+        }
+        self.start(self.opt.until)?;
+        loop {
+            if let Some(k) = pending.take() {
+                if let Some(stop) = self.arrive(k)? {
+                    return Ok(self.finish_at(stop));
                 }
             }
-            // Bound the first step by a quarter of the coming flight of the contact just struck
-            // (`2 φ̇ / |φ̈|`), so that a short bounce is resolved by the step sampling.
-            let (q, u) = y.split_at(n);
-            let acc = dynamics::accelerations(m, q, u)?;
-            let [_, rate, accel] = dynamics::gap_rates(m, k, q, u, acc.as_slice());
-            let flight = if accel < 0.0 && rate > 0.0 {
-                2.0 * rate / -accel
-            } else {
-                f64::INFINITY
+            if self.t >= self.opt.until {
+                let (t, e) = (self.t, energy(m, &self.y));
+                return Ok(self.finish(StopReason::TimeLimit, t, e));
+            }
+            match self.advance()? {
+                Advance::Free => {}
+                Advance::Arrival(k) => pending = Some(k),
+                Advance::Stop(stop) => return Ok(self.finish_at(stop)),
+            }
+            debug_assert_eq!(self.y.len(), 2 * n + 1);
+        }
+    }
+
+    /// (Re)start the integrator at the current state, the first step within `span`.
+    fn start(&mut self, span: f64) -> Result<()> {
+        let mut f = rhs(self.m, self.closed.clone(), self.opt.friction);
+        let span = span.min(self.opt.until - self.t).max(f64::MIN_POSITIVE);
+        self.ode.start(&mut f, self.t, &self.y, span)
+    }
+
+    /// Contacts touching at the current state that neither approach nor leave, with the
+    /// closed ones: they may stay closed. A round body goes to its closed form.
+    fn settle_touching(&mut self) -> Result<Option<StopReason>> {
+        let (m, tol) = (self.m, self.tol_v());
+        let mut candidates: Vec<usize> = self.closed.iter().map(|c| c.contact).collect();
+        for j in touching(m, self.q()) {
+            if !candidates.contains(&j) && dynamics::gap_rate(m, j, self.q(), self.u()) <= tol {
+                candidates.push(j);
+            }
+        }
+        candidates.sort_unstable();
+        if m.round_on_floor().is_some() && self.closed.is_empty() {
+            // The closed form continues a round body pressed into the floor.
+            if let Some(&j) = candidates.first() {
+                if self.pressed(j)? {
+                    return Ok(Some(self.roll(j)?));
+                }
+            }
+            return Ok(None);
+        }
+        self.settle(candidates, Hint::None, Cause::Contact)
+    }
+
+    /// Contact `k` at `(q, u)` touches its surface without approaching it and is accelerated
+    /// into it (`φ̇ = 0`, `φ̈ < 0`).
+    fn pressed(&self, k: usize) -> Result<bool> {
+        let (m, q, u) = (self.m, self.q(), self.u());
+        if dynamics::gap(m, k, q) > dynamics::touching_tolerance(m, k, q) {
+            return Ok(false);
+        }
+        let acc = dynamics::accelerations(m, q, u)?;
+        let [_, rate, accel] = dynamics::gap_rates(m, k, q, u, acc.as_slice());
+        Ok(rate <= 0.0 && accel < 0.0)
+    }
+
+    /// Contact `k` reaches its surface at the current state: an impact if it approaches,
+    /// else its contact may close.
+    fn arrive(&mut self, k: usize) -> Result<Option<StopReason>> {
+        let m = self.m;
+        let v_k = dynamics::gap_rate(m, k, self.q(), self.u());
+        if v_k < -self.tol_v() && !(self.closed.iter().any(|c| c.contact == k)) {
+            if let Some(stop) = self.impact(k)? {
+                return Ok(Some(stop));
+            }
+        } else if let Some(stop) = self.settle_touching()? {
+            return Ok(Some(stop));
+        }
+        // Bound the first step by a quarter of the coming flight of contact k (`2 φ̇ / |φ̈|`),
+        // so that a short bounce is resolved by the step sampling.
+        let (q, u) = (self.q(), self.u());
+        let acc = dynamics::accelerations(m, q, u)?;
+        let [_, rate, accel] = dynamics::gap_rates(m, k, q, u, acc.as_slice());
+        let flight = if accel < 0.0 && rate > 0.0 && !self.closed.iter().any(|c| c.contact == k) {
+            2.0 * rate / -accel
+        } else {
+            f64::INFINITY
+        };
+        self.start(0.25 * flight)?;
+        Ok(None)
+    }
+
+    /// The impact of contact `k` at the current state, with every contact touching.
+    fn impact(&mut self, k: usize) -> Result<Option<StopReason>> {
+        let (m, n) = (self.m, self.n);
+        if self.impacts.len() >= self.opt.max_impacts {
+            return Ok(Some(StopReason::ImpactLimit));
+        }
+        let others: Vec<usize> = touching(m, self.q())
+            .into_iter()
+            .chain(self.closed.iter().map(|c| c.contact))
+            .filter(|&j| j != k)
+            .collect::<std::collections::BTreeSet<_>>()
+            .into_iter()
+            .collect();
+        let record = match strike(m, self.t, self.q(), self.u(), k, &others, &self.opt)? {
+            Struck::Stop(stop) => return Ok(Some(stop)),
+            Struck::Record(r) => *r,
+        };
+        let speed = record
+            .contact_velocities_before
+            .iter()
+            .map(|v| v.norm())
+            .fold(0.0, f64::max);
+        self.vscale = self.vscale.max(speed);
+        self.rec.push(self.t, &self.y, self.mode());
+        self.ledger.impacts += record.energy_change;
+        self.y[n..2 * n].copy_from_slice(&record.u_after);
+        let contacts = record.contacts.clone();
+        let normal_after: Vec<f64> = record
+            .outcome
+            .contacts
+            .iter()
+            .map(|c| c.velocity_after.y)
+            .collect();
+        self.impacts.push(record);
+        self.events.push((
+            self.t,
+            EventKind::Impact {
+                index: self.impacts.len() - 1,
+            },
+        ));
+        self.rec.push(self.t, &self.y, self.mode());
+        self.after_impact(k, &contacts, &normal_after, speed)
+    }
+
+    /// After an impact at `contacts` (`k` struck, the normal velocities after, the speed of the
+    /// contacts before): an accumulation completed, or the contacts that stay closed.
+    fn after_impact(
+        &mut self,
+        k: usize,
+        contacts: &[usize],
+        normal_after: &[f64],
+        speed: f64,
+    ) -> Result<Option<StopReason>> {
+        let (m, n) = (self.m, self.n);
+        self.series.push((self.t, contacts.to_vec()));
+        let times: Vec<f64> = self.series.iter().map(|s| s.0).collect();
+        if let Some((limit, ratio)) = accumulation(&times, self.opt.sample_interval) {
+            self.events.push((
+                self.t,
+                EventKind::Zeno {
+                    contact: k,
+                    limit_time: limit,
+                    ratio,
+                },
+            ));
+            let mut candidates: Vec<usize> = self
+                .series
+                .iter()
+                .rev()
+                .take(4)
+                .flat_map(|s| s.1.iter().copied())
+                .chain(self.closed.iter().map(|c| c.contact))
+                .collect();
+            candidates.sort_unstable();
+            candidates.dedup();
+            self.series.clear();
+            if candidates == [k] && self.closed.is_empty() && self.rolling_from(k).is_some() {
+                // A round body: complete the tail — the tangential motion continues, the
+                // normal velocity vanishes at t∞ — and go on in closed form.
+                let tail = limit - self.t;
+                for i in 0..n {
+                    self.y[i] += self.y[n + i] * tail;
+                }
+                self.t = limit;
+                return Ok(Some(self.roll(k)?));
+            }
+            // Any other body: the remaining bounces (all within a thousandth of a sample
+            // interval) are neglected and the contacts close at the last impact, keeping the
+            // energy (a drift over the tail would not: the motion of a rod turning about its
+            // chattering end is no uniform translation).
+            let before = energy(m, &self.y);
+            self.project_normals(&candidates)?;
+            self.ledger.corrections += energy(m, &self.y) - before;
+            return self.settle(candidates, Hint::None, Cause::Contact);
+        }
+        // Contacts left touching without leaving: those with zero normal velocity after (to
+        // round-off), and those whose bounce is too low to leave the surface (`φ̇²/2|φ̈|` below
+        // the touching tolerance).
+        let acc = dynamics::accelerations(m, self.q(), self.u())?;
+        let mut candidates = Vec::new();
+        for (&j, &vn) in contacts.iter().zip(normal_after) {
+            let stays = vn <= VELOCITY_ROUND_OFF * speed || {
+                let [_, rate, accel] =
+                    dynamics::gap_rates(m, j, self.q(), self.u(), acc.as_slice());
+                accel < 0.0
+                    && rate.max(0.0).powi(2) / (2.0 * -accel)
+                        <= dynamics::touching_tolerance(m, j, self.q())
             };
-            ode.start(&mut f, t, &y, (until - t).min(0.25 * flight))?;
+            if stays {
+                candidates.push(j);
+            }
         }
-        if t >= until {
-            return Ok(finish(rec, impacts, events, StopReason::TimeLimit, t, &ode));
+        candidates.sort_unstable();
+        if let Some(stop) = self.round_body(k, &candidates)? {
+            return Ok(Some(stop));
         }
-        // ---- one step of free motion ----
-        let step = ode.advance(&mut f, until)?;
+        if !candidates.is_empty() {
+            let before = energy(m, &self.y);
+            self.project_normals(&candidates)?;
+            self.ledger.corrections += energy(m, &self.y) - before;
+        }
+        self.settle(candidates, Hint::None, Cause::Contact)
+    }
+
+    /// A round body whose only staying contact is `k` on a horizontal floor: the closed form.
+    fn round_body(&mut self, k: usize, candidates: &[usize]) -> Result<Option<StopReason>> {
+        if candidates == [k] && self.closed.is_empty() && self.rolling_from(k).is_some() {
+            return Ok(Some(self.roll(k)?));
+        }
+        Ok(None)
+    }
+
+    /// Close `contacts` at the current state: project their gaps and normal velocities to
+    /// zero, and the tangential velocities of those that roll (`|v_t|` within round-off of the
+    /// run's speeds), so that a sticking contact keeps sticking (a correction of the size of
+    /// a bounce below the touching tolerance).
+    fn project_normals(&mut self, contacts: &[usize]) -> Result<()> {
+        let (m, n, tol) = (self.m, self.n, self.tol_v());
+        let kin = dynamics::kinematics(m, self.q());
+        let u = nalgebra::DVector::from_column_slice(self.u());
+        let normal: Vec<Closed> = contacts
+            .iter()
+            .map(|&contact| {
+                let j = dynamics::contact_jacobian_of(m, contact, self.q(), &kin);
+                let vt = (j.row(0) * &u)[0];
+                Closed {
+                    contact,
+                    regime: if vt.abs() <= tol {
+                        Regime::Stick
+                    } else {
+                        Regime::Frictionless
+                    },
+                }
+            })
+            .collect();
+        let (q, rest) = self.y.split_at_mut(n);
+        closed::project(m, q, &mut rest[..n], &normal)
+    }
+
+    /// Project onto the closed contacts, the change of `T + V` recorded.
+    fn project(&mut self) -> Result<()> {
+        if self.closed.is_empty() {
+            return Ok(());
+        }
+        let n = self.n;
+        let before = energy(self.m, &self.y);
+        let (q, rest) = self.y.split_at_mut(n);
+        closed::project(self.m, q, &mut rest[..n], &self.closed)?;
+        self.ledger.corrections += energy(self.m, &self.y) - before;
+        Ok(())
+    }
+
+    /// Decide which of `candidates` stay closed, and how, by the acceleration-level contact
+    /// problem; record the changes; stop at rest or at Painlevé's paradox.
+    fn settle(
+        &mut self,
+        mut candidates: Vec<usize>,
+        hint: Hint,
+        cause: Cause,
+    ) -> Result<Option<StopReason>> {
+        let (m, n) = (self.m, self.n);
+        candidates.sort_unstable();
+        candidates.dedup();
+        let previous = std::mem::take(&mut self.closed);
+        if candidates.is_empty() {
+            if cause == Cause::Event {
+                for c in &previous {
+                    self.events
+                        .push((self.t, EventKind::Opens { contact: c.contact }));
+                }
+            }
+            return Ok(None);
+        }
+        if candidates.len() > closed::MAX_CLOSED {
+            return Ok(Some(StopReason::UnsupportedContact {
+                contact: candidates[0],
+                touching: candidates[1..].to_vec(),
+            }));
+        }
+        let (q, u) = (self.q().to_vec(), self.u().to_vec());
+        let cd = ContactDynamics::new(m, &q, &u, &candidates)?;
+        let tol = self.tol_v();
+        let sliding: Vec<Option<SlipDirection>> = (0..candidates.len())
+            .map(|j| {
+                let vt = cd.v[2 * j];
+                (vt.abs() > tol).then(|| SlipDirection::of(vt))
+            })
+            .collect();
+        let solutions = cd.solutions(self.opt.friction, &sliding, hint)?;
+        if solutions.len() != 1 {
+            let contact = (0..candidates.len())
+                .find(|&j| sliding[j].is_some())
+                .map_or(candidates[0], |j| candidates[j]);
+            return Ok(Some(StopReason::Painleve {
+                contact,
+                solutions: solutions.len(),
+            }));
+        }
+        let solution = solutions.into_iter().next().expect("one solution");
+        for c in &solution.closed {
+            match previous.iter().find(|p| p.contact == c.contact) {
+                None => self.events.push((
+                    self.t,
+                    EventKind::Closes {
+                        contact: c.contact,
+                        regime: c.regime,
+                    },
+                )),
+                Some(p) if p.regime != c.regime => self.events.push((
+                    self.t,
+                    EventKind::Regime {
+                        contact: c.contact,
+                        regime: c.regime,
+                    },
+                )),
+                Some(_) => {}
+            }
+        }
+        if cause == Cause::Event {
+            for p in &previous {
+                if !solution.closed.iter().any(|c| c.contact == p.contact) {
+                    self.events
+                        .push((self.t, EventKind::Opens { contact: p.contact }));
+                }
+            }
+        }
+        self.closed = solution.closed;
+        self.project()?;
+        // Rest: every body still (to round-off of the run's speeds) and no acceleration.
+        if !self.closed.is_empty() {
+            let u = self.u();
+            let mass = dynamics::mass_matrix(m, self.q());
+            let total: f64 = m.bodies().iter().map(|b| b.mass).sum();
+            let uv = nalgebra::DVector::from_column_slice(u);
+            let kinetic = 0.5 * uv.dot(&(&mass * &uv));
+            let a = &solution.forces.accel;
+            let a_free = &cd.a_free;
+            let norm = |x: &nalgebra::DVector<f64>| x.dot(&(&mass * x)).max(0.0).sqrt();
+            let still = kinetic <= 0.5 * total * (VELOCITY_ROUND_OFF * self.vscale).powi(2);
+            let balanced = norm(a) <= FORCE_ROUND_OFF * norm(a_free);
+            if still && balanced {
+                let before = energy(m, &self.y);
+                self.y[n..2 * n].fill(0.0);
+                self.ledger.corrections += energy(m, &self.y) - before;
+                self.events.push((self.t, EventKind::Rest));
+                return Ok(Some(StopReason::Rest));
+            }
+        }
+        Ok(None)
+    }
+
+    /// One step of the motion, with its events.
+    fn advance(&mut self) -> Result<Advance> {
+        let (m, n) = (self.m, self.n);
+        let until = self.opt.until;
+        let mu = self.opt.friction;
+        let closed = self.closed.clone();
+        let mut f = rhs(m, closed.clone(), mu);
+        let step = self.ode.advance(&mut f, until)?;
         let (t0, t1) = (step.t0, step.t1);
-        ystart.copy_from_slice(step.y0);
+        let ystart = step.y0.to_vec();
+        let y1 = step.y1.to_vec();
+        let mut buf = vec![0.0; 2 * n + 1];
         // Regular samples inside the step (kept only before the event, if any).
         let mut inside: Vec<(f64, Vec<f64>)> = Vec::new();
-        while rec.next_time() <= t1 && rec.next_time() <= until {
-            let ts = rec.next_time();
+        while self.rec.next_time() <= t1 && self.rec.next_time() <= until {
+            let ts = self.rec.next_time();
             step.interpolate(ts, &mut buf);
             inside.push((ts, buf.clone()));
-            rec.next += 1;
+            self.rec.next += 1;
         }
-        // Each contact's gap on the dense output, at PARTS points of the step and at the
-        // samples: the first crossing from positive to ≤ 0 brackets an arrival; a contact
-        // touching at the step's start that goes further in arrives at the start.
-        const PARTS: usize = 8;
         let mut times: Vec<f64> = (1..PARTS)
             .map(|j| t0 + (t1 - t0) * j as f64 / PARTS as f64)
             .chain(inside.iter().map(|s| s.0))
@@ -599,268 +601,269 @@ pub fn simulate<M: Mechanism + ?Sized>(
         let mut states: Vec<Vec<f64>> = Vec::with_capacity(times.len());
         for &tj in &times {
             if tj == t1 {
-                states.push(step.y1.to_vec());
+                states.push(y1.clone());
             } else {
                 step.interpolate(tj, &mut buf);
                 states.push(buf.clone());
             }
         }
-        let mut brackets: Vec<(usize, f64, f64)> = Vec::new();
-        let mut pressing: Option<usize> = None;
-        for k in 0..contacts {
-            let g0 = gap_of(m, k, step.y0);
-            let tol = dynamics::touching_tolerance(m, k, &step.y0[..n]);
+        // Each watched quantity on the dense output: the first fall from positive to ≤ 0
+        // brackets an event; one at or below zero at the step's start that goes further
+        // below its round-off happens at the start.
+        let mut brackets: Vec<(Watched, f64, f64)> = Vec::new();
+        let mut at_start: Option<Watched> = None;
+        for k in 0..m.contacts().len() {
+            if closed.iter().any(|c| c.contact == k) {
+                continue;
+            }
+            let g0 = gap_of(m, k, &ystart);
+            let tol = dynamics::touching_tolerance(m, k, &ystart[..n]);
             let mut prev = (t0, g0);
             for (&tj, yj) in times.iter().zip(&states) {
                 let g = gap_of(m, k, yj);
                 if prev.1 > 0.0 && g <= 0.0 {
-                    brackets.push((k, prev.0, tj));
+                    brackets.push((Watched::Gap(k), prev.0, tj));
                     break;
                 }
                 if g0 <= 0.0 && g < -tol && g < g0 {
-                    pressing = pressing.or(Some(k));
+                    at_start = at_start.or(Some(Watched::Gap(k)));
                     break;
                 }
                 prev = (tj, g);
             }
         }
-        let y1 = step.y1.to_vec();
-        let mut event: Option<(Arrival, f64)> = None;
-        if let Some(k) = pressing {
-            event = Some((Arrival::Pressing(k), t0));
-        } else {
-            for (k, a, b) in brackets {
-                let located = locate(
-                    &mut ode, &mut f, m, k, t0, &ystart, t1, &y1, a, b, &mut trial,
-                );
+        let mut det0 = 0.0;
+        if !closed.is_empty() {
+            let watch0 = closed::watch(m, &closed, mu, &ystart)?;
+            det0 = watch0.det;
+            let values: Vec<Vec<(Watched, f64)>> = std::iter::once(&ystart)
+                .chain(states.iter())
+                .map(|y| {
+                    closed::watch(m, &closed, mu, y)
+                        .map(|w| watched(&closed, &w, mu, watch0.det))
+                        .unwrap_or_default()
+                })
+                .collect();
+            let scale = values
+                .iter()
+                .flatten()
+                .filter(|(w, _)| matches!(w, Watched::Force(_) | Watched::Margin(_)))
+                .fold(0.0f64, |s, (_, g)| s.max(g.abs()));
+            let mut all_times = vec![t0];
+            all_times.extend(&times);
+            for (i, &(what, g0)) in values[0].iter().enumerate() {
+                let tol = match what {
+                    Watched::Slip(_) => self.tol_v(),
+                    Watched::Singular => 0.0,
+                    _ => FORCE_ROUND_OFF * scale,
+                };
+                for s in 1..values.len() {
+                    let Some(&(_, g)) = values[s].get(i) else {
+                        break;
+                    };
+                    let prev = values[s - 1].get(i).map_or(g0, |x| x.1);
+                    if prev > 0.0 && g <= 0.0 {
+                        brackets.push((what, all_times[s - 1], all_times[s]));
+                        break;
+                    }
+                    if g0 <= 0.0 && g < -tol && g < g0 {
+                        at_start = at_start.or(Some(what));
+                        break;
+                    }
+                }
+            }
+        }
+        let mut event: Option<(Watched, f64)> = at_start.map(|w| (w, t0));
+        if event.is_none() {
+            let mut trial = vec![0.0; 2 * n + 1];
+            for (what, a, b) in brackets {
+                if event.is_some_and(|(_, te)| te <= a) {
+                    continue;
+                }
+                let located = {
+                    let closed = &closed;
+                    let mut g = |y: &[f64]| watched_value(m, mu, closed, what, y, det0);
+                    locate(
+                        &mut self.ode,
+                        &mut f,
+                        t0,
+                        &ystart,
+                        t1,
+                        &y1,
+                        a,
+                        b,
+                        &mut trial,
+                        &mut g,
+                    )
+                };
                 if let Some(te) = located {
                     if event.is_none_or(|(_, t_first)| te < t_first) {
-                        event = Some((Arrival::Crossing(k), te));
+                        event = Some((what, te));
                     }
                 }
             }
         }
-        match event {
-            Some((arrival, te)) => {
-                for (ts, ys) in inside {
-                    if ts < te {
-                        rec.push(ts, &ys, Mode::Flight);
-                    } else {
-                        rec.next = rec.next.min((ts / rec.dt).round() as u64);
-                    }
-                }
-                if te > t0 {
-                    ode.trial_step(&mut f, t0, &ystart, te - t0, &mut trial);
-                    y.copy_from_slice(&trial);
-                } else {
-                    y.copy_from_slice(&ystart);
-                }
-                t = te;
-                pending = Some(arrival);
+        let mode = self.mode();
+        let Some((what, te)) = event else {
+            for (ts, ys) in inside {
+                let ys = self.on_contacts(ys)?;
+                self.rec.push(ts, &ys, mode);
             }
-            None => {
-                for (ts, ys) in inside {
-                    rec.push(ts, &ys, Mode::Flight);
+            self.y.copy_from_slice(&y1);
+            self.t = t1;
+            if !self.closed.is_empty() {
+                let before = self.y.clone();
+                self.project()?;
+                if self.y != before {
+                    self.ode.restart(&mut f, self.t, &self.y)?;
                 }
-                y.copy_from_slice(&y1);
-                t = t1;
+            }
+            return Ok(Advance::Free);
+        };
+        for (ts, ys) in inside {
+            if ts < te {
+                let ys = self.on_contacts(ys)?;
+                self.rec.push(ts, &ys, mode);
+            } else {
+                self.rec.next = self.rec.next.min((ts / self.rec.dt).round() as u64);
             }
         }
-        // Keep the regular sampling clock consistent after a rewind.
-        while rec.next_time() <= t && rec.next_time() <= until && event.is_none() {
-            rec.next += 1;
+        if te > t0 {
+            let mut trial = vec![0.0; 2 * n + 1];
+            self.ode
+                .trial_step(&mut f, t0, &ystart, te - t0, &mut trial);
+            self.y.copy_from_slice(&trial);
+        } else {
+            self.y.copy_from_slice(&ystart);
+        }
+        self.t = te;
+        if self.stall.0 == te {
+            self.stall.1 += 1;
+            if self.stall.1 > STALL {
+                return Err(Error::Integration {
+                    reason: format!(
+                        "the contacts' regimes switch endlessly at t = {}",
+                        crate::error::Num(te)
+                    ),
+                });
+            }
+        } else {
+            self.stall = (te, 0);
+        }
+        if let Watched::Gap(k) = what {
+            return Ok(Advance::Arrival(k));
+        }
+        // A change of the closed contacts' regimes.
+        self.project()?;
+        self.rec.push(self.t, &self.y, mode);
+        self.series.clear();
+        let hint = match what {
+            Watched::Force(k) => Hint::Open(k),
+            Watched::Margin(k) => Hint::Slip(k),
+            _ => Hint::None,
+        };
+        let mut candidates: Vec<usize> = self.closed.iter().map(|c| c.contact).collect();
+        let tol = self.tol_v();
+        for j in touching(m, self.q()) {
+            if !candidates.contains(&j) && dynamics::gap_rate(m, j, self.q(), self.u()).abs() <= tol
+            {
+                candidates.push(j);
+            }
+        }
+        if let Some(stop) = self.settle(candidates, hint, Cause::Event)? {
+            return Ok(Advance::Stop(stop));
+        }
+        self.start(self.opt.until)?;
+        Ok(Advance::Free)
+    }
+
+    /// A state of the dense output put on the closed contacts (for the samples).
+    fn on_contacts(&self, mut y: Vec<f64>) -> Result<Vec<f64>> {
+        if !self.closed.is_empty() {
+            let n = self.n;
+            let (q, rest) = y.split_at_mut(n);
+            closed::project(self.m, q, &mut rest[..n], &self.closed)?;
+        }
+        Ok(y)
+    }
+
+    /// Persistent contact of contact `k` that the closed form continues: a round body on a
+    /// horizontal floor, with its state `(x, ẋ, θ, θ̇)`.
+    fn rolling_from(&self, k: usize) -> Option<(crate::mechanism::RoundOnFloor, Rolling)> {
+        let (m, n, y) = (self.m, self.n, &self.y);
+        let body = m.round_on_floor()?;
+        (m.contacts()[k].surface.normal == Vec2::new(0.0, 1.0)).then_some((
+            body,
+            Rolling {
+                t0: self.t,
+                x: y[0],
+                vx: y[n],
+                theta: y[2],
+                omega: y[n + 2],
+            },
+        ))
+    }
+
+    /// A round body in persistent contact at contact `k`: sliding (closed form) until rolling,
+    /// then rolling to the end time, or rest. Returns the stop.
+    fn roll(&mut self, k: usize) -> Result<StopReason> {
+        let (body, state) = self.rolling_from(k).ok_or_else(|| Error::Invalid {
+            field: "contact".into(),
+            reason: "not a round body on a horizontal floor".into(),
+        })?;
+        let before = energy(self.m, &self.y);
+        let (stop, end, e1) = roll(
+            self.m,
+            &body,
+            state,
+            &self.opt,
+            &mut self.rec,
+            &mut self.events,
+        );
+        // The closed form's sliding is the contact's work.
+        self.ledger.contact_work += e1 - before;
+        self.rolled = Some((end, e1));
+        Ok(stop)
+    }
+
+    /// The end of a run at the current state, recorded as its last sample (so that the run's
+    /// final energy is the state's at the stop).
+    fn finish_at(mut self, stop: StopReason) -> Run {
+        if let Some((end, e)) = self.rolled {
+            return self.finish(stop, end, e);
+        }
+        let mode = if stop == StopReason::Rest {
+            Mode::Rest
+        } else {
+            self.mode()
+        };
+        self.rec.push(self.t, &self.y, mode);
+        let (t, e) = (self.t, energy(self.m, &self.y));
+        self.finish(stop, t, e)
+    }
+
+    /// The end of a run.
+    fn finish(mut self, stop: StopReason, end_time: f64, end_energy: f64) -> Run {
+        self.ledger.end = end_energy;
+        self.ledger.contact_work += self.y[2 * self.n];
+        Run {
+            samples: self.rec.samples,
+            impacts: self.impacts,
+            events: self.events,
+            stop,
+            end_time,
+            steps: (self.ode.accepted, self.ode.rejected),
+            ledger: self.ledger,
         }
     }
 }
 
-/// Persistent contact of contact `k` at `(t, y)` that the closed form continues: a round body
-/// on a horizontal floor, with its state `(x, ẋ, θ, θ̇)`.
-fn rolling_from<M: Mechanism + ?Sized>(
-    m: &M,
-    k: usize,
-    t: f64,
-    y: &[f64],
-) -> Option<(crate::mechanism::RoundOnFloor, Rolling)> {
-    let n = m.dof();
-    let body = m.round_on_floor()?;
-    (m.contacts()[k].surface.normal == Vec2::new(0.0, 1.0)).then_some((
-        body,
-        Rolling {
-            t0: t,
-            x: y[0],
-            vx: y[n],
-            theta: y[2],
-            omega: y[n + 2],
-        },
-    ))
-}
-
-/// The end of a run at `(t, y)`, recorded as its last sample (so that the run's final energy
-/// is the state's at the stop).
-fn stop_at<M: Mechanism + ?Sized>(
-    mut rec: Recorder<'_, M>,
-    impacts: Vec<ImpactRecord>,
-    events: Vec<(f64, EventKind)>,
-    stop: StopReason,
-    t: f64,
-    y: &[f64],
-    ode: &Dopri5,
-) -> Run {
-    rec.push(t, y, Mode::Flight);
-    finish(rec, impacts, events, stop, t, ode)
-}
-
-/// The end of a run.
-fn finish<M: Mechanism + ?Sized>(
-    rec: Recorder<'_, M>,
-    impacts: Vec<ImpactRecord>,
-    events: Vec<(f64, EventKind)>,
-    stop: StopReason,
-    end_time: f64,
-    ode: &Dopri5,
-) -> Run {
-    Run {
-        samples: rec.samples,
-        impacts,
-        events,
-        stop,
-        end_time,
-        steps: (ode.accepted, ode.rejected),
-    }
-}
-
-/// Translational and rotational kinetic energy at the velocities `u`.
-fn energy_parts<M: Mechanism + ?Sized>(m: &M, kin: &dynamics::Kinematics, u: &[f64]) -> (f64, f64) {
-    let vel = dynamics::body_velocities(kin, u);
-    let (mut tr, mut rot) = (0.0, 0.0);
-    for (b, v) in m.bodies().iter().zip(&vel) {
-        tr += 0.5 * b.mass * (v[0] * v[0] + v[1] * v[1]);
-        rot += 0.5 * b.inertia * v[2] * v[2];
-    }
-    (tr, rot)
-}
-
-/// An accumulation of impacts: the last intervals shrink geometrically (three ratios equal to
-/// 1e-4) and the rest of the series is below a thousandth of the sample interval; or the last
-/// interval is below round-off of the time. Returns `(t∞, ratio)`.
-fn accumulation(times: &[f64], sample_interval: f64) -> Option<(f64, f64)> {
-    let k = times.len();
-    if k < 2 {
-        return None;
-    }
-    let last = times[k - 1];
-    let dt = last - times[k - 2];
-    if dt <= 64.0 * f64::EPSILON * last.abs().max(1.0) {
-        return Some((last, 0.0));
-    }
-    if k < 5 {
-        return None;
-    }
-    let d: Vec<f64> = (k - 4..k).map(|i| times[i] - times[i - 1]).collect();
-    let r: Vec<f64> = (1..4).map(|i| d[i] / d[i - 1]).collect();
-    let ratio = r[2];
-    let steady = r.iter().all(|&x| x > 0.0 && x < 1.0)
-        && (r[2] - r[1]).abs() <= 1e-4 * ratio
-        && (r[1] - r[0]).abs() <= 1e-4 * ratio;
-    let tail = dt * ratio / (1.0 - ratio);
-    (steady && tail <= 1e-3 * sample_interval).then_some((last + tail, ratio))
-}
-
-/// Locate the crossing of contact `k`'s gap on the discrete solution (re-stepping from
-/// `(t0, y0)`), bracketed by `[a, b]` from the dense output; `None` when the discrete solution
-/// does not cross (a dense-output graze).
-#[allow(clippy::too_many_arguments)]
-fn locate<M: Mechanism + ?Sized>(
-    ode: &mut Dopri5,
-    f: &mut impl FnMut(f64, &[f64], &mut [f64]),
-    m: &M,
-    k: usize,
-    t0: f64,
-    y0: &[f64],
-    t1: f64,
-    y1: &[f64],
-    a: f64,
-    b: f64,
-    trial: &mut [f64],
-) -> Option<f64> {
-    let mut g = |t: f64| -> f64 {
-        if t == t0 {
-            return gap_of(m, k, y0);
-        }
-        if t == t1 {
-            return gap_of(m, k, y1);
-        }
-        ode.trial_step(f, t0, y0, t - t0, trial);
-        gap_of(m, k, trial)
-    };
-    let (mut lo, mut hi) = (a, b);
-    let mut glo = g(lo);
-    if glo <= 0.0 {
-        lo = t0;
-        glo = gap_of(m, k, y0);
-    }
-    let mut ghi = g(hi);
-    if ghi > 0.0 {
-        hi = t1;
-        ghi = gap_of(m, k, y1);
-    }
-    if !(glo > 0.0 && ghi <= 0.0) {
-        return None;
-    }
-    // The gap falls through zero: its negative rises through zero, to round-off of t.
-    Some(illinois_with_bisection(|t| -g(t), lo, -glo, hi, -ghi))
-}
-
-/// Persistent contact of a round body: sliding (closed form) until rolling, then rolling to
-/// the end time, or rest. Returns the stop reason and its time.
-fn roll<M: Mechanism + ?Sized>(
-    m: &M,
-    body: &crate::mechanism::RoundOnFloor,
-    mut state: Rolling,
-    options: &SimulationOptions,
-    rec: &mut Recorder<'_, M>,
-    events: &mut Vec<(f64, EventKind)>,
-) -> (StopReason, f64) {
-    let (mu, g, until) = (options.friction, m.gravity(), options.until);
-    let speed_scale = state.vx.abs() + (body.radius * state.omega).abs();
-    let mut t = state.t0;
-    let push = |rec: &mut Recorder<'_, M>, s: &Rolling, mode: Mode| {
-        rec.push(s.t0, &s.state(body), mode);
-    };
-    rec.next = rec.next.max((t / rec.dt).floor() as u64 + 1);
-    let sliding = state.sliding_time(body, mu, g);
-    if sliding > 0.0 {
-        events.push((t, EventKind::Sliding));
-        push(rec, &state, Mode::Sliding);
-        let end = (t + sliding).min(until);
-        while rec.next_time() < end {
-            let s = state.sliding_at(body, mu, g, rec.next_time());
-            push(rec, &s, Mode::Sliding);
-            rec.next += 1;
-        }
-        if t + sliding >= until {
-            let s = state.sliding_at(body, mu, g, until);
-            push(rec, &s, Mode::Sliding);
-            return (StopReason::TimeLimit, until);
-        }
-        state = state.sliding_at(body, mu, g, t + sliding);
-        state.omega = -state.vx / body.radius; // the slip is exactly zero from here on
-        t = state.t0;
-    }
-    if state.vx.abs() <= 1e-12 * speed_scale.max(f64::MIN_POSITIVE) || state.vx == 0.0 {
-        state.vx = 0.0;
-        state.omega = 0.0;
-        events.push((t, EventKind::Rest));
-        push(rec, &state, Mode::Rest);
-        return (StopReason::Rest, t);
-    }
-    events.push((t, EventKind::Rolling));
-    push(rec, &state, Mode::Rolling);
-    while rec.next_time() < until {
-        let s = state.rolling_at(rec.next_time());
-        push(rec, &s, Mode::Rolling);
-        rec.next += 1;
-    }
-    push(rec, &state.rolling_at(until), Mode::Rolling);
-    (StopReason::TimeLimit, until)
+/// What a step ended with.
+enum Advance {
+    /// Go on.
+    Free,
+    /// Contact `k` reached its surface at the current state.
+    Arrival(usize),
+    /// The run ends at the current state.
+    Stop(StopReason),
 }

@@ -1,9 +1,9 @@
-//! Built-in simulation scenarios: a bouncing ball with spin, a rod dropped on its end, and
-//! Kane's double pendulum falling onto the floor. Each returns the mechanism and its initial
-//! state; the floor is `y = 0` for the free bodies.
+//! Built-in simulation scenarios: a bouncing ball with spin, a rod dropped on its end, Kane's
+//! double pendulum falling onto the floor, a rocking block and Newton's cradle. Each returns
+//! the mechanism and its initial state; the floor is `y = 0` for the free bodies.
 
 use crate::error::{Error, Result};
-use crate::mechanism::builtin::{BuiltIn, DoublePendulum, Rod, Sphere};
+use crate::mechanism::builtin::{Block, BuiltIn, Cradle, DoublePendulum, Rod, Sphere};
 
 /// A mechanism with its initial state.
 #[derive(Debug, Clone, PartialEq)]
@@ -130,4 +130,86 @@ pub fn double_pendulum_drop(
         q: q.to_vec(),
         u: u.to_vec(),
     })
+}
+
+/// A uniform rectangular block (mass `m`, half-width `b`, half-height `h`, see [`Block`]) on
+/// the floor `y = 0`, tilted by `angle` (radians, counter-clockwise; `|angle| < π/2`) onto one
+/// bottom corner — corner A for a positive tilt, corner B for a negative one, or, upright,
+/// the corner about which `omega` lifts the block (A for `ω ≥ 0`) — and turning about that
+/// corner at `omega` (rad/s): the centre moves at `ω ẑ × (G − P)`, `P` the corner.
+///
+/// Released from rest at a tilt below `α = atan(b/h)` it rocks: it falls back onto its other
+/// corner, strikes, rocks about that one, and so on, each impact (plastic, with enough
+/// friction) scaling the angular velocity by Housner's `1 − (3/2) sin²α`
+/// ([`Block::housner_ratio`]).
+pub fn rocking_block(
+    mass: f64,
+    half_width: f64,
+    half_height: f64,
+    angle: f64,
+    omega: f64,
+    gravity: f64,
+) -> Result<Initial> {
+    crate::error::finite("angle", angle)?;
+    crate::error::finite("omega", omega)?;
+    if angle.abs() >= 0.5 * std::f64::consts::PI {
+        return Err(Error::OutOfRange {
+            field: "angle".into(),
+            value: angle,
+            reason: "the tilt must be below 90° either way (the block stands on a bottom corner)"
+                .into(),
+        });
+    }
+    let block = Block::new(mass, half_width, half_height, gravity, 0.0)?;
+    let [b, h] = block.half_sizes();
+    let (s, c) = angle.sin_cos();
+    // The pivot corner's offset from the centre, rotated: A = (−b, −h), B = (b, −h).
+    let on_a = angle > 0.0 || (angle == 0.0 && omega >= 0.0);
+    let px = if on_a { -b } else { b };
+    let r = [c * px + s * h, s * px - c * h];
+    let y = -r[1];
+    // G − P = −r; the centre's velocity ω ẑ × (G − P).
+    let u = vec![omega * r[1], -omega * r[0], omega];
+    let init = Initial {
+        mechanism: BuiltIn::Block(block),
+        q: vec![0.0, y, angle],
+        u,
+    };
+    init.energies_representable(("half-height", half_height), ("omega", omega))?;
+    Ok(init)
+}
+
+/// Newton's cradle: `balls` equal solid spheres (mass `m`, radius `r`, see [`Cradle`]) in a row
+/// along `x` on a frictionless table, `gap` apart (0: touching), the first moving towards the
+/// others at `v0 > 0`.
+///
+/// With gaps every impact is a binary one, ball against ball (`e = 1`: the velocity passes
+/// down the row, `(0, …, 0, v0)`); touching, the first ball strikes the row at once, an impact
+/// at all the contacts together (the LCP: not the textbook answer; `sequential`: the textbook
+/// one).
+pub fn cradle(balls: usize, mass: f64, radius: f64, v0: f64, gap: f64) -> Result<Initial> {
+    let gap = non_negative("gap", gap)?;
+    crate::error::finite("v0", v0)?;
+    if v0 <= 0.0 {
+        return Err(Error::OutOfRange {
+            field: "v0".into(),
+            value: v0,
+            reason: "must be positive: the first ball moves towards the others".into(),
+        });
+    }
+    let cradle = Cradle::new(balls, mass, radius)?;
+    let r = cradle.radius();
+    let mut q = vec![0.0; 3 * balls];
+    for (i, x) in q.iter_mut().step_by(3).enumerate() {
+        *x = i as f64 * (2.0 * r + gap);
+    }
+    let mut u = vec![0.0; 3 * balls];
+    u[0] = v0;
+    let init = Initial {
+        mechanism: BuiltIn::Cradle(cradle),
+        q,
+        u,
+    };
+    init.energies_representable(("gap", gap), ("v0", v0))?;
+    Ok(init)
 }

@@ -57,6 +57,10 @@ fn outlines(shapes: &[Shape], poses: &[Pose<f64>]) -> Vec<Vec<(f64, f64)>> {
                     (p.x + 0.5 * l * s, p.y - 0.5 * l * c),
                 ]
             }
+            Shape::Block(b, h) => {
+                let c = crate::output::animation::block_corners(p, b, h);
+                vec![c[0], c[1], c[2], c[3], c[0]]
+            }
         })
         .collect()
 }
@@ -94,13 +98,18 @@ impl Figure for TrajectoryFigure<'_> {
             m.poses(&imp.q, &mut poses);
             snaps.push(outlines(self.shapes, &poses));
         }
-        let floor = m.contacts().first().map_or(0.0, |c| c.surface.point.y);
+        let floor_at = crate::output::animation::floor(m);
+        let floor = floor_at.unwrap_or(0.0);
         let all = paths
             .iter()
             .flatten()
             .chain(&tip)
             .chain(snaps.iter().flatten().flatten());
-        let (mut x0, mut x1, mut y0, mut y1) = (f64::INFINITY, f64::NEG_INFINITY, floor, floor);
+        let (mut x0, mut x1) = (f64::INFINITY, f64::NEG_INFINITY);
+        let (mut y0, mut y1) = match floor_at {
+            Some(f) => (f, f),
+            None => (f64::INFINITY, f64::NEG_INFINITY),
+        };
         for &(x, y) in all {
             x0 = x0.min(x);
             x1 = x1.max(x);
@@ -132,18 +141,20 @@ impl Figure for TrajectoryFigure<'_> {
             .axis_desc_style(text(13.0))
             .draw()
             .map_err(err)?;
-        chart
-            .draw_series(std::iter::once(Rectangle::new(
-                [(cx - xr, cy - yr), (cx + xr, floor)],
-                RGBColor(225, 225, 225).filled(),
-            )))
-            .map_err(err)?;
-        chart
-            .draw_series(LineSeries::new(
-                vec![(cx - xr, floor), (cx + xr, floor)],
-                BLACK.stroke_width(2),
-            ))
-            .map_err(err)?;
+        if floor_at.is_some() {
+            chart
+                .draw_series(std::iter::once(Rectangle::new(
+                    [(cx - xr, cy - yr), (cx + xr, floor)],
+                    RGBColor(225, 225, 225).filled(),
+                )))
+                .map_err(err)?;
+            chart
+                .draw_series(LineSeries::new(
+                    vec![(cx - xr, floor), (cx + xr, floor)],
+                    BLACK.stroke_width(2),
+                ))
+                .map_err(err)?;
+        }
         for (i, snap) in snaps.iter().enumerate() {
             let shade = if i == 0 {
                 RGBColor(120, 120, 120)

@@ -7,11 +7,17 @@
 //! | [`CartPendulum`] | x (cart), φ | — |
 //! | [`Sphere`] | x, y, θ | lowest point on a floor |
 //! | [`Rod`] | x, y, θ (from the floor) | end A, end B on a floor |
+//! | [`Block`] | x, y, θ | its four corners on a floor |
+//! | [`Cradle`] | x, y, θ of each ball | ball against ball along the row |
 
+mod block;
+pub mod cradle;
 mod double_pendulum;
 mod free;
 mod pendulums;
 
+pub use block::Block;
+pub use cradle::Cradle;
 pub use double_pendulum::DoublePendulum;
 pub use free::{Rod, Sphere};
 pub use pendulums::{CartPendulum, RingPendulum};
@@ -65,6 +71,10 @@ pub enum BuiltIn {
     Sphere(Sphere),
     /// `rod`.
     Rod(Rod),
+    /// `block` (simulation only).
+    Block(Block),
+    /// `cradle` (simulation only).
+    Cradle(Cradle),
 }
 
 macro_rules! each {
@@ -75,12 +85,16 @@ macro_rules! each {
             BuiltIn::CartPendulum($m) => $e,
             BuiltIn::Sphere($m) => $e,
             BuiltIn::Rod($m) => $e,
+            BuiltIn::Block($m) => $e,
+            BuiltIn::Cradle($m) => $e,
         }
     };
 }
 
 impl BuiltIn {
-    /// The stable names, in the order of the enum.
+    /// The stable names of the mechanisms the mechanism commands build (`impax conserved`,
+    /// `impax audit`), in the order of the enum; [`BuiltIn::Block`] and [`BuiltIn::Cradle`]
+    /// (`block`, `cradle`) are the simulation's.
     pub const NAMES: [&'static str; 5] = [
         "double-pendulum",
         "ring-pendulum",
@@ -97,6 +111,8 @@ impl BuiltIn {
             BuiltIn::CartPendulum(_) => Self::NAMES[2],
             BuiltIn::Sphere(_) => Self::NAMES[3],
             BuiltIn::Rod(_) => Self::NAMES[4],
+            BuiltIn::Block(_) => "block",
+            BuiltIn::Cradle(_) => "cradle",
         }
     }
 
@@ -107,10 +123,10 @@ impl BuiltIn {
         match self {
             BuiltIn::RingPendulum(m) => m.symmetries(),
             BuiltIn::CartPendulum(m) => m.symmetries(),
-            BuiltIn::Sphere(_) | BuiltIn::Rod(_) => {
+            BuiltIn::Sphere(_) | BuiltIn::Rod(_) | BuiltIn::Block(_) => {
                 vec![Box::new(Noether::translation("translation x", 0))]
             }
-            BuiltIn::DoublePendulum(_) => Vec::new(),
+            BuiltIn::DoublePendulum(_) | BuiltIn::Cradle(_) => Vec::new(),
         }
     }
 }
@@ -139,5 +155,11 @@ impl Mechanism for BuiltIn {
     }
     fn round_on_floor(&self) -> Option<RoundOnFloor> {
         each!(self, m => m.round_on_floor())
+    }
+    fn surface_body(&self, k: usize) -> Option<usize> {
+        each!(self, m => m.surface_body(k))
+    }
+    fn surface_point<D: Real>(&self, k: usize, q: &[D]) -> [D; 2] {
+        each!(self, m => m.surface_point(k, q))
     }
 }
