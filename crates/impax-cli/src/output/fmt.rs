@@ -41,6 +41,15 @@ impl Table {
         self.rows.push(cells);
     }
 
+    /// The row of a law that broke down: its id, `—` in the other columns but the last,
+    /// `verdict` in the last.
+    pub fn breakdown_row(&mut self, law: impl std::fmt::Display, verdict: &str) {
+        let mut row = vec![law.to_string()];
+        row.extend(std::iter::repeat_n("—".to_string(), self.header.len() - 2));
+        row.push(verdict.into());
+        self.rows.push(row);
+    }
+
     pub fn render(&self) -> String {
         let n = self.header.len();
         let width = |i: usize| {
@@ -80,4 +89,9 @@ impl Table {
         }
         out
     }
+}
+
+/// The `note — …` lines under a table.
+pub fn notes(list: &[String]) -> String {
+    list.iter().map(|n| format!("note — {n}\n")).collect()
 }

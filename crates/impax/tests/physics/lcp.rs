@@ -22,36 +22,7 @@ use impax::planar::{ContactProblem, LawDetail, PhaseKind, SlipDirection, Verdict
 use impax::LawId;
 
 fn random_problem(rng: &mut SplitMix64) -> ContactProblem {
-    loop {
-        let l11 = rng.decades(-1.0, 1.0);
-        let l22 = rng.decades(-1.0, 1.0);
-        let l21 = if rng.unit() < 0.1 {
-            0.0
-        } else {
-            rng.range(-3.0, 3.0)
-        };
-        let delta = rng.decades(-3.0, 0.0);
-        let (a, b, c) = (l11 * l11 + delta, l11 * l21, l21 * l21 + l22 * l22 + delta);
-        let vt = if rng.unit() < 0.05 {
-            0.0
-        } else {
-            rng.range(-2.0, 2.0)
-        };
-        let vn = -rng.decades(-1.0, 1.0);
-        let mu = match rng.next_u64() % 20 {
-            0 => 0.0,
-            1 => 2.0,
-            _ => rng.range(0.0, 2.0),
-        };
-        let e = match rng.next_u64() % 20 {
-            0 => 0.0,
-            1 => 1.0,
-            _ => rng.unit(),
-        };
-        if let Ok(p) = ContactProblem::from_entries(a, b, c, vt, vn, mu, e) {
-            return p;
-        }
-    }
+    crate::support::random_planar(rng, -3.0)
 }
 
 /// The impulse scale of a problem: `|p|` plus the forward error of solving with `W`.

@@ -161,21 +161,7 @@ fn decoupled_contacts_are_their_own_energetic() {
     for trial in 0..1500 {
         let k = 2 + trial % 3;
         let ones: Vec<ContactProblem> = (0..k).map(|_| random_one(&mut rng)).collect();
-        let mut w = DMatrix::zeros(2 * k, 2 * k);
-        let mut v = Vec::new();
-        let (mut mu, mut e) = (Vec::new(), Vec::new());
-        for (j, p) in ones.iter().enumerate() {
-            let b = p.w();
-            for r in 0..2 {
-                for c in 0..2 {
-                    w[(2 * j + r, 2 * j + c)] = b[(r, c)];
-                }
-            }
-            v.extend([p.velocity().x, p.velocity().y]);
-            mu.push(p.friction());
-            e.push(p.restitution());
-        }
-        let mut multi = MultiProblem::new(w, &v, &mu, &e).unwrap();
+        let mut multi = crate::support::block_diagonal(&ones);
         if trial % 2 == 1 {
             let kappa: Vec<f64> = (0..k).map(|_| rng.decades(-2.0, 2.0)).collect();
             multi = multi

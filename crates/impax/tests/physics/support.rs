@@ -130,6 +130,12 @@ pub fn rod_jacobian(l: f64) -> DMatrix<f64> {
 /// A random one-contact planar problem (W positive definite, some with W_tn = 0, v_t = 0,
 /// μ = 0 or 2, e = 0 or 1).
 pub fn random_one(rng: &mut SplitMix64) -> ContactProblem {
+    random_planar(rng, -2.0)
+}
+
+/// [`random_one`] with the regularising `δ` of `W`'s Cholesky factors drawn from
+/// `10^least … 1` (a smaller `least`: more nearly singular `W`).
+pub fn random_planar(rng: &mut SplitMix64, least: f64) -> ContactProblem {
     loop {
         let l11 = rng.decades(-1.0, 1.0);
         let l22 = rng.decades(-1.0, 1.0);
@@ -138,7 +144,7 @@ pub fn random_one(rng: &mut SplitMix64) -> ContactProblem {
         } else {
             rng.range(-3.0, 3.0)
         };
-        let delta = rng.decades(-2.0, 0.0);
+        let delta = rng.decades(least, 0.0);
         let (a, b, c) = (l11 * l11 + delta, l11 * l21, l21 * l21 + l22 * l22 + delta);
         let vt = if rng.unit() < 0.05 {
             0.0
@@ -245,4 +251,25 @@ pub fn dump(r: &Random) -> String {
 /// Per-contact vectors as one contact-major vector.
 pub fn flat(x: &[Vec2]) -> DVector<f64> {
     DVector::from_iterator(2 * x.len(), x.iter().flat_map(|y| [y.x, y.y]))
+}
+
+/// The problem of independent contacts: `W` block-diagonal with each one-contact problem's
+/// `W`, and their velocities and coefficients in order.
+pub fn block_diagonal(ones: &[ContactProblem]) -> MultiProblem {
+    let k = ones.len();
+    let mut w = DMatrix::zeros(2 * k, 2 * k);
+    let mut v = Vec::new();
+    let (mut mu, mut e) = (Vec::new(), Vec::new());
+    for (j, p) in ones.iter().enumerate() {
+        let b = p.w();
+        for r in 0..2 {
+            for c in 0..2 {
+                w[(2 * j + r, 2 * j + c)] = b[(r, c)];
+            }
+        }
+        v.extend([p.velocity().x, p.velocity().y]);
+        mu.push(p.friction());
+        e.push(p.restitution());
+    }
+    MultiProblem::new(w, &v, &mu, &e).unwrap()
 }

@@ -186,10 +186,7 @@ fn table(
                 t.row(row);
             }
             Err(b) => {
-                let mut row = vec![law.to_string()];
-                row.extend(std::iter::repeat_n("—".to_string(), coords.len() + 5));
-                row.push("BREAKDOWN".into());
-                t.row(row);
+                t.breakdown_row(law, "BREAKDOWN");
                 notes.push(format!("{law}: breakdown: {}", b.reason));
             }
         }
@@ -219,8 +216,6 @@ fn table(
             .collect::<Vec<_>>()
             .join(", ")
     ));
-    for n in notes {
-        text.push_str(&format!("note — {n}\n"));
-    }
+    text.push_str(&crate::output::fmt::notes(&notes));
     text
 }

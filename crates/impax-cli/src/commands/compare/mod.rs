@@ -261,9 +261,7 @@ fn table(
         text.push_str(" (/v0)");
     }
     text.push('\n');
-    for n in notes {
-        text.push_str(&format!("note — {n}\n"));
-    }
+    text.push_str(&crate::output::fmt::notes(&notes));
     text
 }
 

@@ -313,8 +313,6 @@ fn table(sc: &MultiScenario, problem: &MultiProblem, results: &[(LawId, SystemOu
             String::new()
         }
     ));
-    for n in notes {
-        text.push_str(&format!("note — {n}\n"));
-    }
+    text.push_str(&crate::output::fmt::notes(&notes));
     text
 }

@@ -379,10 +379,7 @@ pub fn run(
                 }
                 Err(b) => {
                     notes.push(format!("{law}: breakdown: {}", b.reason));
-                    let mut row = vec![law.to_string()];
-                    row.extend(std::iter::repeat_n("—".to_string(), 8));
-                    row.push("breakdown".into());
-                    t.row(row);
+                    t.breakdown_row(law, "breakdown");
                 }
             }
         }
@@ -392,9 +389,7 @@ pub fn run(
             spec.friction, spec.restitution, v.x, v.y, v.z
         );
         s.push_str(&t.render());
-        for n in notes {
-            s.push_str(&format!("note — {n}\n"));
-        }
+        s.push_str(&crate::output::fmt::notes(&notes));
         s
     };
     out.extend_from_slice(text.as_bytes());

@@ -165,10 +165,7 @@ fn table(p: &MultiProblem, results: &[(LawId, MultiResolution)]) -> String {
             }
             Err(b) => {
                 notes.push(format!("{law}: breakdown: {}", b.reason));
-                let mut row = vec![law.to_string()];
-                row.extend(std::iter::repeat_n("—".to_string(), 7));
-                row.push("breakdown".into());
-                t.row(row);
+                t.breakdown_row(law, "breakdown");
             }
         }
     }
@@ -188,8 +185,6 @@ fn table(p: &MultiProblem, results: &[(LawId, MultiResolution)]) -> String {
         n = 2 * k,
     );
     s.push_str(&t.render());
-    for n in notes {
-        s.push_str(&format!("note — {n}\n"));
-    }
+    s.push_str(&crate::output::fmt::notes(&notes));
     s
 }

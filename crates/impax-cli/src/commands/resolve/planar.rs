@@ -74,10 +74,7 @@ pub fn run(args: &ResolveArgs, out: &mut Vec<u8>) -> CliResult<()> {
                 }
                 Err(b) => {
                     notes.push(format!("{law}: breakdown: {}", b.reason));
-                    let mut row = vec![law.to_string()];
-                    row.extend(std::iter::repeat_n("—".to_string(), 7));
-                    row.push("breakdown".into());
-                    t.row(row);
+                    t.breakdown_row(law, "breakdown");
                 }
             }
         }
@@ -93,9 +90,7 @@ pub fn run(args: &ResolveArgs, out: &mut Vec<u8>) -> CliResult<()> {
             Plain(e)
         );
         s.push_str(&t.render());
-        for n in notes {
-            s.push_str(&format!("note — {n}\n"));
-        }
+        s.push_str(&crate::output::fmt::notes(&notes));
         s
     };
     out.extend_from_slice(text.as_bytes());
