@@ -41,6 +41,8 @@ pub enum Command {
     /// deviation from `energetic`, and a verdict in words. Built-in scenarios: `sphere`
     /// (μ = 0.4, e = 0.7), `rod` (50°, v = (0.5, −1), μ = 0.8, e = 1), `double-pendulum`
     /// (μ = e = 0.5); or a TOML scenario (a body, a mechanism, or a `space = "3d"` body).
+    /// The systems struck at several contacts (`rod-flat`, `rocking-block`, `cradle`,
+    /// `ball-ball-wall`): `lcp` and `sequential` against `lzb`.
     Audit(AuditArgs),
     /// The interactive explorer in the browser: serve the page (the impax core compiled to
     /// WebAssembly) on 127.0.0.1 and print its URL, or write its static files with --out.
@@ -205,6 +207,18 @@ pub struct MultiFlags {
     /// (default 30).
     #[arg(long, allow_hyphen_values = true)]
     pub angle_deg: Option<f64>,
+    /// Every built-in, for `lzb`: the contacts' stiffnesses κ_j > 0 (F_j = κ_j δ_j^η), one
+    /// for every contact or one per contact, comma separated (only ratios matter; default 1).
+    #[arg(
+        long,
+        allow_hyphen_values = true,
+        value_delimiter = ',',
+        value_name = "K,.."
+    )]
+    pub stiffness: Option<Vec<f64>>,
+    /// Every built-in, for `lzb`: the exponent η > 0 of the force law (default 1.5, Hertz).
+    #[arg(long, allow_hyphen_values = true)]
+    pub exponent: Option<f64>,
 }
 
 impl MultiFlags {
@@ -220,6 +234,8 @@ impl MultiFlags {
             ("balls", self.balls.is_some()),
             ("v0", self.v0.is_some()),
             ("angle-deg", self.angle_deg.is_some()),
+            ("stiffness", self.stiffness.is_some()),
+            ("exponent", self.exponent.is_some()),
         ]
         .into_iter()
         .filter_map(|(flag, given)| given.then_some(flag))
@@ -427,19 +443,26 @@ pub struct SimulateArgs {
 #[derive(Debug, Args)]
 pub struct AuditArgs {
     /// `sphere`, `rod`, `double-pendulum`, or a TOML scenario file (a body, as `impax compare`
-    /// reads it, planar or with `space = "3d"`, or a mechanism with a `mechanism` key).
+    /// reads it, planar or with `space = "3d"`, or a mechanism with a `mechanism` key); or a
+    /// system struck at several contacts: `rod-flat`, `rocking-block`, `cradle`,
+    /// `ball-ball-wall`.
     pub scenario: String,
+    /// Several-contact built-ins: the mass (of each ball).
+    #[arg(long, allow_hyphen_values = true)]
+    pub mass: Option<f64>,
     /// Coulomb friction coefficient μ ≥ 0 (overrides the scenario's).
     #[arg(long, allow_hyphen_values = true)]
     pub friction: Option<f64>,
     /// Coefficient of restitution e ∈ [0, 1] (overrides the scenario's).
     #[arg(long, allow_hyphen_values = true)]
     pub restitution: Option<f64>,
-    /// Sphere: the radius.
+    /// Sphere: the radius; cradle, ball-ball-wall: the balls' radius.
     #[arg(long, allow_hyphen_values = true)]
     pub radius: Option<f64>,
     #[command(flatten)]
     pub mechanism: MechanismFlags,
+    #[command(flatten)]
+    pub multi: MultiFlags,
     /// Print one JSON object instead of the table.
     #[arg(long)]
     pub json: bool,
@@ -449,7 +472,7 @@ pub struct AuditArgs {
 pub struct ResolveArgs {
     /// Several contacts at once: K contacts (planar), W of 2K × 2K given by its upper
     /// triangle, v⁻ of 2K numbers, friction and restitution one per contact or one for all;
-    /// laws `lcp` and `sequential` (with K = 1 every contact-space law).
+    /// laws `lcp`, `sequential` and `lzb` (with K = 1 every contact-space law).
     #[arg(long, value_name = "K")]
     pub contacts: Option<usize>,
     /// Contact-space inverse inertia W (symmetric positive definite): planar WTT,WTN,WNN, or
@@ -484,8 +507,17 @@ pub struct ResolveArgs {
         required = true
     )]
     pub restitution: Vec<f64>,
-    /// Laws, comma separated (default: every contact-space law; with --contacts, `lcp` and
-    /// `sequential`).
+    /// With --contacts K, for `lzb`: the contacts' stiffnesses κ_j > 0 of the force law
+    /// F_j = κ_j δ_j^η, one for every contact or K comma separated (only their ratios
+    /// matter; default 1).
+    #[arg(long, allow_hyphen_values = true, value_delimiter = ',')]
+    pub stiffness: Vec<f64>,
+    /// With --contacts K, for `lzb`: the exponent η > 0 of the force law F = κ δ^η
+    /// (default 1.5, Hertz; 1 for a linear spring).
+    #[arg(long, allow_hyphen_values = true)]
+    pub exponent: Option<f64>,
+    /// Laws, comma separated (default: every contact-space law; with --contacts, `lcp`,
+    /// `sequential` and `lzb`).
     #[arg(long, value_delimiter = ',')]
     pub law: Vec<String>,
     /// Print JSON: one entry for one law, else an object with `results`.

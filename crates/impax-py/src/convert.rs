@@ -320,6 +320,7 @@ pub mod arg {
         angles,
         b,
         contact,
+        exponent,
         friction,
         gravity,
         inertia,
@@ -335,6 +336,7 @@ pub mod arg {
         semi_axes,
         speed,
         spin_ratio,
+        stiffness,
         velocity,
     );
 }

@@ -60,6 +60,14 @@ fn velocities(v: &Bound<'_, PyAny>, k: usize) -> PyResult<Vec<f64>> {
     }
 }
 
+/// `lzb`'s force law as given (`stiffness=`, `exponent=`; defaults when `None`).
+pub struct ForceLaw {
+    /// The contacts' stiffnesses `κ_j` (one or `K`).
+    pub stiffness: Option<Vec<f64>>,
+    /// The exponent `η`.
+    pub exponent: Option<f64>,
+}
+
 /// Resolve a planar problem with `k` contacts (`impax.resolve(..., contacts=k)`).
 pub fn resolve(
     w: &Bound<'_, PyAny>,
@@ -68,13 +76,20 @@ pub fn resolve(
     restitution: &[f64],
     law: &str,
     k: usize,
+    force: &ForceLaw,
 ) -> PyResult<MultiOutcome> {
     if k == 0 {
         return Err(value_error("contacts: must be at least 1"));
     }
     let w = matrix(w, k)?;
     let v = velocities(v, k)?;
-    let problem = lib(MultiProblem::new(w, &v, friction, restitution))?;
+    let mut problem = lib(MultiProblem::new(w, &v, friction, restitution))?;
+    if let Some(kappa) = &force.stiffness {
+        problem = lib(problem.with_stiffness(kappa))?;
+    }
+    if let Some(eta) = force.exponent {
+        problem = lib(problem.with_exponent(eta))?;
+    }
     let law = crate::convert::law(law)?;
     let raw = lib(law.resolve_multi(&problem))?;
     Ok(MultiOutcome { law, raw })

@@ -1,6 +1,8 @@
 //! `impax.resolve`: one contact-space problem.
 
-use crate::convert::{arg, lib, matrix, planar_law, spatial_law, vector, Matrix, OneOrMany};
+use crate::convert::{
+    arg, lib, matrix, planar_law, spatial_law, value_error, vector, Matrix, OneOrMany,
+};
 use crate::multi::MultiOutcome;
 use crate::outcome::{Context, Outcome, Raw};
 use impax::math::{Vec2, Vec3};
@@ -17,10 +19,13 @@ use pyo3::prelude::*;
 ///
 /// With `contacts=K`: a planar problem with `K` contacts at once (`impax resolve --contacts
 /// K`): `W` `2K × 2K` (or its upper triangle), `v` `2K` numbers or `K` pairs, `friction` and
-/// `restitution` one number or `K`; the laws `lcp` and `sequential` (with `K = 1` every
-/// contact-space law); a [`MultiOutcome`].
+/// `restitution` one number or `K`; the laws `lcp`, `sequential` and `lzb` (with `K = 1`
+/// every contact-space law); a [`MultiOutcome`]. For `lzb`, `stiffness` (one number or `K`,
+/// the contacts' `κ_j` of the force law `F_j = κ_j δ_j^η`, only ratios matter, default 1) and
+/// `exponent` (`η`, default 1.5, Hertz), as `--stiffness` and `--exponent`.
 #[pyfunction]
-#[pyo3(signature = (w, v, friction, restitution, law = "energetic", *, contacts = None))]
+#[pyo3(signature = (w, v, friction, restitution, law = "energetic", *, contacts = None, stiffness = None, exponent = None))]
+#[allow(clippy::too_many_arguments)] // the keyword arguments of one Python function
 pub fn resolve(
     py: Python<'_>,
     w: &Bound<'_, PyAny>,
@@ -29,10 +34,27 @@ pub fn resolve(
     #[pyo3(from_py_with = arg::restitution)] restitution: OneOrMany,
     law: &str,
     contacts: Option<usize>,
+    #[pyo3(from_py_with = arg::stiffness)] stiffness: Option<OneOrMany>,
+    #[pyo3(from_py_with = arg::exponent)] exponent: Option<f64>,
 ) -> PyResult<Py<PyAny>> {
     if let Some(k) = contacts {
-        let out: MultiOutcome = crate::multi::resolve(w, v, &friction.0, &restitution.0, law, k)?;
+        let force = crate::multi::ForceLaw {
+            stiffness: stiffness.map(|s| s.0),
+            exponent,
+        };
+        let out: MultiOutcome =
+            crate::multi::resolve(w, v, &friction.0, &restitution.0, law, k, &force)?;
         return Ok(Py::new(py, out)?.into_any());
+    }
+    if stiffness.is_some() || exponent.is_some() {
+        let name = if stiffness.is_some() {
+            "stiffness"
+        } else {
+            "exponent"
+        };
+        return Err(value_error(format!(
+            "{name}: a parameter of `lzb` at several contacts; only with contacts=K"
+        )));
     }
     let friction = friction.single("friction")?;
     let restitution = restitution.single("restitution")?;

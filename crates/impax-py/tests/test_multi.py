@@ -67,6 +67,11 @@ def test_one_contact_is_the_one_contact_law():
         (dict(w=ROD_UPPER, v=[0, -1, 0, -1], friction=[0.5, 0.5, 0.5]), "friction"),
         (dict(w=ROD_UPPER, v=[0, -1, 0, -1], restitution=[0.5, 1.5]), "restitution[2]"),
         (dict(w=ROD_UPPER, v=[0, -1, 0, -1], contacts=0), "contacts"),
+        (dict(w=ROD_UPPER, v=[0, -1, 0, -1], law="lzb", stiffness=[1, -2]), "stiffness[2]"),
+        (dict(w=ROD_UPPER, v=[0, -1, 0, -1], law="lzb", stiffness=[1, 2, 3]), "stiffness"),
+        (dict(w=ROD_UPPER, v=[0, -1, 0, -1], law="lzb", stiffness=float("nan")), "stiffness"),
+        (dict(w=ROD_UPPER, v=[0, -1, 0, -1], law="lzb", exponent=0.0), "exponent"),
+        (dict(w=ROD_UPPER, v=[0, -1, 0, -1], law="lzb", exponent=10**400), "exponent"),
     ],
 )
 def test_bad_input_names_the_argument(kwargs, field):
@@ -79,3 +84,35 @@ def test_bad_input_names_the_argument(kwargs, field):
 def test_several_coefficients_need_contacts():
     with pytest.raises(ValueError, match="friction"):
         impax.resolve([3.5, 0.4, 1.2], [0.5, -0.866], [0.3, 0.3], 0.7)
+
+
+def test_lzb_force_law_agrees_with_the_cli(cli):
+    """`stiffness=` and `exponent=` are `--stiffness` and `--exponent`."""
+    ref = cli.json(
+        "resolve",
+        "--contacts=2",
+        "--w=" + ",".join(str(x) for x in ROD_UPPER),
+        "--v=0.3,-1,0.3,-1",
+        "--friction=0.2",
+        "--restitution=0.6",
+        "--stiffness=1,4",
+        "--exponent=1",
+        "--law=lzb",
+    )
+    out = impax.resolve(
+        ROD_UPPER, [0.3, -1, 0.3, -1], 0.2, 0.6, "lzb", contacts=2, stiffness=[1, 4], exponent=1.0
+    )
+    assert out.energy_change == pytest.approx(ref["energy_change"], rel=1e-13)
+    for py, c in zip(out.contacts, ref["contacts"]):
+        assert py["impulse"] == pytest.approx((c["impulse"]["t"], c["impulse"]["n"]), abs=1e-13)
+    # Only the stiffnesses' ratios matter.
+    a = impax.resolve(ROD_UPPER, [0.3, -1, 0.3, -1], 0.2, 0.6, "lzb", contacts=2, stiffness=2.5)
+    b = impax.resolve(ROD_UPPER, [0.3, -1, 0.3, -1], 0.2, 0.6, "lzb", contacts=2)
+    for x, y in zip(a.velocities_after, b.velocities_after):
+        assert x == pytest.approx(y, abs=1e-10)
+
+
+def test_force_law_needs_contacts():
+    for kwargs, field in ((dict(stiffness=2.0), "stiffness"), (dict(exponent=1.0), "exponent")):
+        with pytest.raises(ValueError, match=field):
+            impax.resolve([3.5, 0.4, 1.2], [0.5, -0.866], 0.3, 0.7, **kwargs)

@@ -182,6 +182,8 @@ pub fn multi_problem(p: &MultiProblem) -> Value {
         "v": (0..k).map(|j| vec2(p.contact_velocity(j))).collect::<Vec<_>>(),
         "friction": (0..k).map(|j| p.friction(j)).collect::<Vec<_>>(),
         "restitution": (0..k).map(|j| p.restitution(j)).collect::<Vec<_>>(),
+        "stiffness": (0..k).map(|j| p.stiffness(j)).collect::<Vec<_>>(),
+        "exponent": p.exponent(),
         "rank": p.rank(),
     })
 }

@@ -2,7 +2,7 @@
 //! `rocking-block`, `cradle`, `ball-ball-wall`; `impax::multi::scenarios`): every multi-contact
 //! law side by side with the generalized velocities after and the energy ratio.
 
-use crate::cli::CompareArgs;
+use crate::cli::{CompareArgs, MultiFlags};
 use crate::input::{CliError, CliResult};
 use crate::output::fmt::{signed, Plain, Table};
 use crate::output::json::{self, num};
@@ -15,7 +15,11 @@ use serde_json::{json, Value};
 /// The built-ins' names (for [`crate::sources::Source::classify`]'s callers).
 pub const BUILT_INS: [&str; 4] = NAMES;
 
-/// The flags each built-in takes (besides `--friction`, `--restitution`, `--law`, `--json`).
+/// The flags of `lzb`'s force law, which every built-in takes.
+const FORCE_LAW: [&str; 2] = ["stiffness", "exponent"];
+
+/// The flags each built-in takes (besides `--friction`, `--restitution`, `--law`, `--json`
+/// and [`FORCE_LAW`]).
 fn accepted(name: &str) -> &'static [&'static str] {
     match name {
         "rod-flat" => &["mass", "length", "vx", "vy", "omega"],
@@ -46,25 +50,38 @@ pub fn build(name: &str, args: &CompareArgs) -> CliResult<MultiScenario> {
             accepted(name).join(", --")
         )));
     }
-    let mut given = args.multi.given();
-    if args.mass.is_some() {
+    built_in(name, args.mass, args.radius, &args.multi)
+}
+
+/// Build the built-in `name` from its parameters (`--mass`, `--radius` and the multi-contact
+/// flags; defaults for those not given), refusing a flag it does not take.
+pub fn built_in(
+    name: &str,
+    mass: Option<f64>,
+    radius: Option<f64>,
+    f: &MultiFlags,
+) -> CliResult<MultiScenario> {
+    let mut given = f.given();
+    if mass.is_some() {
         given.push("mass");
     }
-    if args.radius.is_some() {
+    if radius.is_some() {
         given.push("radius");
     }
-    if let Some(flag) = given.iter().find(|f| !accepted(name).contains(f)) {
+    if let Some(flag) = given
+        .iter()
+        .find(|f| !accepted(name).contains(f) && !FORCE_LAW.contains(f))
+    {
         return Err(CliError::input(format!(
             "--{flag}: not a parameter of `{name}` (it takes --{})",
             accepted(name).join(", --")
         )));
     }
-    let f = &args.multi;
     let scenario = match name {
         "rod-flat" => {
             let d = RodFlat::default();
             RodFlat {
-                mass: args.mass.unwrap_or(d.mass),
+                mass: mass.unwrap_or(d.mass),
                 length: f.length.unwrap_or(d.length),
                 vx: f.vx.unwrap_or(d.vx),
                 vy: f.vy.unwrap_or(d.vy),
@@ -75,7 +92,7 @@ pub fn build(name: &str, args: &CompareArgs) -> CliResult<MultiScenario> {
         "rocking-block" => {
             let d = RockingBlock::default();
             RockingBlock {
-                mass: args.mass.unwrap_or(d.mass),
+                mass: mass.unwrap_or(d.mass),
                 half_width: f.half_width.unwrap_or(d.half_width),
                 half_height: f.half_height.unwrap_or(d.half_height),
                 omega: f.omega.unwrap_or(d.omega),
@@ -86,8 +103,8 @@ pub fn build(name: &str, args: &CompareArgs) -> CliResult<MultiScenario> {
             let d = Cradle::default();
             Cradle {
                 balls: f.balls.unwrap_or(d.balls),
-                mass: args.mass.unwrap_or(d.mass),
-                radius: args.radius.unwrap_or(d.radius),
+                mass: mass.unwrap_or(d.mass),
+                radius: radius.unwrap_or(d.radius),
                 v0: f.v0.unwrap_or(d.v0),
             }
             .build()?
@@ -95,8 +112,8 @@ pub fn build(name: &str, args: &CompareArgs) -> CliResult<MultiScenario> {
         _ => {
             let d = BallBallWall::default();
             BallBallWall {
-                mass: args.mass.unwrap_or(d.mass),
-                radius: args.radius.unwrap_or(d.radius),
+                mass: mass.unwrap_or(d.mass),
+                radius: radius.unwrap_or(d.radius),
                 v0: f.v0.unwrap_or(d.v0),
                 angle_deg: f.angle_deg.unwrap_or(d.angle_deg),
             }
@@ -118,11 +135,18 @@ pub fn laws(ids: &[String], contacts: usize) -> CliResult<Vec<LawId>> {
     })
 }
 
-pub fn run(name: &str, args: &CompareArgs, out: &mut Vec<u8>) -> CliResult<()> {
-    let sc = build(name, args)?;
-    let friction = args.friction.unwrap_or(sc.friction);
-    let restitution = args.restitution.unwrap_or(sc.restitution);
-    let problem = sc
+/// The built-in's contact-space problem with μ and e (the scenario's unless given) and
+/// `lzb`'s force law from `--stiffness` and `--exponent`.
+pub fn problem(
+    name: &str,
+    sc: &MultiScenario,
+    friction: Option<f64>,
+    restitution: Option<f64>,
+    f: &MultiFlags,
+) -> CliResult<MultiProblem> {
+    let friction = friction.unwrap_or(sc.friction);
+    let restitution = restitution.unwrap_or(sc.restitution);
+    let mut problem = sc
         .impact
         .problem(&[friction], &[restitution])
         .map_err(|e| match e {
@@ -136,6 +160,18 @@ pub fn run(name: &str, args: &CompareArgs, out: &mut Vec<u8>) -> CliResult<()> {
             }
             other => other.into(),
         })?;
+    if let Some(kappa) = &f.stiffness {
+        problem = problem.with_stiffness(kappa)?;
+    }
+    if let Some(eta) = f.exponent {
+        problem = problem.with_exponent(eta)?;
+    }
+    Ok(problem)
+}
+
+pub fn run(name: &str, args: &CompareArgs, out: &mut Vec<u8>) -> CliResult<()> {
+    let sc = build(name, args)?;
+    let problem = problem(name, &sc, args.friction, args.restitution, &args.multi)?;
     let laws = laws(&args.law, problem.contacts())?;
     let results = laws
         .iter()
@@ -287,10 +323,11 @@ fn table(sc: &MultiScenario, problem: &MultiProblem, results: &[(LawId, SystemOu
         })
         .collect();
     let mut text = format!(
-        "impax compare — {}; μ = {}, e = {}\ncontacts (v⁻ = (v_t, v_n)): {}; W {n} × {n} of rank {}; T⁻ = {}\n\n",
+        "impax compare — {}; μ = {}, e = {}{}\ncontacts (v⁻ = (v_t, v_n)): {}; W {n} × {n} of rank {}; T⁻ = {}\n\n",
         sc.description,
         Plain(problem.friction(0)),
         Plain(problem.restitution(0)),
+        crate::commands::resolve::force_law(problem),
         v.join(", "),
         problem.rank(),
         short(t0),

@@ -5,6 +5,7 @@ mod multi;
 mod planar;
 mod spatial;
 
+pub(crate) use multi::force_law;
 pub(crate) use spatial::lcp_solutions;
 
 use crate::cli::ResolveArgs;
@@ -13,6 +14,16 @@ use crate::input::{CliError, CliResult};
 pub fn run(args: &ResolveArgs, out: &mut Vec<u8>) -> CliResult<()> {
     if let Some(k) = args.contacts {
         return multi::run(args, k, out);
+    }
+    if !args.stiffness.is_empty() || args.exponent.is_some() {
+        let flag = if args.stiffness.is_empty() {
+            "exponent"
+        } else {
+            "stiffness"
+        };
+        return Err(CliError::input(format!(
+            "--{flag}: a parameter of `lzb` at several contacts; only with --contacts K"
+        )));
     }
     let count = args.w.split(',').count();
     if count == 6 {

@@ -49,7 +49,13 @@ pub fn run(args: &ResolveArgs, k: usize, out: &mut Vec<u8>) -> CliResult<()> {
             )));
         }
     }
-    let problem = MultiProblem::from_upper(k, &w, &v, &args.friction, &args.restitution)?;
+    let mut problem = MultiProblem::from_upper(k, &w, &v, &args.friction, &args.restitution)?;
+    if !args.stiffness.is_empty() {
+        problem = problem.with_stiffness(&args.stiffness)?;
+    }
+    if let Some(eta) = args.exponent {
+        problem = problem.with_exponent(eta)?;
+    }
     let laws = if args.law.is_empty() {
         // Every law that takes K contacts (`lcp` enumerates 4^K modes: up to 6).
         LawId::MULTI_CONTACT
@@ -95,6 +101,23 @@ fn per_contact(values: impl Iterator<Item = f64>) -> String {
             .collect::<Vec<_>>()
             .join(" | ")
     }
+}
+
+/// `, κ = …, η = …` when `lzb`'s force law is not the default (equal stiffnesses, Hertz).
+pub(crate) fn force_law(p: &MultiProblem) -> String {
+    let k = p.contacts();
+    let equal = (1..k).all(|j| p.stiffness(j) == p.stiffness(0));
+    let mut s = String::new();
+    if !equal {
+        s.push_str(&format!(
+            ", κ = {}",
+            per_contact((0..k).map(|j| p.stiffness(j)))
+        ));
+    }
+    if p.exponent() != impax::multi::HERTZ_EXPONENT {
+        s.push_str(&format!(", η = {}", Plain(p.exponent())));
+    }
+    s
 }
 
 /// The table: one row per law and contact, `ΔT` and the verdict on each law's first row.
@@ -176,12 +199,13 @@ fn table(p: &MultiProblem, results: &[(LawId, MultiResolution)]) -> String {
         })
         .collect();
     let mut s = format!(
-        "impax resolve — {k} contact{}, W {n} × {n} of rank {}, v⁻ = ({}), μ = {}, e = {}\n\n",
+        "impax resolve — {k} contact{}, W {n} × {n} of rank {}, v⁻ = ({}), μ = {}, e = {}{}\n\n",
         if k == 1 { "" } else { "s" },
         p.rank(),
         v.join(" | "),
         per_contact((0..k).map(|j| p.friction(j))),
         per_contact((0..k).map(|j| p.restitution(j))),
+        force_law(p),
         n = 2 * k,
     );
     s.push_str(&t.render());

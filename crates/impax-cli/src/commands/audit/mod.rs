@@ -10,6 +10,14 @@
 //! and of `T⁺/T⁻`, and a verdict in words. Scenarios: the built-in `sphere`, `rod` and
 //! `double-pendulum` (through the mechanism code), mechanism files, and planar or 3D body
 //! files as `impax compare` reads them.
+//!
+//! The systems struck at several contacts at once ([`multi`]: `rod-flat`, `rocking-block`,
+//! `cradle`, `ball-ball-wall`) are audited the same way with their own laws: `lcp` (what
+//! sequential-impulse / projected Gauss–Seidel engines converge to) and `sequential` (one
+//! contact at a time, the binary collisions of event-driven codes) against `lzb`, the
+//! energetically consistent multiple-impact law.
+
+mod multi;
 
 use crate::cli::{AuditArgs, CompareArgs};
 use crate::input::{finite_flag, CliError, CliResult};
@@ -23,7 +31,8 @@ use impax::planar::{Breakdown, Verdict};
 use impax::LawId;
 use serde_json::{json, Value};
 
-/// The laws of an audit, in presentation order: the exact ones, then the engine-style ones.
+/// The laws of a one-contact audit, in presentation order: the exact ones, then the
+/// engine-style ones.
 pub const LAWS: [LawId; 5] = [
     LawId::Newton,
     LawId::Poisson,
@@ -77,6 +86,14 @@ impl RowData {
 /// Everything an audit reports, whatever the scenario's kind.
 struct Audit {
     description: String,
+    /// The law the engine-style rules are measured against.
+    reference: LawId,
+    /// How the verdicts name the reference, e.g. "the rigid-body answer (`energetic`)".
+    reference_label: &'static str,
+    /// The engine-style rules, in presentation order.
+    engine_rules: &'static [LawId],
+    /// The table's legend of the roles.
+    legend: &'static str,
     /// Names of the velocity components (generalized velocities or body velocities).
     names: Vec<String>,
     before: Vec<f64>,
@@ -86,6 +103,23 @@ struct Audit {
     problem_line: String,
     rows: Vec<Row>,
 }
+
+impl Audit {
+    /// The role of a law in the audit.
+    fn role(&self, law: LawId) -> &'static str {
+        if self.engine_rules.contains(&law) {
+            "engine"
+        } else {
+            "exact"
+        }
+    }
+}
+
+/// How a one-contact audit names its reference.
+const RIGID_BODY_ANSWER: &str = "the rigid-body answer (`energetic`)";
+
+/// The legend of a one-contact audit's table.
+const LEGEND: &str = "exact: the Darboux–Keller integration (energetic: the rigid-body answer); engine: lcp = what sequential-impulse / PGS engines converge to (checked against pymunk), whittaker = restitution + Coulomb on the total impulse";
 
 /// The header line of a planar contact-space problem.
 fn planar_line(p: &impax::planar::ContactProblem, t0: f64) -> String {
@@ -120,6 +154,16 @@ fn build(args: &AuditArgs) -> CliResult<Audit> {
     }
     if let Some(x) = args.restitution {
         finite_flag("restitution", x)?;
+    }
+    if multi::BUILT_INS.contains(&source) {
+        return multi::build(source, args);
+    }
+    let multi_flag = args.mass.is_some().then_some("mass");
+    if let Some(flag) = args.multi.given().first().copied().or(multi_flag) {
+        return Err(CliError::input(format!(
+            "--{flag}: only for the systems struck at several contacts ({})",
+            multi::BUILT_INS.join(", ")
+        )));
     }
     if let Some(&(name, mu, e)) = BUILT_INS.iter().find(|b| b.0 == source) {
         let mut flags = mechanism_flags(args);
@@ -159,7 +203,13 @@ fn build(args: &AuditArgs) -> CliResult<Audit> {
 }
 
 fn names() -> String {
-    BUILT_INS.map(|b| b.0).join(", ")
+    BUILT_INS
+        .map(|b| b.0)
+        .iter()
+        .chain(multi::BUILT_INS.iter())
+        .copied()
+        .collect::<Vec<_>>()
+        .join(", ")
 }
 
 fn mechanism_flags(args: &AuditArgs) -> MechanismSpec {
@@ -206,6 +256,10 @@ fn mechanism_audit(source: &Source, flags: &MechanismSpec) -> CliResult<Audit> {
     let t0 = impact.energy_before();
     Ok(Audit {
         description: format!("{}; μ = {friction}, e = {restitution}", case.description),
+        reference: REFERENCE,
+        reference_label: RIGID_BODY_ANSWER,
+        engine_rules: &ENGINE_RULES,
+        legend: LEGEND,
         names: case
             .mechanism
             .coordinates()
@@ -265,6 +319,10 @@ fn body_audit(file: &File, args: &AuditArgs) -> CliResult<Audit> {
             "{}; μ = {}, e = {}",
             sc.description, sc.friction, sc.restitution
         ),
+        reference: REFERENCE,
+        reference_label: RIGID_BODY_ANSWER,
+        engine_rules: &ENGINE_RULES,
+        legend: LEGEND,
         names,
         before,
         energy_before: t0,
@@ -337,6 +395,10 @@ fn spatial_audit(source: &str, text: &str, args: &AuditArgs) -> CliResult<Audit>
     let v = problem.velocity();
     Ok(Audit {
         description: format!("{desc}; μ = {friction}, e = {restitution}"),
+        reference: REFERENCE,
+        reference_label: RIGID_BODY_ANSWER,
+        engine_rules: &ENGINE_RULES,
+        legend: LEGEND,
         names,
         before,
         energy_before: t0,
@@ -354,20 +416,12 @@ fn spatial_audit(source: &str, text: &str, args: &AuditArgs) -> CliResult<Audit>
     })
 }
 
-/// The role of a law in the audit.
-fn role(law: LawId) -> &'static str {
-    if ENGINE_RULES.contains(&law) {
-        "engine"
-    } else {
-        "exact"
-    }
-}
-
 /// Every verdict id of an engine-style rule (`engine_rules[].verdict.id` of `--json`), each
 /// documented in the book (`docs/src/reference/ids.md`, "Audit verdicts").
-pub const VERDICT_IDS: [&str; 6] = [
+pub const VERDICT_IDS: [&str; 7] = [
     "gains-energy",
     "matches",
+    "redistributes",
     "dissipates-more",
     "dissipates-less",
     "breakdown",
@@ -394,12 +448,14 @@ fn percent(x: f64) -> String {
 fn judge(audit: &Audit, law: LawId) -> Judgement {
     let find = |l: LawId| audit.rows.iter().find(|r| r.law == l).expect("audited law");
     let rule = find(law);
-    let reference = find(REFERENCE);
+    let reference = find(audit.reference);
     let t0 = audit.energy_before;
     let name = match law {
         LawId::Lcp => "an engine of this kind (sequential impulses / projected Gauss–Seidel: Box2D, Chipmunk, Bullet)",
+        LawId::Sequential => "an engine of this kind (one contact at a time: the binary collisions of event-driven codes)",
         _ => "an engine of this kind (restitution and Coulomb friction on the total impulse)",
     };
+    let label = audit.reference_label;
     let (o, u) = match &rule.result {
         Ok(d) => (d, &d.velocities),
         Err(b) => {
@@ -423,7 +479,10 @@ fn judge(audit: &Audit, law: LawId) -> Judgement {
             ratio: Some(ratio),
             reference_ratio: None,
             id: "no-reference",
-            text: format!("{name}: the reference law `{REFERENCE}` has no answer here"),
+            text: format!(
+                "{name}: the reference law `{}` has no answer here",
+                audit.reference
+            ),
         };
     };
     let ref_ratio = (t0 + r.energy_change) / t0;
@@ -437,15 +496,9 @@ fn judge(audit: &Audit, law: LawId) -> Judgement {
         .max(f64::MIN_POSITIVE);
     let largest = diffs.iter().fold(0.0f64, |m, x| m.max(x.abs()));
     let reference_words = if ref_ratio <= 1.0 {
-        format!(
-            "the rigid-body answer (`energetic`) dissipates {}",
-            percent(1.0 - ref_ratio)
-        )
+        format!("{label} dissipates {}", percent(1.0 - ref_ratio))
     } else {
-        format!(
-            "the rigid-body answer (`energetic`) returns {}",
-            percent(ref_ratio - 1.0)
-        )
+        format!("{label} returns {}", percent(ref_ratio - 1.0))
     };
     let (id, text) = if o.verdict == Verdict::EnergyGained {
         (
@@ -455,11 +508,18 @@ fn judge(audit: &Audit, law: LawId) -> Judgement {
                 percent(ratio - 1.0)
             ),
         )
+    } else if largest > 1e-9 * scale && (ratio - ref_ratio).abs() <= 1e-9 {
+        (
+            "redistributes",
+            format!(
+                "{name} ends with the same kinetic energy as {label} (T⁺/T⁻ = {ratio:.4}) but shares it differently between the bodies"
+            ),
+        )
     } else if largest <= 1e-9 * scale {
         (
             "matches",
             format!(
-                "{name} gets this impact right: it matches the rigid-body answer (`energetic`) to {:.1e} (T⁺/T⁻ = {ratio:.4})",
+                "{name} gets this impact right: it matches {label} to {:.1e} (T⁺/T⁻ = {ratio:.4})",
                 largest / scale
             ),
         )
@@ -486,7 +546,8 @@ fn judge(audit: &Audit, law: LawId) -> Judgement {
         text
     } else {
         format!(
-            "{text}; its velocities after differ from the rigid-body answer by up to {:.4}",
+            "{text}; its velocities after differ from {} by up to {:.4}",
+            label.split(" (").next().unwrap_or(label),
             largest
         )
     };
@@ -526,18 +587,19 @@ fn document(audit: &Audit) -> Value {
                     m
                 }
             };
-            m.insert("role".into(), json!(role(row.law)));
+            m.insert("role".into(), json!(audit.role(row.law)));
             Value::Object(m)
         })
         .collect();
-    let engine: Vec<Value> = ENGINE_RULES
+    let engine: Vec<Value> = audit
+        .engine_rules
         .iter()
         .map(|&law| {
             let j = judge(audit, law);
             debug_assert!(VERDICT_IDS.contains(&j.id), "undocumented verdict {}", j.id);
             json!({
                 "law": j.law.as_str(),
-                "reference": REFERENCE.as_str(),
+                "reference": audit.reference.as_str(),
                 "velocities_after_difference": j.velocity_differences.as_ref().map(|d| d.iter().map(|&x| num(x)).collect::<Vec<_>>()),
                 "largest_velocity_difference": j.velocity_differences.as_ref().map(|d| num(d.iter().fold(0.0f64, |m, x| m.max(x.abs())))),
                 "energy_change_difference": j.energy_change_difference.map(num),
@@ -553,7 +615,7 @@ fn document(audit: &Audit) -> Value {
         "velocities_before": audit.before,
         "problem": audit.problem,
         "energy_before": num(t0),
-        "reference": REFERENCE.as_str(),
+        "reference": audit.reference.as_str(),
         "results": results,
         "engine_rules": engine,
     })
@@ -574,7 +636,7 @@ fn table(audit: &Audit) -> String {
     let cols: Vec<(&str, bool)> = columns.iter().map(|(s, r)| (s.as_str(), *r)).collect();
     let mut t = Table::new(&cols);
     for row in &audit.rows {
-        let mut cells = vec![row.law.to_string(), role(row.law).to_string()];
+        let mut cells = vec![row.law.to_string(), audit.role(row.law).to_string()];
         match &row.result {
             Ok(d) => {
                 cells.extend(d.velocities.iter().map(|&x| signed(x, 5)));
@@ -595,14 +657,21 @@ fn table(audit: &Audit) -> String {
         audit.description, audit.problem_line
     );
     s.push_str(&t.render());
-    s.push_str("\nexact: the Darboux–Keller integration (energetic: the rigid-body answer); engine: lcp = what sequential-impulse / PGS engines converge to (checked against pymunk), whittaker = restitution + Coulomb on the total impulse\n\n");
+    s.push('\n');
+    s.push_str(audit.legend);
+    s.push_str("\n\n");
+    let difference = format!("engine rule − {}", audit.reference);
     let mut d = Table::new(&[
-        ("engine rule − energetic", false),
+        (difference.as_str(), false),
         ("largest |Δu|", true),
         ("Δ(ΔT)", true),
         ("Δ(T+/T-)", true),
     ]);
-    let judgements: Vec<Judgement> = ENGINE_RULES.iter().map(|&l| judge(audit, l)).collect();
+    let judgements: Vec<Judgement> = audit
+        .engine_rules
+        .iter()
+        .map(|&l| judge(audit, l))
+        .collect();
     debug_assert!(judgements.iter().all(|j| VERDICT_IDS.contains(&j.id)));
     for j in &judgements {
         match (
@@ -635,7 +704,7 @@ mod tests {
     /// `no-reference` was printed by `--json` but missing from the documented list of ids.
     #[test]
     fn every_verdict_id_is_documented() {
-        let ids = include_str!("../../../../docs/src/reference/ids.md");
+        let ids = include_str!("../../../../../docs/src/reference/ids.md");
         let start = ids.find("## Audit verdicts").expect("the audit verdicts");
         let end = start + ids[start..].find("\n## ").expect("the next section");
         let section = &ids[start..end];
