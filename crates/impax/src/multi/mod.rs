@@ -47,10 +47,12 @@
 pub mod lcp;
 pub mod lzb;
 mod outcome;
-mod problem;
+pub(crate) mod problem;
 pub mod scenarios;
 pub mod sequential;
+pub mod spatial;
 mod system;
+pub(crate) mod validate;
 
 pub use outcome::{
     is_energy_gain, BinaryImpact, ContactPhase, ContactPhaseKind, ContactResult, LcpSolution,

@@ -15,7 +15,7 @@ pub mod invariant;
 pub mod laws;
 pub mod lcp;
 mod outcome;
-mod problem;
+pub(crate) mod problem;
 
 pub use darboux_keller::SpatialOptions;
 pub use invariant::{

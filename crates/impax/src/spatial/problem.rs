@@ -13,7 +13,7 @@ pub const PIVOT_TOL: f64 = 1e-11;
 
 /// Check that the symmetric `w` is positive definite beyond round-off (see
 /// [`ContactProblem3::new`]); the reason names the failing quantity with its value.
-fn positive_definite(w: &Mat3) -> Result<()> {
+pub(crate) fn positive_definite(w: &Mat3) -> Result<()> {
     const NAMES: [&str; 3] = ["t1", "t2", "n"];
     let refuse = |reason: String| {
         Err(Error::NotPositiveDefinite {

@@ -13,6 +13,7 @@ mod mechanisms;
 mod multi_contact;
 mod multi_lzb;
 mod multi_scenarios;
+mod multi_spatial;
 mod paper_liu2012;
 mod properties;
 mod regression_brach_frictionless;

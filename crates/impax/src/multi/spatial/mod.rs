@@ -1,0 +1,98 @@
+//! Spatial impacts at several contacts at once: the problem, the laws `lcp` and `sequential`,
+//! the outcome — the planar [`crate::multi`] with two tangents per contact (theory §6).
+//!
+//! `K` contacts, contact-major: `v = (v_t1,1, v_t2,1, v_n,1, …)`, `p` likewise;
+//! `v⁺ = v⁻ + W p` with `W = J M⁻¹ Jᵀ` (`3K × 3K`, symmetric positive semidefinite; a box
+//! lying flat on four corners has rank 6) and `ΔT = ½ (v⁻ + v⁺)·p`.
+//!
+//! | law | module | rule |
+//! |---|---|---|
+//! | `lcp` | [`lcp`] | the complementarity impact at every contact at once with the exact circular cone: the contacts' modes enumerated, each slip direction a root of `ŝ × v_t⁺ = 0` |
+//! | `sequential` | [`sequential`] | binary impacts with the spatial `energetic` law, the most approaching contact first |
+//!
+//! With `K = 1` every spatial contact-space law applies (its one-contact outcome carried
+//! over, [`MultiOutcome::from_outcome`]; `lzb` and `sequential` are `energetic`). `lzb` at
+//! several spatial contacts is not available yet.
+//!
+//! ```
+//! use impax::multi::spatial::{resolve, MultiProblem};
+//! use impax::LawId;
+//! // Two decoupled contacts (a block-diagonal W): each is its own one-contact problem.
+//! let p = MultiProblem::from_upper(
+//!     2,
+//!     &[3.5, 0.0, 0.0, 0.0, 0.0, 0.0, /**/ 3.5, 0.0, 0.0, 0.0, 0.0, /**/ 1.0, 0.0, 0.0, 0.0,
+//!       /**/ 2.0, 0.0, 0.0, /**/ 2.0, 0.0, /**/ 1.0],
+//!     &[0.5, 0.0, -1.0, 0.0, 0.2, -0.5],
+//!     &[0.3],
+//!     &[0.6],
+//! )
+//! .unwrap();
+//! let out = resolve(LawId::Lcp, &p).unwrap().unwrap();
+//! for c in &out.contacts {
+//!     assert!(c.velocity_after.z > 0.0);
+//! }
+//! ```
+
+pub mod lcp;
+mod outcome;
+mod problem;
+pub mod sequential;
+
+pub use outcome::{
+    BinaryImpact, ContactPhase, ContactPhaseKind, ContactResult, LcpSolution, MultiDetail,
+    MultiOutcome, MultiResolution,
+};
+pub use problem::MultiProblem;
+
+use crate::error::{Error, Result};
+use crate::law::{Breakdown, LawId};
+
+/// Resolve a spatial `problem` with `law`: `lcp` (up to [`lcp::MAX_CONTACTS`] contacts) and
+/// `sequential` for several contacts; with `K = 1` every spatial contact-space law (`lzb` is
+/// then `energetic`). Errors name the field `law`.
+pub fn resolve(law: LawId, problem: &MultiProblem) -> Result<MultiResolution> {
+    let k = problem.contacts();
+    match law {
+        LawId::Lcp if k > lcp::MAX_CONTACTS => Err(Error::Invalid {
+            field: "law".into(),
+            reason: format!(
+                "`lcp` in 3D enumerates the 3^K combinations of the contacts' modes and takes at most {} contacts, got {k} (`sequential` takes any number)",
+                lcp::MAX_CONTACTS
+            ),
+        }),
+        LawId::Lcp if k > 1 => Ok(lcp::resolve(problem)),
+        LawId::Sequential if k > 1 => Ok(sequential::resolve(problem)),
+        _ if k == 1 => {
+            let one = problem.contact(0)?;
+            let run = match law {
+                LawId::Sequential | LawId::Lzb => LawId::Energetic,
+                l => l,
+            };
+            if !LawId::SPATIAL.contains(&run) {
+                return Err(Error::Invalid {
+                    field: "law".into(),
+                    reason: format!("`{law}` has no spatial form"),
+                });
+            }
+            Ok(crate::spatial::laws::resolve(run, &one)
+                .map(|o| {
+                    let mut m = MultiOutcome::from_outcome(&o);
+                    m.law = law;
+                    m
+                })
+                .map_err(|b| Breakdown { law, ..b }))
+        }
+        LawId::Lzb => Err(Error::Invalid {
+            field: "law".into(),
+            reason: format!(
+                "`lzb` at several spatial contacts is not available yet; with {k} contacts in 3D use lcp or sequential"
+            ),
+        }),
+        _ => Err(Error::Invalid {
+            field: "law".into(),
+            reason: format!(
+                "`{law}` is a one-contact law; with {k} contacts in 3D use lcp or sequential"
+            ),
+        }),
+    }
+}
