@@ -2,9 +2,11 @@
 
 use impax::bodies::BodyOutcome;
 use impax::law::WorkSplit;
-use impax::math::Vec2;
+use impax::math::{Vec2, Vec3};
+use impax::multi::spatial as multi3;
 use impax::multi::{ContactPhase, MultiDetail, MultiOutcome, MultiProblem, MultiResolution};
 use impax::planar::{Breakdown, ContactProblem, LawDetail, Outcome, SmithReading};
+use impax::spatial::{Detail3, Phase3Kind};
 use serde_json::{json, Map, Value};
 
 /// JSON numbers: `-0` printed as `0`.
@@ -252,5 +254,138 @@ fn multi_detail(o: &MultiOutcome) -> Value {
             "steps": steps,
         }),
         MultiDetail::OneContact { detail, .. } => self::detail(detail),
+    }
+}
+
+// In 3D (`impax resolve` with a 3 × 3 W, or `--contacts K` with a 3K × 3K W; `box-flat`).
+
+/// `{t1, t2, n}`.
+pub fn vec3(v: Vec3) -> Value {
+    json!({ "t1": num(v.x), "t2": num(v.y), "n": num(v.z) })
+}
+
+/// A spatial phase: `kind`, `ends_at`, and `from_deg`, `to_deg` (slip) or `angle_deg`
+/// (resumed slip).
+pub fn phase3(kind: Phase3Kind, ends_at: f64) -> Value {
+    let mut e = json!({ "kind": kind.label(), "ends_at": num(ends_at) });
+    match kind {
+        Phase3Kind::Slip { from, to } => {
+            e["from_deg"] = json!(from.to_degrees());
+            e["to_deg"] = json!(to.to_degrees());
+        }
+        Phase3Kind::Resumed { angle } => e["angle_deg"] = json!(angle.to_degrees()),
+        _ => {}
+    }
+    e
+}
+
+/// A spatial law's `detail`.
+pub fn detail3(d: &Detail3) -> Value {
+    match *d {
+        Detail3::None => Value::Null,
+        Detail3::Brach { ratio, capped } => json!({ "ratio": ratio, "capped": capped }),
+        Detail3::Lcp { solutions } => json!({ "solutions": solutions }),
+        Detail3::DarbouxKeller {
+            slip_halt,
+            second_compression,
+            steps,
+        } => json!({
+            "slip_halt": slip_halt,
+            "second_compression": second_compression,
+            "steps": steps,
+        }),
+    }
+}
+
+fn multi3_phases(list: &[multi3::ContactPhase]) -> Value {
+    Value::Array(
+        list.iter()
+            .map(|p| match p.kind {
+                multi3::ContactPhaseKind::Off => json!({ "kind": "off", "ends_at": num(p.ends_at) }),
+                multi3::ContactPhaseKind::Impact(k) => phase3(k, p.ends_at),
+            })
+            .collect(),
+    )
+}
+
+/// The spatial problem with `K` contacts: `contacts`, `w` (3K × 3K), `v` (one `{t1, t2, n}`
+/// per contact), `friction`, `restitution`, `stiffness` (K each), `exponent`, `rank`.
+pub fn multi3_problem(p: &multi3::MultiProblem) -> Value {
+    let k = p.contacts();
+    let w = p.w();
+    json!({
+        "contacts": k,
+        "w": (0..3 * k).map(|i| (0..3 * k).map(|j| num(w[(i, j)])).collect::<Vec<_>>()).collect::<Vec<_>>(),
+        "v": (0..k).map(|j| vec3(p.contact_velocity(j))).collect::<Vec<_>>(),
+        "friction": (0..k).map(|j| p.friction(j)).collect::<Vec<_>>(),
+        "restitution": (0..k).map(|j| p.restitution(j)).collect::<Vec<_>>(),
+        "stiffness": (0..k).map(|j| p.stiffness(j)).collect::<Vec<_>>(),
+        "exponent": p.exponent(),
+        "rank": p.rank(),
+    })
+}
+
+/// One spatial law's entry with `K` contacts: the keys of [`multi_entry`], vectors as
+/// `{t1, t2, n}`.
+pub fn multi3_entry(r: &multi3::MultiResolution) -> Value {
+    match r {
+        Ok(o) => json!({
+            "law": o.law.as_str(),
+            "verdict": o.verdict.id(),
+            "contacts": o.contacts.iter().map(|c| json!({
+                "impulse": vec3(c.impulse),
+                "velocity_after": vec3(c.velocity_after),
+                "phases": multi3_phases(&c.phases),
+                "work": multi_work(&c.work),
+            })).collect::<Vec<_>>(),
+            "energy_change": num(o.energy_change),
+            "inconsistency": o.inconsistency.map_or(Value::Null, |i| json!({ "id": i.id(), "message": i.to_string() })),
+            "breakdown": Value::Null,
+            "detail": multi3_detail(o),
+        }),
+        Err(b) => json!({
+            "law": b.law.as_str(),
+            "verdict": "breakdown",
+            "contacts": Value::Null,
+            "energy_change": Value::Null,
+            "inconsistency": Value::Null,
+            "breakdown": { "id": b.reason.id(), "message": b.reason.to_string() },
+            "detail": Value::Null,
+        }),
+    }
+}
+
+/// `lcp`: `solutions` (each `energy_change` and per contact `kind`, `slip_angle_deg` for a
+/// slip, `impulse`, `velocity_after`); `sequential`: `impacts` (as in the plane, vectors
+/// `{t1, t2, n}`); one contact: the law's own detail.
+fn multi3_detail(o: &multi3::MultiOutcome) -> Value {
+    match &o.detail {
+        multi3::MultiDetail::Lcp { solutions } => json!({
+            "solutions": solutions.iter().map(|s| json!({
+                "energy_change": num(s.energy_change),
+                "contacts": (0..s.regimes.len()).map(|j| {
+                    let mut e = json!({
+                        "kind": s.regimes[j].label(),
+                        "impulse": vec3(s.impulses[j]),
+                        "velocity_after": vec3(s.velocities_after[j]),
+                    });
+                    if let multi3::ContactPhaseKind::Impact(Phase3Kind::Slip { to, .. }) = s.regimes[j] {
+                        e["slip_angle_deg"] = json!(to.to_degrees());
+                    }
+                    e
+                }).collect::<Vec<_>>(),
+            })).collect::<Vec<_>>(),
+        }),
+        multi3::MultiDetail::Sequential { impacts } => json!({
+            "impacts": impacts.iter().map(|b| json!({
+                "contact": b.contact + 1,
+                "velocity_before": vec3(b.velocity_before),
+                "impulse": vec3(b.outcome.impulse),
+                "velocity_after": vec3(b.outcome.velocity_after),
+                "phases": Value::Array(b.outcome.phases.as_slice().iter().map(|p| phase3(p.kind, p.ends_at)).collect()),
+                "energy_change": num(b.outcome.energy_change),
+            })).collect::<Vec<_>>(),
+        }),
+        multi3::MultiDetail::OneContact { detail, .. } => detail3(detail),
     }
 }

@@ -1,5 +1,6 @@
 //! The built-in systems struck at several contacts at once (their names are contracts of the
-//! command line): `rod-flat`, `rocking-block`, `cradle`, `ball-ball-wall`.
+//! command line): `rod-flat`, `rocking-block`, `cradle`, `ball-ball-wall` (planar) and
+//! `box-flat` (spatial).
 //!
 //! Each is a set of planar rigid bodies with generalized velocities `u` (per body `v_x`, `v_y`,
 //! `ω`), a diagonal mass matrix and the contacts' rows `J` derived below from the velocity of a
@@ -14,6 +15,7 @@
 //! | `rocking-block` | a uniform rectangle rocking about corner A as corner B strikes | A and B on the floor | Housner (1963): `ω⁺/ω⁻ = 1 − (3/2) sin²α`, `α = atan(b/h)`, for `e = 0` at B without slip |
 //! | `cradle` | `N` equal balls in a row, touching, the first moving at `v0` | the `N − 1` ball–ball contacts | binary impacts: `(0, …, 0, v0)`; the LCP: not that |
 //! | `ball-ball-wall` | a ball resting against a wall, struck by a second ball | wall–ball 1, ball 1–ball 2 | momentum along the wall and energy (e = 1, frictionless) |
+//! | `box-flat` | a box lying flat (3D), landing and spinning about the vertical | its four lower corners on the floor | level at `e |v_z|`; `lcp`: `ω_z⁺ = max(ω_z⁻ − μ m (1 + e) |v_z| ρ / I_z, 0)`, `ρ = √(a² + b²)` |
 
 use super::MultiImpact;
 use crate::error::{Error, Result};
@@ -21,7 +23,13 @@ use crate::mechanism::builtin::positive;
 use nalgebra::DMatrix;
 
 /// The names of the built-in multi-contact systems.
-pub const NAMES: [&str; 4] = ["rod-flat", "rocking-block", "cradle", "ball-ball-wall"];
+pub const NAMES: [&str; 5] = [
+    "rod-flat",
+    "rocking-block",
+    "cradle",
+    "ball-ball-wall",
+    "box-flat",
+];
 
 /// A built-in system at the instant of its impact, with its default coefficients.
 #[derive(Debug, Clone)]
@@ -372,6 +380,117 @@ impl BallBallWall {
             impact,
             friction: 0.0,
             restitution: 1.0,
+        })
+    }
+}
+
+/// `box-flat`: a uniform box (mass `m`, half-extents `a`, `b`, `c` along `x`, `y`, `z`;
+/// `I = m diag(b² + c², a² + c², a² + b²)/3`) lying flat on the floor `z = 0`, its centre
+/// moving at `(v_x, v_y, v_z)` and spinning about the vertical at `ω_z`; contacts at its four
+/// lower corners `r = (±a, ±b, −c)` from the centre, frame `t1 = x̂`, `t2 = ŷ`, `n = ẑ`, rows
+/// of `v + ω × r` (`u = (v, ω)`): twelve rows, six degrees of freedom, `W` of rank 6.
+///
+/// Landing without a horizontal velocity, every corner takes a quarter of
+/// `m (1 + e) |v_z|` under `lcp` and the box leaves level at `e |v_z|`; the corners slip
+/// round the vertical (each along `ω × r`, a different direction at each corner) and friction
+/// takes `μ m (1 + e) |v_z| ρ` (`ρ = √(a² + b²)`) from the spin's angular momentum `I_z ω_z`,
+/// or stops it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BoxFlat {
+    /// Mass `m` (default 1).
+    pub mass: f64,
+    /// Half-extents `(a, b, c)` (default `(0.5, 0.3, 0.2)`).
+    pub half_extents: [f64; 3],
+    /// The centre's velocity (default `(0, 0, −1)`: landing).
+    pub velocity: [f64; 3],
+    /// The spin about the vertical `ω_z` (default 2).
+    pub spin: f64,
+}
+
+impl Default for BoxFlat {
+    fn default() -> Self {
+        Self {
+            mass: 1.0,
+            half_extents: [0.5, 0.3, 0.2],
+            velocity: [0.0, 0.0, -1.0],
+            spin: 2.0,
+        }
+    }
+}
+
+impl BoxFlat {
+    /// The corners' names, in order.
+    pub const CORNERS: [&'static str; 4] = [
+        "corner (+a, +b)",
+        "corner (−a, +b)",
+        "corner (−a, −b)",
+        "corner (+a, −b)",
+    ];
+
+    /// The spatial system (default `μ = 0.3`, `e = 0.5`).
+    ///
+    /// # Errors
+    /// `mass` and the half-extents (`half-extents`) not finite and positive; the velocity
+    /// (`vx`, `vy`, `vz`) or the spin (`omega`) not finite.
+    pub fn build(&self) -> Result<MultiScenario> {
+        let m = positive("mass", self.mass)?;
+        let [a, b, c] = self.half_extents;
+        let (a, b, c) = (
+            positive("half-extents", a)?,
+            positive("half-extents", b)?,
+            positive("half-extents", c)?,
+        );
+        let v = [
+            finite("vx", self.velocity[0])?,
+            finite("vy", self.velocity[1])?,
+            finite("vz", self.velocity[2])?,
+        ];
+        let w = finite("omega", self.spin)?;
+        let corners = [(a, b), (-a, b), (-a, -b), (a, -b)];
+        let mut j = DMatrix::zeros(12, 6);
+        for (k, &(x, y)) in corners.iter().enumerate() {
+            let r = [x, y, -c];
+            // v + ω × r: row `axis` has 1 at v_axis and (r × e_axis) at ω.
+            for axis in 0..3 {
+                j[(3 * k + axis, axis)] = 1.0;
+                let mut e = [0.0; 3];
+                e[axis] = 1.0;
+                let cross = [
+                    r[1] * e[2] - r[2] * e[1],
+                    r[2] * e[0] - r[0] * e[2],
+                    r[0] * e[1] - r[1] * e[0],
+                ];
+                for q in 0..3 {
+                    j[(3 * k + axis, 3 + q)] = cross[q];
+                }
+            }
+        }
+        let inertia = [
+            m * (b * b + c * c) / 3.0,
+            m * (a * a + c * c) / 3.0,
+            m * (a * a + b * b) / 3.0,
+        ];
+        let mass = DMatrix::from_diagonal(&nalgebra::DVector::from_vec(vec![
+            m, m, m, inertia[0], inertia[1], inertia[2],
+        ]));
+        let impact = MultiImpact::spatial(
+            ["x", "y", "z", "theta_x", "theta_y", "theta_z"]
+                .map(String::from)
+                .to_vec(),
+            mass,
+            Self::CORNERS.map(String::from).to_vec(),
+            j,
+            &[v[0], v[1], v[2], 0.0, 0.0, w],
+        )?;
+        Ok(MultiScenario {
+            name: "box-flat",
+            description: format!(
+                "box lying flat landing on four corners (m = {m}, half-extents {a} × {b} × {c}; v = ({}, {}, {}), ω_z = {w})",
+                v[0], v[1], v[2]
+            ),
+            impact,
+            friction: 0.3,
+            restitution: 0.5,
         })
     }
 }

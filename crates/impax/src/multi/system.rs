@@ -12,22 +12,26 @@
 //!
 //! The rows of a contact between two bodies give the relative velocity of the second body's
 //! point with respect to the first's (so `p_j` is the impulse on the second body, `−p_j` on the
-//! first); a contact with a fixed surface gives the body point's velocity. Dependent rows (a
+//! first); a contact with a fixed surface gives the body point's velocity. A spatial system
+//! ([`MultiImpact::spatial`]) has three rows per contact (the two tangents, then the normal)
+//! and reduces to [`spatial::MultiProblem`](super::spatial::MultiProblem). Dependent rows (a
 //! rod lying flat: four rows, three degrees of freedom) make `W` singular, which
 //! [`MultiProblem`] accepts: the velocities after are then unique although the impulses are
 //! not, and `u⁺` is computed from whichever impulses the law reports (`J u⁺` does not depend
 //! on the choice; nor does `u⁺` itself, since `Jᵀ z = 0` whenever `W z = 0`).
 
-use super::{MultiProblem, MultiResolution};
+use super::{spatial, MultiProblem, MultiResolution};
 use crate::error::{Error, Num, Result};
 use crate::law::LawId;
-use crate::math::Vec2;
+use crate::math::{Vec2, Vec3};
 use crate::mechanism::{dynamics, Mechanism};
 use nalgebra::{Cholesky, DMatrix, DVector, Dyn};
 
 /// A system at the instant of an impact at `K` contacts (module docs).
 #[derive(Debug, Clone)]
 pub struct MultiImpact {
+    /// Rows per contact: 2 (planar) or 3 (spatial).
+    dim: usize,
     coordinates: Vec<String>,
     contacts: Vec<String>,
     mass: DMatrix<f64>,
@@ -36,11 +40,12 @@ pub struct MultiImpact {
     u: DVector<f64>,
 }
 
-/// The result of one law on a [`MultiImpact`].
+/// The result of one law on a [`MultiImpact`] (planar; `SystemOutcome<spatial::MultiResolution>`
+/// for a spatial system).
 #[derive(Debug, Clone)]
-pub struct SystemOutcome {
+pub struct SystemOutcome<R = MultiResolution> {
     /// The contact-space result (or why the law does not apply).
-    pub resolution: MultiResolution,
+    pub resolution: R,
     /// `u⁺ = u⁻ + M⁻¹ Jᵀ p` (when the law applies).
     pub velocities_after: Option<Vec<f64>>,
     /// `½ u⁺ᵀ M u⁺ − ½ u⁻ᵀ M u⁻` (when the law applies): the contact-space `ΔT` up to
@@ -58,6 +63,37 @@ impl MultiImpact {
     /// non-finite entries, `M` not symmetric positive definite (`mass`), a kinetic energy
     /// above `1e300` (`u`).
     pub fn new(
+        coordinates: Vec<String>,
+        mass: DMatrix<f64>,
+        contacts: Vec<String>,
+        jacobian: DMatrix<f64>,
+        u: &[f64],
+    ) -> Result<Self> {
+        Self::with_rows(2, coordinates, mass, contacts, jacobian, u)
+    }
+
+    /// A spatial system: as [`MultiImpact::new`] with three rows per contact (`J`: `3K × n`,
+    /// contact `j`'s tangent rows `3j`, `3j + 1` and its normal row `3j + 2`).
+    ///
+    /// # Errors
+    /// As [`MultiImpact::new`].
+    pub fn spatial(
+        coordinates: Vec<String>,
+        mass: DMatrix<f64>,
+        contacts: Vec<String>,
+        jacobian: DMatrix<f64>,
+        u: &[f64],
+    ) -> Result<Self> {
+        Self::with_rows(3, coordinates, mass, contacts, jacobian, u)
+    }
+
+    /// Whether the system is spatial (three rows per contact).
+    pub fn is_spatial(&self) -> bool {
+        self.dim == 3
+    }
+
+    fn with_rows(
+        dim: usize,
         coordinates: Vec<String>,
         mass: DMatrix<f64>,
         contacts: Vec<String>,
@@ -85,12 +121,18 @@ impl MultiImpact {
                 format!("expected {n} names, got {}", coordinates.len()),
             ));
         }
-        if contacts.is_empty() || jacobian.nrows() != 2 * contacts.len() || jacobian.ncols() != n {
+        if contacts.is_empty() || jacobian.nrows() != dim * contacts.len() || jacobian.ncols() != n
+        {
             return Err(bad(
                 "jacobian",
                 format!(
-                    "must be 2K × n = {} × {n} (tangent and normal rows of each of {} contacts), got {} × {}",
-                    2 * contacts.len(),
+                    "must be {dim}K × n = {} × {n} ({} of each of {} contacts), got {} × {}",
+                    dim * contacts.len(),
+                    if dim == 2 {
+                        "tangent and normal rows"
+                    } else {
+                        "two tangent rows and the normal row"
+                    },
                     contacts.len(),
                     jacobian.nrows(),
                     jacobian.ncols()
@@ -131,6 +173,7 @@ impl MultiImpact {
             });
         }
         Ok(Self {
+            dim,
             coordinates,
             contacts,
             mass,
@@ -246,7 +289,32 @@ impl MultiImpact {
     /// # Errors
     /// As [`MultiProblem::new`] (e.g. no contact approaching).
     pub fn problem(&self, friction: &[f64], restitution: &[f64]) -> Result<MultiProblem> {
+        if self.dim == 3 {
+            return Err(Error::Invalid {
+                field: "jacobian".into(),
+                reason: "the system is spatial (three rows per contact): use problem3".into(),
+            });
+        }
         MultiProblem::new(
+            self.inverse_inertia(),
+            &self.contact_velocities(),
+            friction,
+            restitution,
+        )
+    }
+
+    /// The spatial contact-space problem of a spatial system ([`MultiImpact::spatial`]).
+    ///
+    /// # Errors
+    /// As [`spatial::MultiProblem::new`]; a planar system (`jacobian`).
+    pub fn problem3(&self, friction: &[f64], restitution: &[f64]) -> Result<spatial::MultiProblem> {
+        if self.dim != 3 {
+            return Err(Error::Invalid {
+                field: "jacobian".into(),
+                reason: "the system is planar (two rows per contact): use problem".into(),
+            });
+        }
+        spatial::MultiProblem::new(
             self.inverse_inertia(),
             &self.contact_velocities(),
             friction,
@@ -256,10 +324,49 @@ impl MultiImpact {
 
     /// `u⁺ = u⁻ + M⁻¹ Jᵀ p` for the impulses `p` (one per contact).
     pub fn velocities_after(&self, p: &[Vec2]) -> Vec<f64> {
-        let flat = DVector::from_iterator(2 * p.len(), p.iter().flat_map(|x| [x.x, x.y]));
+        self.after_flat(DVector::from_iterator(
+            2 * p.len(),
+            p.iter().flat_map(|x| [x.x, x.y]),
+        ))
+    }
+
+    /// `u⁺ = u⁻ + M⁻¹ Jᵀ p` for the impulses `p` of a spatial system.
+    pub fn velocities_after3(&self, p: &[Vec3]) -> Vec<f64> {
+        self.after_flat(DVector::from_iterator(
+            3 * p.len(),
+            p.iter().flat_map(|x| [x.x, x.y, x.z]),
+        ))
+    }
+
+    fn after_flat(&self, flat: DVector<f64>) -> Vec<f64> {
         (&self.u + self.chol.solve(&(self.jacobian.transpose() * flat)))
             .as_slice()
             .to_vec()
+    }
+
+    /// [`MultiImpact::resolve`] for a spatial system and problem ([`MultiImpact::problem3`]).
+    ///
+    /// # Errors
+    /// As [`spatial::resolve`].
+    pub fn resolve3(
+        &self,
+        law: LawId,
+        problem: &spatial::MultiProblem,
+    ) -> Result<SystemOutcome<spatial::MultiResolution>> {
+        let resolution = spatial::resolve(law, problem)?;
+        let (velocities_after, energy_change_from_velocities) = match &resolution {
+            Ok(o) => {
+                let after = self.velocities_after3(&o.impulses());
+                let de = self.kinetic_energy(&after) - self.energy_before();
+                (Some(after), Some(de))
+            }
+            Err(_) => (None, None),
+        };
+        Ok(SystemOutcome {
+            resolution,
+            velocities_after,
+            energy_change_from_velocities,
+        })
     }
 
     /// Resolve `problem` (built by [`MultiImpact::problem`]) with `law` and map the impulses

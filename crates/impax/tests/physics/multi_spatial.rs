@@ -332,3 +332,43 @@ fn the_dispatcher_names_the_law() {
     }
     let _ = Planar::from_upper(1, &[1.0, 0.0, 1.0], &[0.0, -1.0], &[0.0], &[1.0]).unwrap();
 }
+
+/// The built-in `box-flat` spinning as it lands: `lcp` lifts it level at `e |v_z|`, the
+/// corners slip round the vertical and friction takes `μ m (1 + e) |v_z| ρ` from `I_z ω_z`
+/// (`ρ = √(a² + b²)`), or stops the spin; `sequential` never gains energy.
+#[test]
+fn box_flat_spin_under_lcp() {
+    use impax::multi::scenarios::BoxFlat;
+    for (spin, mu, e) in [(2.0, 0.3, 0.5), (5.0, 0.1, 1.0), (0.5, 1.0, 0.0), (-3.0, 0.2, 0.7)] {
+        let bx = BoxFlat {
+            spin,
+            ..BoxFlat::default()
+        };
+        let sc = bx.build().unwrap();
+        let p = sc.impact.problem3(&[mu], &[e]).unwrap();
+        assert_eq!(p.rank(), 6);
+        let r = sc.impact.resolve3(LawId::Lcp, &p).unwrap();
+        let out = r.resolution.as_ref().unwrap();
+        let after = r.velocities_after.unwrap();
+        let [a, b, _] = bx.half_extents;
+        let m = bx.mass;
+        let iz = m * (a * a + b * b) / 3.0;
+        let pn = m * (1.0 + e);
+        let slowed = spin.abs() - mu * pn * a.hypot(b) / iz;
+        let expect_spin = slowed.max(0.0) * spin.signum();
+        let expect = [0.0, 0.0, e, 0.0, 0.0, expect_spin];
+        for i in 0..6 {
+            assert!(
+                (after[i] - expect[i]).abs() < 1e-10,
+                "ω = {spin}, μ = {mu}, e = {e}: u⁺ = {after:?}, expected {expect:?}"
+            );
+        }
+        assert!(
+            (r.energy_change_from_velocities.unwrap() - out.energy_change).abs() < 1e-12,
+            "ΔT two ways"
+        );
+        let seq = sc.impact.resolve3(LawId::Sequential, &p).unwrap();
+        let seq = seq.resolution.unwrap();
+        assert!(seq.energy_change <= 1e-12, "{}", seq.energy_change);
+    }
+}

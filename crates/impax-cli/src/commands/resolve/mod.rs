@@ -1,7 +1,8 @@
 //! `impax resolve`: a contact-space problem directly — planar ([`planar`]), spatial
-//! ([`spatial`]), or planar with several contacts ([`multi`]).
+//! ([`spatial`]), or with several contacts, planar ([`multi`]) or spatial ([`multi_spatial`]).
 
 mod multi;
+mod multi_spatial;
 mod planar;
 mod spatial;
 

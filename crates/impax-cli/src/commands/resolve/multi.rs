@@ -18,11 +18,16 @@ pub fn run(args: &ResolveArgs, k: usize, out: &mut Vec<u8>) -> CliResult<()> {
     }
     let n = k.checked_mul(2).ok_or_else(|| too_many(k))?;
     let count = n.checked_mul(n + 1).ok_or_else(|| too_many(k))? / 2;
+    let n3 = k.checked_mul(3).ok_or_else(|| too_many(k))?;
+    let count3 = n3.checked_mul(n3 + 1).ok_or_else(|| too_many(k))? / 2;
     let given = args.w.split(',').count();
+    if given == count3 {
+        return super::multi_spatial::run(args, k, out);
+    }
     if given != count {
         return Err(CliError::input(format!(
-            "--w: expected {count} comma-separated numbers for {k} contact{} (the upper triangle of the {n} × {n} W, row by row: t1, n1, t2, n2, …), got {given}",
-            if k == 1 { "" } else { "s" }
+            "--w: expected {count} comma-separated numbers for {k} planar contact{s} (the upper triangle of the {n} × {n} W, row by row: t1, n1, t2, n2, …) or {count3} in 3D (the {n3} × {n3} W: t1_1, t2_1, n_1, t1_2, …), got {given}",
+            s = if k == 1 { "" } else { "s" }
         )));
     }
     let w = parse_numbers("w", &args.w, count, "the upper triangle of W")?;
@@ -32,23 +37,7 @@ pub fn run(args: &ResolveArgs, k: usize, out: &mut Vec<u8>) -> CliResult<()> {
         n,
         "VT1,VN1,…: tangent and normal of each contact",
     )?;
-    for (flag, values) in [
-        ("friction", &args.friction),
-        ("restitution", &args.restitution),
-    ] {
-        if values.len() != 1 && values.len() != k {
-            return Err(CliError::input(format!(
-                "--{flag}: expected 1 number (every contact) or {k} (one per contact), got {}",
-                values.len()
-            )));
-        }
-        if let Some(x) = values.iter().find(|x| !x.is_finite()) {
-            return Err(CliError::input(format!(
-                "--{flag}: must be finite numbers, got {}",
-                Plain(*x)
-            )));
-        }
-    }
+    check_coefficients(args, k)?;
     let mut problem = MultiProblem::from_upper(k, &w, &v, &args.friction, &args.restitution)?;
     if !args.stiffness.is_empty() {
         problem = problem.with_stiffness(&args.stiffness)?;
@@ -56,15 +45,7 @@ pub fn run(args: &ResolveArgs, k: usize, out: &mut Vec<u8>) -> CliResult<()> {
     if let Some(eta) = args.exponent {
         problem = problem.with_exponent(eta)?;
     }
-    let laws = if args.law.is_empty() {
-        // Every law that takes K contacts (`lcp` enumerates 4^K modes: up to 6).
-        LawId::MULTI_CONTACT
-            .into_iter()
-            .filter(|l| *l != LawId::Lcp || k <= lcp::MAX_CONTACTS)
-            .collect()
-    } else {
-        parse_laws(&args.law)?
-    };
+    let laws = laws(args, k, lcp::MAX_CONTACTS, &LawId::MULTI_CONTACT)?;
     let mut results: Vec<(LawId, MultiResolution)> = Vec::new();
     for &law in &laws {
         results.push((law, law.resolve_multi(&problem)?));
@@ -86,12 +67,51 @@ pub fn run(args: &ResolveArgs, k: usize, out: &mut Vec<u8>) -> CliResult<()> {
     Ok(())
 }
 
-fn too_many(k: usize) -> CliError {
+/// `--friction` and `--restitution`: one number for every contact or `K`, finite.
+pub(super) fn check_coefficients(args: &ResolveArgs, k: usize) -> CliResult<()> {
+    for (flag, values) in [
+        ("friction", &args.friction),
+        ("restitution", &args.restitution),
+    ] {
+        if values.len() != 1 && values.len() != k {
+            return Err(CliError::input(format!(
+                "--{flag}: expected 1 number (every contact) or {k} (one per contact), got {}",
+                values.len()
+            )));
+        }
+        if let Some(x) = values.iter().find(|x| !x.is_finite()) {
+            return Err(CliError::input(format!(
+                "--{flag}: must be finite numbers, got {}",
+                Plain(*x)
+            )));
+        }
+    }
+    Ok(())
+}
+
+/// `--law`, or every law of `all` that takes `k` contacts (`lcp` up to `lcp_max`).
+pub(super) fn laws(
+    args: &ResolveArgs,
+    k: usize,
+    lcp_max: usize,
+    all: &[LawId],
+) -> CliResult<Vec<LawId>> {
+    Ok(if args.law.is_empty() {
+        all.iter()
+            .copied()
+            .filter(|l| *l != LawId::Lcp || k <= lcp_max)
+            .collect()
+    } else {
+        parse_laws(&args.law)?
+    })
+}
+
+pub(super) fn too_many(k: usize) -> CliError {
     CliError::input(format!("--contacts: {k} contacts are too many"))
 }
 
 /// `a | b | c`, or `a` when every contact has the same value.
-fn per_contact(values: impl Iterator<Item = f64>) -> String {
+pub(super) fn per_contact(values: impl Iterator<Item = f64>) -> String {
     let v: Vec<f64> = values.collect();
     if v.windows(2).all(|w| w[0] == w[1]) {
         Plain(v[0]).to_string()

@@ -12,11 +12,6 @@ use impax::spatial::{
 use impax::LawId;
 use serde_json::{json, Value};
 
-/// JSON of a 3D vector in the contact frame.
-fn vec3_json(v: impax::math::Vec3) -> Value {
-    json!({ "t1": json::num(v.x), "t2": json::num(v.y), "n": json::num(v.z) })
-}
-
 /// The JSON entry of a spatial outcome (the planar entry's keys, plus `hodograph` for the
 /// Darboux–Keller laws and the problem's `invariant_rays`).
 fn spatial_entry(
@@ -30,8 +25,8 @@ fn spatial_entry(
     match r {
         Ok(o) => {
             m.insert("verdict".into(), json!(o.verdict.id()));
-            m.insert("impulse".into(), vec3_json(o.impulse));
-            m.insert("velocity_after".into(), vec3_json(o.velocity_after));
+            m.insert("impulse".into(), json::vec3(o.impulse));
+            m.insert("velocity_after".into(), json::vec3(o.velocity_after));
             m.insert(
                 "compression_impulse".into(),
                 o.compression_impulse.map_or(Value::Null, json::num),
@@ -49,19 +44,7 @@ fn spatial_entry(
                 .phases
                 .as_slice()
                 .iter()
-                .map(|ph| {
-                    let mut e =
-                        json!({ "kind": ph.kind.label(), "ends_at": json::num(ph.ends_at) });
-                    match ph.kind {
-                        Phase3Kind::Slip { from, to } => {
-                            e["from_deg"] = json!(from.to_degrees());
-                            e["to_deg"] = json!(to.to_degrees());
-                        }
-                        Phase3Kind::Resumed { angle } => e["angle_deg"] = json!(angle.to_degrees()),
-                        _ => {}
-                    }
-                    e
-                })
+                .map(|ph| json::phase3(ph.kind, ph.ends_at))
                 .collect();
             m.insert("phases".into(), Value::Array(phases));
             m.insert(
@@ -71,20 +54,7 @@ fn spatial_entry(
                     |i| json!({ "id": i.id(), "message": i.to_string() }),
                 ),
             );
-            let detail = match o.detail {
-                Detail3::None => Value::Null,
-                Detail3::Brach { ratio, capped } => json!({ "ratio": ratio, "capped": capped }),
-                Detail3::Lcp { solutions } => json!({ "solutions": solutions }),
-                Detail3::DarbouxKeller {
-                    slip_halt,
-                    second_compression,
-                    steps,
-                } => json!({
-                    "slip_halt": slip_halt,
-                    "second_compression": second_compression,
-                    "steps": steps,
-                }),
-            };
+            let detail = json::detail3(&o.detail);
             m.insert("detail".into(), detail);
             let hodograph = if law.is_darboux_keller() {
                 impax::spatial::laws::hodograph(problem, law)
@@ -132,8 +102,8 @@ pub(crate) fn lcp_solutions(problem: &ContactProblem3) -> Value {
             .map(|s| {
                 let mut e = json!({
                     "kind": s.kind.label(),
-                    "impulse": vec3_json(s.impulse),
-                    "velocity_after": vec3_json(s.velocity_after),
+                    "impulse": json::vec3(s.impulse),
+                    "velocity_after": json::vec3(s.velocity_after),
                     "energy_change": json::num(s.energy_change),
                 });
                 if let Phase3Kind::Slip { to, .. } = s.kind {
