@@ -181,14 +181,25 @@ pub struct MultiFlags {
     /// rod-flat: the rod's length (default 1).
     #[arg(long, allow_hyphen_values = true)]
     pub length: Option<f64>,
-    /// rod-flat: the centre's horizontal velocity (default 0).
+    /// rod-flat, box-flat: the centre's horizontal velocity (default 0).
     #[arg(long, allow_hyphen_values = true)]
     pub vx: Option<f64>,
-    /// rod-flat: the centre's vertical velocity (default −1).
+    /// rod-flat: the centre's vertical velocity (default −1); box-flat: horizontal (default 0).
     #[arg(long, allow_hyphen_values = true)]
     pub vy: Option<f64>,
+    /// box-flat: the centre's vertical velocity (default −1).
+    #[arg(long, allow_hyphen_values = true)]
+    pub vz: Option<f64>,
+    /// box-flat: the half-extents a, b, c along x, y, z (default 0.5,0.3,0.2).
+    #[arg(
+        long,
+        value_delimiter = ',',
+        allow_hyphen_values = true,
+        value_name = "A,B,C"
+    )]
+    pub half_extents: Option<Vec<f64>>,
     /// rod-flat: the angular velocity (default 0); rocking-block: the angular velocity about
-    /// corner A, negative (default −1).
+    /// corner A, negative (default −1); box-flat: the spin about the vertical (default 2).
     #[arg(long, allow_hyphen_values = true)]
     pub omega: Option<f64>,
     /// rocking-block: the half-width b (default 0.2).
@@ -228,6 +239,8 @@ impl MultiFlags {
             ("length", self.length.is_some()),
             ("vx", self.vx.is_some()),
             ("vy", self.vy.is_some()),
+            ("vz", self.vz.is_some()),
+            ("half-extents", self.half_extents.is_some()),
             ("omega", self.omega.is_some()),
             ("half-width", self.half_width.is_some()),
             ("half-height", self.half_height.is_some()),

@@ -130,3 +130,88 @@ fn flags_that_do_not_apply_are_refused() {
         assert!(err.contains(expected), "{args:?}: {err}");
     }
 }
+
+/// `box-flat` in 3D: `lcp` lifts the box level at `e |v_z|` and takes
+/// `μ m (1 + e) |v_z| ρ / I_z` from its spin (`ρ = √(a² + b²)`); the JSON has the spatial keys.
+#[test]
+fn box_flat_from_the_command_line() {
+    let doc = json(&[
+        "compare",
+        "box-flat",
+        "--omega",
+        "6",
+        "--friction",
+        "0.1",
+        "--restitution",
+        "0.8",
+        "--half-extents",
+        "0.4,0.3,0.1",
+        "--json",
+    ]);
+    assert_eq!(doc["scenario"], "box-flat");
+    assert_eq!(doc["problem"]["rank"], 6);
+    assert_eq!(doc["problem"]["w"].as_array().unwrap().len(), 12);
+    let lcp = law(&doc, "lcp");
+    let u: Vec<f64> = lcp["velocities_after"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(f)
+        .collect();
+    let iz = (0.16 + 0.09) / 3.0;
+    let spin = 6.0 - 0.1 * 1.8 * 0.5 / iz;
+    let expect = [0.0, 0.0, 0.8, 0.0, 0.0, spin];
+    for i in 0..6 {
+        assert!((u[i] - expect[i]).abs() < 1e-10, "{u:?}");
+    }
+    for c in lcp["contacts"].as_array().unwrap() {
+        assert!((f(&c["impulse"]["n"]) - 0.45).abs() < 1e-12);
+        assert!(c["impulse"].get("t2").is_some());
+    }
+    assert!(f(&law(&doc, "sequential")["energy_ratio"]) <= 1.0);
+    assert!(fails(&["compare", "box-flat", "--vz", "1"]).contains("vz"));
+    assert!(fails(&["compare", "box-flat", "--half-extents", "1,2"]).contains("--half-extents"));
+    assert!(fails(&["compare", "box-flat", "--balls", "3"]).contains("--balls"));
+    assert!(fails(&["compare", "box-flat", "--law", "lzb"]).contains("law"));
+    assert!(fails(&["audit", "box-flat"]).contains("box-flat"));
+}
+
+/// `impax resolve --contacts 2` with a 6 × 6 W is spatial: the cradle of point masses.
+#[test]
+fn resolve_contacts_in_3d() {
+    let w = "2,0,0,0,0,0,2,0,0,0,0,2,0,0,-1,2,0,0,2,0,2";
+    let doc = json(&[
+        "resolve",
+        "--contacts",
+        "2",
+        "--w",
+        w,
+        "--v",
+        "0,0,-1,0,0,0",
+        "--friction",
+        "0",
+        "--restitution",
+        "1",
+        "--json",
+    ]);
+    let lcp = &doc["results"][0];
+    assert_eq!(lcp["law"], "lcp");
+    assert!((f(&lcp["contacts"][0]["impulse"]["n"]) - 4.0 / 3.0).abs() < 1e-12);
+    let seq = &doc["results"][1];
+    assert!((f(&seq["contacts"][1]["velocity_after"]["n"]) - 1.0).abs() < 1e-12);
+    assert_eq!(doc["problem"]["v"][0]["n"], -1.0);
+    let err = fails(&[
+        "resolve",
+        "--contacts",
+        "2",
+        "--w",
+        w,
+        "--v",
+        "0,0,-1,0,0",
+        "--friction",
+        "0",
+        "--restitution",
+        "1",
+    ]);
+    assert!(err.contains("--v") || err.contains("v:"), "{err}");
+}

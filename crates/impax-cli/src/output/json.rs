@@ -301,7 +301,9 @@ fn multi3_phases(list: &[multi3::ContactPhase]) -> Value {
     Value::Array(
         list.iter()
             .map(|p| match p.kind {
-                multi3::ContactPhaseKind::Off => json!({ "kind": "off", "ends_at": num(p.ends_at) }),
+                multi3::ContactPhaseKind::Off => {
+                    json!({ "kind": "off", "ends_at": num(p.ends_at) })
+                }
                 multi3::ContactPhaseKind::Impact(k) => phase3(k, p.ends_at),
             })
             .collect(),

@@ -339,7 +339,12 @@ fn the_dispatcher_names_the_law() {
 #[test]
 fn box_flat_spin_under_lcp() {
     use impax::multi::scenarios::BoxFlat;
-    for (spin, mu, e) in [(2.0, 0.3, 0.5), (5.0, 0.1, 1.0), (0.5, 1.0, 0.0), (-3.0, 0.2, 0.7)] {
+    for (spin, mu, e) in [
+        (2.0, 0.3, 0.5),
+        (5.0, 0.1, 1.0),
+        (0.5, 1.0, 0.0),
+        (-3.0, 0.2, 0.7),
+    ] {
         let bx = BoxFlat {
             spin,
             ..BoxFlat::default()

@@ -1,19 +1,22 @@
 //! `impax compare NAME` for the built-in systems struck at several contacts (`rod-flat`,
-//! `rocking-block`, `cradle`, `ball-ball-wall`; `impax::multi::scenarios`): every multi-contact
-//! law side by side with the generalized velocities after and the energy ratio.
+//! `rocking-block`, `cradle`, `ball-ball-wall`, and in 3D `box-flat`;
+//! `impax::multi::scenarios`): every multi-contact law side by side with the generalized
+//! velocities after and the energy ratio.
 
 use crate::cli::{CompareArgs, MultiFlags};
 use crate::input::{CliError, CliResult};
 use crate::output::fmt::{signed, Plain, Table};
 use crate::output::json::{self, num};
 use crate::sources::scenario::parse_laws;
-use impax::multi::scenarios::{BallBallWall, Cradle, RockingBlock, RodFlat, NAMES};
-use impax::multi::{lcp, MultiProblem, MultiScenario, SystemOutcome};
+use impax::law::{Breakdown, Inconsistency, Verdict};
+use impax::multi::scenarios::{BallBallWall, BoxFlat, Cradle, RockingBlock, RodFlat, NAMES};
+use impax::multi::spatial as multi3;
+use impax::multi::{lcp, MultiProblem, MultiScenario};
 use impax::LawId;
 use serde_json::{json, Value};
 
 /// The built-ins' names (for [`crate::sources::Source::classify`]'s callers).
-pub const BUILT_INS: [&str; 4] = NAMES;
+pub const BUILT_INS: [&str; 5] = NAMES;
 
 /// The flags of `lzb`'s force law, which every built-in takes.
 const FORCE_LAW: [&str; 2] = ["stiffness", "exponent"];
@@ -25,6 +28,7 @@ fn accepted(name: &str) -> &'static [&'static str] {
         "rod-flat" => &["mass", "length", "vx", "vy", "omega"],
         "rocking-block" => &["mass", "half-width", "half-height", "omega"],
         "cradle" => &["balls", "mass", "radius", "v0"],
+        "box-flat" => &["mass", "half-extents", "vx", "vy", "vz", "omega"],
         _ => &["mass", "radius", "v0", "angle-deg"],
     }
 }
@@ -109,6 +113,29 @@ pub fn built_in(
             }
             .build()?
         }
+        "box-flat" => {
+            let d = BoxFlat::default();
+            let half_extents = match &f.half_extents {
+                None => d.half_extents,
+                Some(h) => <[f64; 3]>::try_from(h.as_slice()).map_err(|_| {
+                    CliError::input(format!(
+                        "--half-extents: expected 3 numbers A,B,C, got {}",
+                        h.len()
+                    ))
+                })?,
+            };
+            BoxFlat {
+                mass: mass.unwrap_or(d.mass),
+                half_extents,
+                velocity: [
+                    f.vx.unwrap_or(d.velocity[0]),
+                    f.vy.unwrap_or(d.velocity[1]),
+                    f.vz.unwrap_or(d.velocity[2]),
+                ],
+                spin: f.omega.unwrap_or(d.spin),
+            }
+            .build()?
+        }
         _ => {
             let d = BallBallWall::default();
             BallBallWall {
@@ -171,42 +198,211 @@ pub fn problem(
 
 pub fn run(name: &str, args: &CompareArgs, out: &mut Vec<u8>) -> CliResult<()> {
     let sc = build(name, args)?;
-    let problem = problem(name, &sc, args.friction, args.restitution, &args.multi)?;
-    let laws = laws(&args.law, problem.contacts())?;
-    let results = laws
-        .iter()
-        .map(|&law| Ok((law, sc.impact.resolve(law, &problem)?)))
-        .collect::<CliResult<Vec<_>>>()?;
+    let (view, rows) = resolve_all(
+        name,
+        &sc,
+        args.friction,
+        args.restitution,
+        &args.multi,
+        &args.law,
+    )?;
     let text = if args.json {
-        serde_json::to_string_pretty(&document(&sc, &problem, &results))
-            .map_err(CliError::failure)?
+        serde_json::to_string_pretty(&document(&sc, &view, &rows)).map_err(CliError::failure)?
             + "\n"
     } else {
-        table(&sc, &problem, &results)
+        table(&sc, &view, &rows)
     };
     out.extend_from_slice(text.as_bytes());
     Ok(())
 }
 
+/// What the tables and documents show of one law's result, planar or spatial.
+pub struct LawRow {
+    /// The law.
+    pub law: LawId,
+    /// Its numbers, or why it broke down.
+    pub result: Result<RowNumbers, Breakdown>,
+    /// The entry of `impax resolve --contacts K --json`.
+    pub entry: Value,
+    /// `½ u⁺ᵀ M u⁺ − ½ u⁻ᵀ M u⁻`.
+    pub energy_change_from_velocities: Option<f64>,
+}
+
+/// The numbers of a law that applied.
+pub struct RowNumbers {
+    /// The generalized velocities after.
+    pub velocities_after: Vec<f64>,
+    /// Each contact's normal impulse.
+    pub normal_impulses: Vec<f64>,
+    /// Each contact's phases in words.
+    pub phases: Vec<String>,
+    /// `ΔT`.
+    pub energy_change: f64,
+    /// The verdict.
+    pub verdict: Verdict,
+    /// A contradicted assumption.
+    pub inconsistency: Option<Inconsistency>,
+}
+
+/// What the header shows of the contact-space problem.
+pub struct ProblemView {
+    /// `1 end A (0, -1), 2 …`.
+    pub contacts: String,
+    /// `(v_t, v_n)` or `(v_t1, v_t2, v_n)`.
+    pub frame: &'static str,
+    /// The size of `W` (`dK`) and its rank.
+    pub size: usize,
+    /// The rank of `W`.
+    pub rank: usize,
+    /// The first contact's μ and e.
+    pub friction: f64,
+    /// The first contact's e.
+    pub restitution: f64,
+    /// `lzb`'s force law when not the default.
+    pub force_law: String,
+    /// The problem as JSON.
+    pub json: Value,
+}
+
+/// Every law (`--law`, or those that take the built-in's contacts) on the built-in, planar or
+/// spatial.
+pub fn resolve_all(
+    name: &str,
+    sc: &MultiScenario,
+    friction: Option<f64>,
+    restitution: Option<f64>,
+    f: &MultiFlags,
+    law_ids: &[String],
+) -> CliResult<(ProblemView, Vec<LawRow>)> {
+    let names = sc.impact.contacts();
+    if sc.impact.is_spatial() {
+        let mut p = sc
+            .impact
+            .problem3(
+                &[friction.unwrap_or(sc.friction)],
+                &[restitution.unwrap_or(sc.restitution)],
+            )
+            .map_err(|e| match e {
+                impax::Error::NotApproaching { value, .. } => CliError::input(format!(
+                    "vz: the box does not come down (its corners' normal velocity is {}): `{name}` strikes only while it lands",
+                    short(value)
+                )),
+                other => other.into(),
+            })?;
+        if let Some(kappa) = &f.stiffness {
+            p = p.with_stiffness(kappa)?;
+        }
+        if let Some(eta) = f.exponent {
+            p = p.with_exponent(eta)?;
+        }
+        let k = p.contacts();
+        let laws = if law_ids.is_empty() {
+            [LawId::Lcp, LawId::Sequential]
+                .into_iter()
+                .filter(|l| *l != LawId::Lcp || k <= multi3::lcp::MAX_CONTACTS)
+                .collect()
+        } else {
+            parse_laws(law_ids)?
+        };
+        let mut rows = Vec::new();
+        for law in laws {
+            let r = sc.impact.resolve3(law, &p)?;
+            rows.push(LawRow {
+                law,
+                entry: json::multi3_entry(&r.resolution),
+                energy_change_from_velocities: r.energy_change_from_velocities,
+                result: r.resolution.map(|o| RowNumbers {
+                    velocities_after: r.velocities_after.unwrap_or_default(),
+                    normal_impulses: o.contacts.iter().map(|c| c.impulse.z).collect(),
+                    phases: o.contacts.iter().map(|c| c.phase_summary()).collect(),
+                    energy_change: o.energy_change,
+                    verdict: o.verdict,
+                    inconsistency: o.inconsistency,
+                }),
+            });
+        }
+        let view = ProblemView {
+            contacts: (0..k)
+                .map(|j| {
+                    let c = p.contact_velocity(j);
+                    format!(
+                        "{} {} ({}, {}, {})",
+                        j + 1,
+                        names[j],
+                        short(c.x),
+                        short(c.y),
+                        short(c.z)
+                    )
+                })
+                .collect::<Vec<_>>()
+                .join(", "),
+            frame: "(v_t1, v_t2, v_n)",
+            size: 3 * k,
+            rank: p.rank(),
+            friction: p.friction(0),
+            restitution: p.restitution(0),
+            force_law: String::new(),
+            json: json::multi3_problem(&p),
+        };
+        return Ok((view, rows));
+    }
+    let p = problem(name, sc, friction, restitution, f)?;
+    let k = p.contacts();
+    let mut rows = Vec::new();
+    for law in laws(law_ids, k)? {
+        let r = sc.impact.resolve(law, &p)?;
+        rows.push(LawRow {
+            law,
+            entry: json::multi_entry(&r.resolution),
+            energy_change_from_velocities: r.energy_change_from_velocities,
+            result: r.resolution.map(|o| RowNumbers {
+                velocities_after: r.velocities_after.unwrap_or_default(),
+                normal_impulses: o.contacts.iter().map(|c| c.impulse.y).collect(),
+                phases: o.contacts.iter().map(|c| c.phase_summary()).collect(),
+                energy_change: o.energy_change,
+                verdict: o.verdict,
+                inconsistency: o.inconsistency,
+            }),
+        });
+    }
+    let view = ProblemView {
+        contacts: (0..k)
+            .map(|j| {
+                let c = p.contact_velocity(j);
+                format!("{} {} ({}, {})", j + 1, names[j], short(c.x), short(c.y))
+            })
+            .collect::<Vec<_>>()
+            .join(", "),
+        frame: "(v_t, v_n)",
+        size: 2 * k,
+        rank: p.rank(),
+        friction: p.friction(0),
+        restitution: p.restitution(0),
+        force_law: crate::commands::resolve::force_law(&p),
+        json: json::multi_problem(&p),
+    };
+    Ok((view, rows))
+}
+
 /// The JSON document: `scenario`, `description`, `coordinates`, `u_before`, `contact_names`,
 /// `problem`, `energy_before`, `results` (each `impax resolve --contacts`'s entry plus
 /// `velocities_after`, `energy_after`, `energy_ratio`, `energy_change_from_velocities`).
-pub fn document(
-    sc: &MultiScenario,
-    problem: &MultiProblem,
-    results: &[(LawId, SystemOutcome)],
-) -> Value {
+pub fn document(sc: &MultiScenario, view: &ProblemView, rows: &[LawRow]) -> Value {
     let t0 = sc.impact.energy_before();
-    let entries: Vec<Value> = results
+    let entries: Vec<Value> = rows
         .iter()
-        .map(|(_, r)| {
-            let mut e = json::multi_entry(&r.resolution);
+        .map(|r| {
+            let mut e = r.entry.clone();
             let m = e.as_object_mut().expect("an object");
-            match (&r.resolution, &r.velocities_after) {
-                (Ok(o), Some(after)) => {
+            match &r.result {
+                Ok(o) => {
                     m.insert(
                         "velocities_after".into(),
-                        json!(after.iter().map(|&x| num(x)).collect::<Vec<_>>()),
+                        json!(o
+                            .velocities_after
+                            .iter()
+                            .map(|&x| num(x))
+                            .collect::<Vec<_>>()),
                     );
                     m.insert("energy_after".into(), num(t0 + o.energy_change));
                     m.insert("energy_ratio".into(), num((t0 + o.energy_change) / t0));
@@ -215,7 +411,7 @@ pub fn document(
                         r.energy_change_from_velocities.map_or(Value::Null, num),
                     );
                 }
-                _ => {
+                Err(_) => {
                     for k in [
                         "velocities_after",
                         "energy_after",
@@ -235,7 +431,7 @@ pub fn document(
         "coordinates": sc.impact.coordinates(),
         "u_before": sc.impact.velocities_before().iter().map(|&x| num(x)).collect::<Vec<_>>(),
         "contact_names": sc.impact.contacts(),
-        "problem": json::multi_problem(problem),
+        "problem": view.json,
         "energy_before": t0,
         "results": entries,
     })
@@ -243,16 +439,16 @@ pub fn document(
 
 /// The coordinates worth a column: those moving before, or after under some law (a cradle's
 /// vertical velocities and spins stay zero).
-fn shown(sc: &MultiScenario, results: &[(LawId, SystemOutcome)]) -> Vec<usize> {
+pub fn shown(sc: &MultiScenario, rows: &[LawRow]) -> Vec<usize> {
     let before = sc.impact.velocities_before();
     let scale = before.iter().fold(0.0f64, |m, x| m.max(x.abs()));
     (0..before.len())
         .filter(|&i| {
             before[i] != 0.0
-                || results.iter().any(|(_, r)| {
-                    r.velocities_after
+                || rows.iter().any(|r| {
+                    r.result
                         .as_ref()
-                        .is_some_and(|a| a[i].abs() > 1e-12 * scale)
+                        .is_ok_and(|o| o.velocities_after[i].abs() > 1e-12 * scale)
                 })
         })
         .collect()
@@ -265,12 +461,11 @@ fn short(x: f64) -> String {
     Plain(v).to_string()
 }
 
-fn table(sc: &MultiScenario, problem: &MultiProblem, results: &[(LawId, SystemOutcome)]) -> String {
+fn table(sc: &MultiScenario, view: &ProblemView, rows: &[LawRow]) -> String {
     let coords = sc.impact.coordinates();
-    let names = sc.impact.contacts();
-    let k = names.len();
+    let k = sc.impact.contacts().len();
     let t0 = sc.impact.energy_before();
-    let cols_shown = shown(sc, results);
+    let cols_shown = shown(sc, rows);
     let mut columns: Vec<(String, bool)> = vec![("law".into(), false)];
     for &i in &cols_shown {
         columns.push((format!("{}+", coords[i]), true));
@@ -286,12 +481,13 @@ fn table(sc: &MultiScenario, problem: &MultiProblem, results: &[(LawId, SystemOu
     let cols: Vec<(&str, bool)> = columns.iter().map(|(s, r)| (s.as_str(), *r)).collect();
     let mut t = Table::new(&cols);
     let mut notes = Vec::new();
-    for (law, r) in results {
-        match (&r.resolution, &r.velocities_after) {
-            (Ok(o), Some(after)) => {
+    for r in rows {
+        let law = r.law;
+        match &r.result {
+            Ok(o) => {
                 let mut row = vec![law.to_string()];
-                row.extend(cols_shown.iter().map(|&i| signed(after[i], 5)));
-                row.extend(o.contacts.iter().map(|c| signed(c.impulse.y, 5)));
+                row.extend(cols_shown.iter().map(|&i| signed(o.velocities_after[i], 5)));
+                row.extend(o.normal_impulses.iter().map(|&x| signed(x, 5)));
                 row.extend([
                     signed(o.energy_change, 5),
                     format!("{:.5}", (t0 + o.energy_change) / t0),
@@ -302,7 +498,7 @@ fn table(sc: &MultiScenario, problem: &MultiProblem, results: &[(LawId, SystemOu
                     notes.push(format!("{law}: {i}"));
                 }
             }
-            _ => {
+            Err(b) => {
                 let mut row = vec![law.to_string()];
                 row.extend(std::iter::repeat_n(
                     "—".to_string(),
@@ -310,28 +506,21 @@ fn table(sc: &MultiScenario, problem: &MultiProblem, results: &[(LawId, SystemOu
                 ));
                 row.push("breakdown".into());
                 t.row(row);
-                if let Err(b) = &r.resolution {
-                    notes.push(format!("{law}: breakdown: {}", b.reason));
-                }
+                notes.push(format!("{law}: breakdown: {}", b.reason));
             }
         }
     }
-    let v: Vec<String> = (0..k)
-        .map(|j| {
-            let c = problem.contact_velocity(j);
-            format!("{} {} ({}, {})", j + 1, names[j], short(c.x), short(c.y))
-        })
-        .collect();
     let mut text = format!(
-        "impax compare — {}; μ = {}, e = {}{}\ncontacts (v⁻ = (v_t, v_n)): {}; W {n} × {n} of rank {}; T⁻ = {}\n\n",
+        "impax compare — {}; μ = {}, e = {}{}\ncontacts (v⁻ = {}): {}; W {n} × {n} of rank {}; T⁻ = {}\n\n",
         sc.description,
-        Plain(problem.friction(0)),
-        Plain(problem.restitution(0)),
-        crate::commands::resolve::force_law(problem),
-        v.join(", "),
-        problem.rank(),
+        Plain(view.friction),
+        Plain(view.restitution),
+        view.force_law,
+        view.frame,
+        view.contacts,
+        view.rank,
         short(t0),
-        n = 2 * k,
+        n = view.size,
     );
     text.push_str(&t.render());
     let hidden = coords.len() - cols_shown.len();
