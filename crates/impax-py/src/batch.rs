@@ -374,6 +374,13 @@ pub fn check_threads(threads: Option<&Bound<'_, PyAny>>) -> PyResult<Option<usiz
 /// `impax.SEQUENCES` or `impax.SEQUENCES_3D`), `energy_gained` (bool). Numbers are NaN where
 /// the law broke down (`status == "breakdown"`) and only there (or on invalid rows).
 ///
+/// With `contacts=K`: problems with `K` contacts at once and a multi-contact law (`lcp`,
+/// `sequential`, `lzb`; with `K = 1` any contact-space law): `w` of shape (N, dK, dK) or the
+/// upper triangles (N, dK (dK + 1)/2) with `d = 2` (planar) or 3 (spatial), `v` (N, dK) or
+/// (N, K, d), `friction` and `restitution` numbers, (N,) or (N, K); returns `impulse` and
+/// `velocity_after` (N, K, d), `energy_change` (N,) and `status` (N,), each row exactly
+/// `resolve(w[i], v[i], friction[i], restitution[i], law, contacts=K)`.
+///
 /// An invalid row raises `ValueError("row I: <the CLI's message>")` naming the first one
 /// (`on_invalid="raise"`, the default); with `on_invalid="mark"` it gets status `invalid`.
 /// Complex arrays are refused (`TypeError`), as are integers too large for a float
@@ -381,7 +388,7 @@ pub fn check_threads(threads: Option<&Bound<'_, PyAny>>) -> PyResult<Option<usiz
 /// of worker threads, an integer from 1 to 256 (`impax.MAX_THREADS`; default: rayon's pool,
 /// one per core); any other value raises `ValueError`.
 #[pyfunction]
-#[pyo3(signature = (w, v, friction, restitution, law = "energetic", *, on_invalid = "raise", threads = None))]
+#[pyo3(signature = (w, v, friction, restitution, law = "energetic", *, on_invalid = "raise", threads = None, contacts = None))]
 #[allow(clippy::too_many_arguments)]
 pub fn resolve_batch<'py>(
     py: Python<'py>,
@@ -392,7 +399,30 @@ pub fn resolve_batch<'py>(
     law: &str,
     on_invalid: &str,
     threads: Option<&Bound<'py, PyAny>>,
+    contacts: Option<usize>,
 ) -> PyResult<Bound<'py, PyDict>> {
+    if let Some(k) = contacts {
+        let raise = match on_invalid {
+            "raise" => true,
+            "mark" => false,
+            other => {
+                return Err(value_error(format!(
+                    "on_invalid: expected \"raise\" or \"mark\", got {other:?}"
+                )))
+            }
+        };
+        return crate::batch_multi::resolve(
+            py,
+            w,
+            v,
+            friction,
+            restitution,
+            law,
+            k,
+            raise,
+            threads,
+        );
+    }
     let threads = thread_count(threads)?;
     let w = float_array(w, "w")?;
     let v = float_array(v, "v")?;

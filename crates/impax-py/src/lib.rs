@@ -7,7 +7,7 @@
 //!
 //! * [`single`]: `resolve` — one contact-space problem, a small `Outcome` object;
 //! * [`batch`]: `resolve_batch` — many problems on numpy arrays, the GIL released, rayon
-//!   inside, no allocation per row;
+//!   inside, no allocation per row; with `contacts=K`, [`batch_multi`];
 //! * [`bodies`]: `sphere`, `disc`, `rod`, `ellipse`, `rigid_body`, `double_pendulum`,
 //!   `mechanism`, and `compare` — every law side by side, as `impax compare --json`;
 //! * [`scenarios`]: `rod_rows`, `sphere_rows` — the rows of many bodies at once, for
@@ -16,6 +16,7 @@
 use pyo3::prelude::*;
 
 mod batch;
+mod batch_multi;
 mod bodies;
 mod convert;
 mod multi;

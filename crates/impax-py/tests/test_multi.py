@@ -116,3 +116,79 @@ def test_force_law_needs_contacts():
     for kwargs, field in ((dict(stiffness=2.0), "stiffness"), (dict(exponent=1.0), "exponent")):
         with pytest.raises(ValueError, match=field):
             impax.resolve([3.5, 0.4, 1.2], [0.5, -0.866], 0.3, 0.7, **kwargs)
+
+
+# A cradle of three unit point masses in 3D (normals last), frictionless, e = 1.
+CRADLE3_UPPER = [2, 0, 0, 0, 0, 0, 2, 0, 0, 0, 0, 2, 0, 0, -1, 2, 0, 0, 2, 0, 2]
+
+
+def test_spatial_contacts_agree_with_the_cli(cli):
+    """A 3K × 3K W makes the problem spatial, as on the command line."""
+    for law in ("lcp", "sequential"):
+        ref = cli.json(
+            "resolve",
+            "--contacts=2",
+            "--w=" + ",".join(str(x) for x in CRADLE3_UPPER),
+            "--v=0.2,0.1,-1,0,0,0",
+            "--friction=0.3",
+            "--restitution=0.8",
+            f"--law={law}",
+        )
+        out = impax.resolve(CRADLE3_UPPER, [[0.2, 0.1, -1], [0, 0, 0]], 0.3, 0.8, law, contacts=2)
+        assert out.verdict == ref["verdict"]
+        assert out.energy_change == pytest.approx(ref["energy_change"], rel=1e-13, abs=1e-15)
+        for py, c in zip(out.contacts, ref["contacts"]):
+            i = c["impulse"]
+            assert py["impulse"] == pytest.approx((i["t1"], i["t2"], i["n"]), abs=1e-13)
+            assert [k for k, _ in py["phases"]] == [p["kind"] for p in c["phases"]]
+    lcp = impax.resolve(np.array(CRADLE3_UPPER, float), [0, 0, -1, 0, 0, 0], 0.0, 1.0, "lcp", contacts=2)
+    assert lcp.impulses[0] == pytest.approx((0, 0, 4 / 3), abs=1e-12)
+    with pytest.raises(ValueError, match="v"):
+        impax.resolve(CRADLE3_UPPER, [0, 0, -1, 0, 0], 0.0, 1.0, "lcp", contacts=2)
+    with pytest.raises(ValueError, match="law"):
+        impax.resolve(CRADLE3_UPPER, [0, 0, -1, 0, 0, 0], 0.0, 1.0, "newton", contacts=2)
+
+
+def test_batch_with_contacts_is_resolve_row_by_row():
+    """`resolve_batch(..., contacts=K)` row i is `resolve(..., contacts=K)` on row i, planar
+    and spatial, for every multi-contact law."""
+    rng = np.random.default_rng(7)
+    for d in (2, 3):
+        k, n = 2, 40
+        m = d * k
+        ws, vs = [], []
+        while len(ws) < n:
+            j = rng.uniform(-1, 1, (m, m + 1))
+            minv = np.diag(1 / rng.uniform(0.3, 3, m + 1))
+            u = rng.uniform(-1, 1, m + 1)
+            v = j @ u
+            if min(v[d - 1 :: d]) >= 0:
+                continue
+            ws.append(j @ minv @ j.T)
+            vs.append(v)
+        w, v = np.array(ws), np.array(vs)
+        mu = rng.uniform(0, 1, (n, k))
+        e = rng.uniform(0, 1, n)
+        laws = ("lcp", "sequential", "lzb") if d == 2 else ("lcp", "sequential")
+        for law in laws:
+            r = impax.resolve_batch(w, v, mu, e, law, contacts=k)
+            assert r["impulse"].shape == (n, k, d)
+            for i in range(n):
+                one = impax.resolve(w[i], v[i], list(mu[i]), e[i], law, contacts=k)
+                assert impax.STATUSES[r["status"][i]] == one.verdict
+                if one.verdict != "breakdown":
+                    assert np.allclose(r["impulse"][i], np.array(one.impulses), rtol=0, atol=1e-14)
+                    assert r["energy_change"][i] == one.energy_change
+
+
+def test_batch_with_contacts_names_bad_input():
+    w = np.array([ROD_UPPER, ROD_UPPER], float)
+    v = np.array([[0, -1, 0, -1], [0, -1, 0.5, -1]], float)
+    with pytest.raises(ValueError, match="row 1: v"):
+        impax.resolve_batch(w, v, 0.3, 0.5, "lcp", contacts=2)
+    r = impax.resolve_batch(w, v, 0.3, 0.5, "lcp", contacts=2, on_invalid="mark")
+    assert [impax.STATUSES[s] for s in r["status"]] == ["consistent", "invalid"]
+    with pytest.raises(ValueError, match="w"):
+        impax.resolve_batch(w[:, :9], v, 0.3, 0.5, "lcp", contacts=2)
+    with pytest.raises(ValueError, match="friction"):
+        impax.resolve_batch(w, v, [0.3, 0.3, 0.3], 0.5, "lcp", contacts=2)

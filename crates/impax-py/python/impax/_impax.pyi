@@ -220,8 +220,10 @@ def resolve(
     law: str = "energetic",
     *,
     contacts: int,
+    stiffness: float | Sequence[float] | None = None,
+    exponent: float | None = None,
 ) -> MultiOutcome: ...
-def resolve(w, v, friction, restitution, law="energetic", *, contacts=None):
+def resolve(w, v, friction, restitution, law="energetic", *, contacts=None, stiffness=None, exponent=None):
     """Resolve one impact in contact space with one law.
 
     ``w``: ``W = J M⁻¹ Jᵀ``, 2×2 (planar) or 3×3 (spatial), or its upper triangle (3 or 6
@@ -229,10 +231,12 @@ def resolve(w, v, friction, restitution, law="energetic", *, contacts=None):
     normal last, ``v_n < 0``); ``friction`` μ ≥ 0; ``restitution`` e ∈ [0, 1]. During the
     impact ``v(p) = v⁻ + W p`` (theory §1). Raises ``ValueError`` with the CLI's message.
 
-    With ``contacts=K`` (``impax resolve --contacts K``): a planar problem with ``K`` contacts
-    at once — ``w`` the ``2K × 2K`` W (positive semidefinite) or its upper triangle, ``v``
-    ``2K`` numbers or ``K`` pairs, ``friction`` and ``restitution`` one number or ``K``; laws
-    ``lcp`` and ``sequential`` (``MULTI_CONTACT_LAWS``); returns a :class:`MultiOutcome`.
+    With ``contacts=K`` (``impax resolve --contacts K``): a problem with ``K`` contacts at
+    once — ``w`` the ``2K × 2K`` W (planar) or ``3K × 3K`` (spatial), positive
+    semidefinite, or its upper triangle; ``v`` ``dK`` numbers or ``K`` rows of ``d``;
+    ``friction`` and ``restitution`` one number or ``K``; laws ``lcp``, ``sequential`` and
+    ``lzb`` (``MULTI_CONTACT_LAWS``; in 3D ``lcp`` and ``sequential``); for ``lzb``
+    ``stiffness`` (one number or ``K``) and ``exponent``; returns a :class:`MultiOutcome`.
     """
 
 class MultiOutcome:
@@ -285,12 +289,19 @@ def resolve_batch(
     *,
     on_invalid: Literal["raise", "mark"] = "raise",
     threads: int | None = None,
+    contacts: int | None = None,
 ) -> BatchResult:
     """Resolve many impacts with one law, in parallel (the GIL released), on numpy arrays.
 
     Planar: ``w`` (N, 3) = ``W_tt, W_tn, W_nn``, ``v`` (N, 2) = ``v_t, v_n``. Spatial: ``w``
     (N, 6) = ``W11, W12, W13, W22, W23, W33``, ``v`` (N, 3). ``friction``, ``restitution``:
     numbers or (N,). Row ``i`` is ``resolve(w[i], v[i], friction[i], restitution[i], law)``.
+
+    With ``contacts=K`` (a multi-contact law): ``w`` (N, dK, dK) or its upper triangles
+    (N, dK(dK+1)/2), d = 2 (planar) or 3 (spatial); ``v`` (N, dK) or (N, K, d);
+    ``friction``, ``restitution`` numbers, (N,) or (N, K). Returns ``impulse`` and
+    ``velocity_after`` (N, K, d), ``energy_change`` and ``status`` (N,); row ``i`` is
+    ``resolve(w[i], v[i], friction[i], restitution[i], law, contacts=K)``.
 
     Returns arrays: ``impulse``, ``velocity_after`` (N, 2|3); ``energy_change``,
     ``work_compression``, ``work_restitution``, ``work_friction``, ``compression_impulse``
