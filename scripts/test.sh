@@ -18,6 +18,10 @@ fi
 echo "== Parquet output (feature \`parquet\`)"
 cargo test -p impax-cli --features parquet --test parquet
 
+echo "== serde round trips (feature \`serde\`)"
+cargo test -p impax --features serde --test serde
+cargo test -p impax --features serde --doc -- src/lib.rs
+
 for stage in scripts/test.d/*.sh; do
     [[ -e "$stage" ]] || continue
     echo "== stage $(basename "$stage")"

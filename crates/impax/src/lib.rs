@@ -24,6 +24,44 @@
 //! assert!(energetic.energy_change < 0.0); // the slip halts; the sphere leaves rolling
 //! assert_eq!(energetic.velocity_after.x, 0.0);
 //! ```
+//!
+//! ## Feature `serde`
+//! `Serialize` and `Deserialize` (as num-dual's `serde` feature does) on the law ids
+//! ([`LawId`], written as its id: `"two-phase"`), the verdicts, inconsistencies and breakdowns
+//! ([`law::Verdict`], [`law::Inconsistency`], [`law::Breakdown`], [`law::BreakdownReason`]),
+//! the work split, the outcomes with their phases and details ([`planar::Outcome`],
+//! [`spatial::Outcome3`], [`multi::MultiOutcome`], [`bodies::BodyOutcome`],
+//! [`bodies3::BodyOutcome3`]), the problems ([`planar::ContactProblem`],
+//! [`spatial::ContactProblem3`], [`multi::MultiProblem`]) and the scenario
+//! ([`scenario::PlanarScenario`]); nalgebra's vectors with it. Ids are written as the ids the
+//! command line prints: a verdict as `"energy-gained"`, an enum with numbers as an object
+//! tagged by its `"id"` (`{"id": "slip-reversed", "slip_after": -0.1}`). A problem is written
+//! as plain data (`W` by rows, `v⁻`, the coefficients) and read back through its validating
+//! constructor: what is read is as checked as what is built, and an invalid problem is an
+//! error naming its field. Every value reads back equal to what was written.
+//!
+//! ```toml
+//! impax = { version = "0.1", features = ["serde"] }
+//! ```
+//!
+//! ```
+//! # #[cfg(feature = "serde")]
+//! # {
+//! use impax::{LawId, planar::{ContactProblem, Outcome}};
+//! let p = ContactProblem::from_entries(3.5, 0.0, 1.0, 0.5, -0.75f64.sqrt(), 0.4, 0.7)?;
+//! let o = LawId::TwoPhase.resolve(&p).expect("a result");
+//! let json = serde_json::to_value(&o)?;
+//! assert_eq!(json["law"], "two-phase");
+//! assert_eq!(json["verdict"], "energy-gained");
+//! assert_eq!(json["inconsistency"]["id"], "reversal-did-not-happen");
+//! assert_eq!(serde_json::from_value::<Outcome>(json)?, o);
+//! // A problem is read through its validation: here v_n ≥ 0 (no approach).
+//! let bad = r#"{"w": [[3.5, 0.0], [0.0, 1.0]], "v": [0.5, 0.1], "friction": 0.4, "restitution": 0.7}"#;
+//! let e = serde_json::from_str::<ContactProblem>(bad).unwrap_err();
+//! assert!(e.to_string().starts_with("v: "));
+//! # }
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
 
 #![warn(missing_docs)]
 
@@ -31,6 +69,8 @@ pub mod analysis;
 pub mod bodies;
 pub mod bodies3;
 pub mod error;
+#[cfg(feature = "serde")]
+mod forms;
 pub mod law;
 pub mod math;
 pub mod mechanism;

@@ -9,6 +9,7 @@ use crate::planar::{ContactProblem, Outcome, Resolution};
 
 /// Kinetic energy split into translational `Σ ½ m |v|²` and rotational `Σ ½ I ω²` parts.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct EnergyParts {
     /// Translational part.
     pub translational: f64,
@@ -26,6 +27,7 @@ impl EnergyParts {
 /// The result of a law applied to a [`PlanarImpact`]: the contact-space outcome and what it
 /// does to the bodies.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct BodyOutcome {
     /// The contact-space outcome.
     pub outcome: Outcome,

@@ -37,6 +37,7 @@ impl Side {
 /// Velocity state of a planar body: centre velocity `(v_x, v_y)` (tangent, normal) and the
 /// counter-clockwise angular velocity `ω`.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct BodyState2 {
     /// Centre-of-mass velocity.
     pub velocity: Vec2,

@@ -9,6 +9,7 @@ use crate::spatial::{ContactProblem3, Outcome3};
 
 /// A law applied to a [`SpatialImpact`]: the contact-space outcome and the bodies after.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct BodyOutcome3 {
     /// Contact-space outcome.
     pub outcome: Outcome3,

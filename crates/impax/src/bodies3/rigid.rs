@@ -6,6 +6,7 @@ use nalgebra::UnitQuaternion;
 
 /// Velocity state: centre-of-mass velocity and angular velocity, both in the world frame.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct BodyState3 {
     /// Centre-of-mass velocity.
     pub velocity: Vec3,
@@ -22,6 +23,7 @@ impl BodyState3 {
 
 /// Kinetic energy in translational `½ m |v|²` and rotational `½ ωᵀ I ω` parts.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct EnergyParts3 {
     /// Translational part.
     pub translational: f64,

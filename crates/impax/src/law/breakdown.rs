@@ -6,6 +6,11 @@ use std::fmt;
 
 /// Why a law produced no admissible result.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(tag = "id", rename_all = "kebab-case")
+)]
 pub enum BreakdownReason {
     /// The law's normal impulse would be negative (or unbounded): the denominator of
     /// `p_n = −(1+e) v_n⁻ / denominator` is not positive.
@@ -142,6 +147,7 @@ impl fmt::Display for BreakdownReason {
 /// A law that cannot produce a physical result for this problem. Reported as such, never
 /// as numbers.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Breakdown {
     /// Which law broke down.
     pub law: LawId,

@@ -19,7 +19,15 @@ use std::fmt;
 use std::str::FromStr;
 
 /// Stable ids of the impact laws. These strings are a public contract (CLI, JSON, TOML).
+///
+/// With the feature `serde`, a law is written as its id (`"two-phase"`) and read back from it
+/// ([`LawId::as_str`] and [`FromStr`]: an unknown id is an error listing the known ones).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(into = "&'static str", try_from = "String")
+)]
 pub enum LawId {
     /// `whittaker`: Newton restitution with Coulomb friction on the total impulses against the
     /// initial slip (paper A eqs. 7–9; Kane & Levinson 1985).
@@ -252,6 +260,21 @@ impl FromStr for LawId {
                 id: s.to_string(),
                 known: every().map(|l| l.as_str()).collect::<Vec<_>>().join(", "),
             })
+    }
+}
+
+impl From<LawId> for &'static str {
+    /// The stable id ([`LawId::as_str`]).
+    fn from(law: LawId) -> Self {
+        law.as_str()
+    }
+}
+
+impl TryFrom<String> for LawId {
+    type Error = Error;
+    /// Parse a stable id, as [`FromStr`].
+    fn try_from(id: String) -> Result<Self> {
+        id.parse()
     }
 }
 

@@ -4,6 +4,11 @@ use std::fmt;
 
 /// The overall judgement of a law's result.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(rename_all = "kebab-case")
+)]
 pub enum Verdict {
     /// No energy gained and the law's assumptions hold.
     Consistent,
@@ -26,6 +31,11 @@ impl Verdict {
 
 /// An assumption of a law that its own result contradicts.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(tag = "id", rename_all = "kebab-case")
+)]
 pub enum Inconsistency {
     /// Friction was held against the initial slip but the slip reversed during the impact
     /// (Whittaker, Smith at `η = ±1`): friction did positive work in the end part.

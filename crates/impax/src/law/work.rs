@@ -2,6 +2,7 @@
 
 /// The energy audit of an impact: `ΔT = W_c + W_r + W_t` (theory §1).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct WorkSplit {
     /// Normal work during compression `W_c = ∫₀^{p_c} v_n dp_n ≤ 0`.
     pub compression: f64,

@@ -11,6 +11,11 @@ use std::fmt;
 
 /// The regime of one contact during (a part of) the impact.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(rename_all = "kebab-case")
+)]
 pub enum ContactPhaseKind {
     /// No impulse at this contact (`p_j = 0`).
     Off,
@@ -50,6 +55,7 @@ impl fmt::Display for ContactPhaseKind {
 
 /// One phase of one contact and the contact's own normal impulse at its end.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct ContactPhase {
     /// The regime.
     pub kind: ContactPhaseKind,
@@ -60,6 +66,7 @@ pub struct ContactPhase {
 
 /// What happened at one contact.
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct ContactResult {
     /// The impulse on body A at this contact, `(p_t, p_n)`.
     pub impulse: Vec2,
@@ -95,6 +102,7 @@ impl ContactResult {
 
 /// One solution of the complementarity conditions of [`super::lcp`].
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct LcpSolution {
     /// Each contact's regime: `off`, `stick`, `slip+` or `slip-` (`slip±`/`no-slip` by the
     /// slip after at a frictionless contact).
@@ -110,6 +118,7 @@ pub struct LcpSolution {
 
 /// One binary impact of [`super::sequential`]: a contact resolved alone by `energetic`.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct BinaryImpact {
     /// The contact (from 0).
     pub contact: usize,
@@ -124,6 +133,7 @@ pub struct BinaryImpact {
 /// normal impulse is the independent variable of Liu, Zhao & Brogliato's formulation, from
 /// the moment it took over.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct LzbPrimary {
     /// The contact (from 0).
     pub contact: usize,
@@ -133,6 +143,11 @@ pub struct LzbPrimary {
 
 /// Law-specific detail.
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(tag = "id", rename_all = "kebab-case")
+)]
 pub enum MultiDetail {
     /// `lcp`: every solution of the conditions, least kinetic energy after first (the first
     /// is the result).
@@ -169,6 +184,7 @@ pub enum MultiDetail {
 
 /// The result of a law on a [`MultiProblem`].
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct MultiOutcome {
     /// Which law.
     pub law: LawId,

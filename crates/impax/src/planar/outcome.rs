@@ -6,6 +6,11 @@ use std::fmt;
 
 /// Direction of tangential slip, `sign(v_t)`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(rename_all = "kebab-case")
+)]
 pub enum SlipDirection {
     /// `v_t > 0`: friction acts along `−t`.
     Positive,
@@ -41,6 +46,11 @@ impl SlipDirection {
 
 /// A regime of the contact during the impact.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(rename_all = "kebab-case")
+)]
 pub enum PhaseKind {
     /// Slip with Coulomb friction `dp_t = −μ ŝ dp_n`.
     Slip(SlipDirection),
@@ -68,6 +78,7 @@ impl fmt::Display for PhaseKind {
 
 /// One phase of the impact and the normal impulse `p_n` at which it ends.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Phase {
     /// The regime.
     pub kind: PhaseKind,
@@ -142,6 +153,11 @@ impl Default for Phases {
 
 /// Which velocity Smith's correction factor `η` is built from.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(rename_all = "kebab-case")
+)]
 pub enum SmithReading {
     /// The sliding (contact-point tangential) velocity, as Smith 1991 and paper A's text.
     SlipVelocity,
@@ -151,6 +167,11 @@ pub enum SmithReading {
 
 /// Law-specific numbers worth reporting.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(tag = "id", rename_all = "kebab-case")
+)]
 pub enum LawDetail {
     /// Nothing beyond the common record.
     None,
@@ -196,6 +217,7 @@ pub enum LawDetail {
 
 /// The result of one impact law on one [`ContactProblem`](super::ContactProblem).
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Outcome {
     /// Which law produced it.
     pub law: LawId,
@@ -307,6 +329,7 @@ impl Phases {
 /// assert_eq!(brief.phases.len(), 2); // slip, then stick
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct OutcomeBrief {
     /// Headline verdict (as [`Outcome::verdict`]).
     pub verdict: Verdict,

@@ -9,6 +9,7 @@ use serde::Deserialize;
 /// A body of a planar scenario, as written in a file (`[body]`, `[other]`). Fields are
 /// optional where the shape decides whether they apply; [`BodySpec::build`] checks them.
 #[derive(Debug, Clone, Deserialize, Default, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 #[serde(deny_unknown_fields)]
 pub struct BodySpec {
     /// `sphere`, `disc`, `rod`, `ellipse` or `rigid`.
@@ -42,6 +43,7 @@ pub struct BodySpec {
 /// How results are normalised in tables: by the approach speed and radius of a round body
 /// given by `v0, α, γ`, else not at all.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Scale {
     /// Velocity scale `v0` (the approach speed of a round body; else 1).
     pub speed: f64,

@@ -31,6 +31,7 @@ spin_ratio = 0.0
 /// # Ok::<(), impax::Error>(())
 /// ```
 #[derive(Debug, Clone, Deserialize, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 #[serde(deny_unknown_fields)]
 pub struct PlanarScenario {
     /// Coulomb friction `μ`.

@@ -8,6 +8,11 @@ use std::fmt;
 
 /// A regime of the contact during a spatial impact.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(tag = "id", rename_all = "kebab-case")
+)]
 pub enum Phase3Kind {
     /// Slip whose direction turns from angle `from` to angle `to` (radians in the tangent
     /// plane, `atan2(v_t2, v_t1)`); equal angles when it does not swirl.
@@ -54,6 +59,7 @@ impl fmt::Display for Phase3Kind {
 
 /// One phase and the normal impulse at which it ends.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Phase3 {
     /// The regime.
     pub kind: Phase3Kind,
@@ -112,6 +118,11 @@ impl Default for Phases3 {
 
 /// Law-specific numbers of a spatial outcome.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(tag = "id", rename_all = "kebab-case")
+)]
 pub enum Detail3 {
     /// Nothing more.
     None,
@@ -142,6 +153,7 @@ pub enum Detail3 {
 
 /// The result of one law on one [`ContactProblem3`](super::ContactProblem3).
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Outcome3 {
     /// Which law.
     pub law: LawId,
