@@ -88,39 +88,48 @@ struct MultiProblemForm {
     exponent: f64,
 }
 
-impl Serialize for MultiProblem {
-    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
-        let k = self.contacts();
-        let w = self.w();
-        MultiProblemForm {
-            w: w.row_iter().map(|r| r.iter().copied().collect()).collect(),
-            v: self.velocity().iter().copied().collect(),
-            friction: (0..k).map(|j| self.friction(j)).collect(),
-            restitution: (0..k).map(|j| self.restitution(j)).collect(),
-            stiffness: (0..k).map(|j| self.stiffness(j)).collect(),
-            exponent: self.exponent(),
+/// The serde impls of a problem type with several contacts (planar and spatial share the
+/// form; the spatial `W` is `3K × 3K`).
+macro_rules! multi_form {
+    ($ty:ty) => {
+        impl Serialize for $ty {
+            fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+                let k = self.contacts();
+                let w = self.w();
+                MultiProblemForm {
+                    w: w.row_iter().map(|r| r.iter().copied().collect()).collect(),
+                    v: self.velocity().iter().copied().collect(),
+                    friction: (0..k).map(|j| self.friction(j)).collect(),
+                    restitution: (0..k).map(|j| self.restitution(j)).collect(),
+                    stiffness: (0..k).map(|j| self.stiffness(j)).collect(),
+                    exponent: self.exponent(),
+                }
+                .serialize(serializer)
+            }
         }
-        .serialize(serializer)
-    }
+
+        impl<'de> Deserialize<'de> for $ty {
+            fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+                let f = MultiProblemForm::deserialize(deserializer)?;
+                let n = f.w.len();
+                if let Some(row) = f.w.iter().find(|r| r.len() != n) {
+                    return Err(D::Error::custom(format!(
+                        "w: every row must have {n} entries (W is square), one has {}",
+                        row.len()
+                    )));
+                }
+                let w = DMatrix::from_fn(n, n, |i, j| f.w[i][j]);
+                <$ty>::new(w, &f.v, &f.friction, &f.restitution)
+                    .and_then(|p| p.with_stiffness(&f.stiffness))
+                    .and_then(|p| p.with_exponent(f.exponent))
+                    .map_err(D::Error::custom)
+            }
+        }
+    };
 }
 
-impl<'de> Deserialize<'de> for MultiProblem {
-    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-        let f = MultiProblemForm::deserialize(deserializer)?;
-        let n = f.w.len();
-        if let Some(row) = f.w.iter().find(|r| r.len() != n) {
-            return Err(D::Error::custom(format!(
-                "w: every row must have {n} entries (W is square), one has {}",
-                row.len()
-            )));
-        }
-        let w = DMatrix::from_fn(n, n, |i, j| f.w[i][j]);
-        MultiProblem::new(w, &f.v, &f.friction, &f.restitution)
-            .and_then(|p| p.with_stiffness(&f.stiffness))
-            .and_then(|p| p.with_exponent(f.exponent))
-            .map_err(D::Error::custom)
-    }
-}
+multi_form!(MultiProblem);
+multi_form!(crate::multi::spatial::MultiProblem);
 
 impl Serialize for Phases {
     fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {

@@ -472,3 +472,41 @@ fn the_book_shows_the_librarys_json() {
     let o = LawId::TwoPhase.resolve(&p).unwrap();
     assert_eq!(serde_json::to_value(o).unwrap(), shown);
 }
+
+/// Spatial problems with several contacts and their outcomes: `box-flat` spinning and
+/// sliding, under `lcp` and `sequential`.
+#[test]
+fn spatial_outcomes_at_several_contacts_round_trip() {
+    use impax::multi::scenarios::BoxFlat;
+    use impax::multi::spatial;
+    let mut details = BTreeSet::new();
+    for (spin, vx, mu, e) in [
+        (2.0, 0.0, 0.3, 0.5),
+        (6.0, 0.4, 0.1, 0.8),
+        (0.0, 0.0, 0.0, 1.0),
+    ] {
+        let sc = BoxFlat {
+            spin,
+            velocity: [vx, 0.0, -1.0],
+            ..BoxFlat::default()
+        }
+        .build()
+        .unwrap();
+        let p = sc.impact.problem3(&[mu], &[e]).unwrap();
+        let v = round_trip(&p);
+        assert_eq!(v["w"].as_array().unwrap().len(), 12);
+        for law in [LawId::Lcp, LawId::Sequential] {
+            let out = spatial::resolve(law, &p).unwrap().unwrap();
+            let v = round_trip(&out);
+            assert_eq!(v["law"], law.as_str());
+            details.insert(id_of(&v["detail"]));
+        }
+    }
+    assert_eq!(
+        details,
+        ["lcp", "sequential"]
+            .map(String::from)
+            .into_iter()
+            .collect()
+    );
+}

@@ -12,6 +12,11 @@ use std::fmt;
 
 /// The regime of one contact during (a part of) a spatial impact.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(rename_all = "kebab-case")
+)]
 pub enum ContactPhaseKind {
     /// No impulse at this contact.
     Off,
@@ -41,6 +46,7 @@ impl fmt::Display for ContactPhaseKind {
 
 /// One phase of one contact and the contact's own normal impulse at its end.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct ContactPhase {
     /// The regime.
     pub kind: ContactPhaseKind,
@@ -50,6 +56,7 @@ pub struct ContactPhase {
 
 /// What happened at one contact.
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct ContactResult {
     /// The impulse on body A at this contact, `(p_t1, p_t2, p_n)`.
     pub impulse: Vec3,
@@ -83,6 +90,7 @@ impl ContactResult {
 
 /// One solution of the complementarity conditions of [`super::lcp`].
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct LcpSolution {
     /// Each contact's regime: `off`, `stick`, or `slip` along its final slip direction.
     pub regimes: Vec<ContactPhaseKind>,
@@ -97,6 +105,7 @@ pub struct LcpSolution {
 /// One binary impact of [`super::sequential`]: a contact resolved alone by the spatial
 /// `energetic` law.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct BinaryImpact {
     /// The contact (from 0).
     pub contact: usize,
@@ -108,6 +117,11 @@ pub struct BinaryImpact {
 
 /// Law-specific detail.
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(tag = "id", rename_all = "kebab-case")
+)]
 pub enum MultiDetail {
     /// `lcp`: every solution found, least kinetic energy after first (the first is the
     /// result).
@@ -131,6 +145,7 @@ pub enum MultiDetail {
 
 /// The result of a law on a spatial [`MultiProblem`].
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct MultiOutcome {
     /// Which law.
     pub law: LawId,
