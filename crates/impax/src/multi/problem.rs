@@ -1,7 +1,8 @@
 //! The planar contact-space problem with `K` contacts `(W, v⁻, μ_j, e_j)`.
 
-use crate::error::{Error, Num, Result};
-use crate::math::{exact_unit_factor, Mat2, Units, Vec2};
+use super::validate::{check, coefficients, from_upper_triangle};
+use crate::error::{Error, Result};
+use crate::math::{Mat2, Units, Vec2};
 use crate::planar::{ContactProblem, InverseInertia};
 use nalgebra::{DMatrix, DVector};
 
@@ -13,9 +14,6 @@ pub const RANK_TOL: f64 = 1e-11;
 /// The largest component of `v⁻` outside the range of a singular `W`, relative to `|v⁻|`,
 /// accepted as round-off (and removed).
 pub const RANGE_TOL: f64 = 1e-9;
-
-/// Relative tolerance on the asymmetry of `W` accepted as round-off (as for one contact).
-const SYMMETRY_TOL: f64 = 1e-12;
 
 /// The default exponent `η` of the contacts' force law `F = κ δ^η` of the law `lzb`: `3/2`,
 /// Hertz's for smooth bodies.
@@ -86,54 +84,6 @@ pub struct MultiProblem {
     exponent: f64,
 }
 
-/// The name of row or column `i` of `W`: `t1`, `n1`, `t2`, … (contacts counted from 1).
-pub(crate) fn component(i: usize) -> String {
-    format!(
-        "{}{}",
-        if i.is_multiple_of(2) { "t" } else { "n" },
-        i / 2 + 1
-    )
-}
-
-/// The per-contact coefficients: one value for every contact or one per contact, each finite
-/// and in range; the field `name` (or `name[j]`, counted from 1, with one value per contact).
-fn coefficients(
-    name: &str,
-    values: &[f64],
-    k: usize,
-    check: impl Fn(f64) -> Option<&'static str>,
-) -> Result<Vec<f64>> {
-    if values.len() != 1 && values.len() != k {
-        return Err(Error::Invalid {
-            field: name.into(),
-            reason: format!(
-                "expected 1 value (every contact) or {k} (one per contact), got {}",
-                values.len()
-            ),
-        });
-    }
-    let field = |j: usize| {
-        if values.len() == 1 {
-            name.to_string()
-        } else {
-            format!("{name}[{}]", j + 1)
-        }
-    };
-    for (j, &x) in values.iter().enumerate() {
-        crate::error::finite(&field(j), x)?;
-        if let Some(reason) = check(x) {
-            return Err(Error::OutOfRange {
-                field: field(j),
-                value: x,
-                reason: reason.into(),
-            });
-        }
-    }
-    Ok((0..k)
-        .map(|j| values[if values.len() == 1 { 0 } else { j }])
-        .collect())
-}
-
 impl MultiProblem {
     /// Validate and build a problem from `W` (`2K × 2K`, contact-major), `v⁻` (`2K` numbers,
     /// contact by contact, tangent then normal), and the friction coefficients and
@@ -143,175 +93,25 @@ impl MultiProblem {
     /// column `n2`), `v`, `v[n,2]` (the second contact's normal velocity), `friction`,
     /// `friction[2]`, `restitution`, `restitution[2]`. See the type's docs for the checks.
     pub fn new(w: DMatrix<f64>, v: &[f64], friction: &[f64], restitution: &[f64]) -> Result<Self> {
-        let n = w.nrows();
-        if n == 0 || !n.is_multiple_of(2) || w.ncols() != n {
-            return Err(Error::Invalid {
-                field: "w".into(),
-                reason: format!(
-                    "must be 2K × 2K for K ≥ 1 contacts (tangent and normal of each), got {} × {}",
-                    w.nrows(),
-                    w.ncols()
-                ),
-            });
-        }
-        let k = n / 2;
-        if v.len() != n {
-            return Err(Error::Invalid {
-                field: "v".into(),
-                reason: format!(
-                    "expected {n} numbers (tangent and normal of each of {k} contacts), got {}",
-                    v.len()
-                ),
-            });
-        }
-        for i in 0..n {
-            for j in 0..n {
-                crate::error::finite(&format!("w[{},{}]", component(i), component(j)), w[(i, j)])?;
-            }
-        }
-        let scale = w.amax().max(f64::MIN_POSITIVE);
-        let mut w = w;
-        for i in 0..n {
-            for j in i + 1..n {
-                let (upper, lower) = (w[(i, j)], w[(j, i)]);
-                if (upper - lower).abs() > SYMMETRY_TOL * scale {
-                    return Err(Error::Invalid {
-                        field: "w".into(),
-                        reason: format!(
-                            "must be symmetric, but w[{},{}] = {} differs from w[{},{}] = {}",
-                            component(i),
-                            component(j),
-                            Num(upper),
-                            component(j),
-                            component(i),
-                            Num(lower)
-                        ),
-                    });
-                }
-                let mean = 0.5 * upper + 0.5 * lower;
-                w[(i, j)] = mean;
-                w[(j, i)] = mean;
-            }
-        }
-        for j in 0..k {
-            InverseInertia::new(block(&w, j)).map_err(|e| match e {
-                Error::NotPositiveDefinite { reason, .. } => Error::NotPositiveDefinite {
-                    field: "w".into(),
-                    reason: format!("contact {}'s own block: {reason}", j + 1),
-                },
-                other => other,
-            })?;
-        }
-        for (i, &x) in v.iter().enumerate() {
-            let name = format!(
-                "v[{},{}]",
-                if i.is_multiple_of(2) { "t" } else { "n" },
-                i / 2 + 1
-            );
-            crate::error::finite(&name, x)?;
-        }
-        let mu = coefficients("friction", friction, k, |x| {
-            (x < 0.0).then_some("the friction coefficient must be ≥ 0")
+        let c = check(2, w, v, friction, restitution, |w, j| {
+            InverseInertia::new(block(w, j)).map(|_| ())
         })?;
-        let e = coefficients("restitution", restitution, k, |x| {
-            (!(0.0..=1.0).contains(&x))
-                .then_some("the coefficient of restitution must be in [0, 1]")
-        })?;
-        let least = (0..k).map(|j| v[2 * j + 1]).fold(f64::INFINITY, f64::min);
-        if least >= 0.0 {
-            return Err(Error::NotApproaching {
-                field: "v".into(),
-                value: least,
-            });
-        }
-
-        // Canonical units (powers of two, exact): the largest |v| and diagonal entry of W in
-        // [1, 2).
-        let vmax = v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
-        let dmax = (0..n).fold(0.0f64, |m, i| m.max(w[(i, i)]));
-        let units = Units {
-            a: exact_unit_factor(vmax, v),
-            b: exact_unit_factor(dmax, w.as_slice()),
-        };
-        let ws = &w * units.b;
-        let mut vs = DVector::from_column_slice(v) * units.a;
-
-        // Spectrum of W (in its canonical units, entries near one).
-        let eig = ws
-            .clone()
-            .try_symmetric_eigen(f64::EPSILON, 10_000)
-            .ok_or_else(|| Error::Invalid {
-                field: "w".into(),
-                reason: "its eigenvalues could not be computed".into(),
-            })?;
-        let lmax = eig.eigenvalues.max();
-        let lmin = eig.eigenvalues.min();
-        if lmin < -RANK_TOL * lmax {
-            return Err(Error::Invalid {
-                field: "w".into(),
-                reason: format!(
-                    "must be positive semidefinite, but its smallest eigenvalue is {} of its largest",
-                    Num(lmin / lmax)
-                ),
-            });
-        }
-        let zero = |l: f64| l.abs() <= RANK_TOL * lmax;
-        let rank = eig.eigenvalues.iter().filter(|&&l| !zero(l)).count();
-        let mut energy = 0.0;
-        if rank < n {
-            // v⁻ must be a velocity J u: in the range of W = J M⁻¹ Jᵀ.
-            let norm = vs.norm();
-            let mut outside = DVector::zeros(n);
-            for (c, &l) in eig.eigenvalues.iter().enumerate() {
-                if zero(l) {
-                    let u = eig.eigenvectors.column(c);
-                    outside += u * u.dot(&vs);
-                }
-            }
-            let part = outside.norm() / norm;
-            if part > RANGE_TOL {
-                return Err(Error::Invalid {
-                    field: "v".into(),
-                    reason: format!(
-                        "not a velocity the contacts can have: W is singular (rank {rank} of {n}: the contacts are redundant) and v has a component of {} of |v| outside its range (a velocity J u of the bodies has none)",
-                        Num(part)
-                    ),
-                });
-            }
-            // Below round-off of the eigenvectors themselves, v⁻ is kept exactly as given.
-            if part > 64.0 * f64::EPSILON {
-                vs -= outside;
-            }
-        }
-        for (c, &l) in eig.eigenvalues.iter().enumerate() {
-            if !zero(l) {
-                let x = eig.eigenvectors.column(c).dot(&vs);
-                energy += 0.5 * x * x / l;
-            }
-        }
-        let approach_energy = units.work(energy);
-        crate::error::representable_energy(approach_energy, vmax)?;
-        let v = if vs.as_slice() != (DVector::from_column_slice(v) * units.a).as_slice() {
-            vs.map(|x| units.velocity(x))
-        } else {
-            DVector::from_column_slice(v)
-        };
-        let blocks = (0..k)
-            .map(|j| InverseInertia::new(block(&ws, j)))
+        let blocks = (0..c.k)
+            .map(|j| InverseInertia::new(block(&c.ws, j)))
             .collect::<Result<Vec<_>>>()?;
         Ok(Self {
-            k,
-            w,
-            v,
-            mu,
-            e,
-            rank,
-            approach_energy,
-            units,
-            ws,
-            vs,
+            k: c.k,
+            w: c.w,
+            v: c.v,
+            mu: c.mu,
+            e: c.e,
+            rank: c.rank,
+            approach_energy: c.approach_energy,
+            units: c.units,
+            ws: c.ws,
+            vs: c.vs,
             blocks,
-            stiffness: vec![1.0; k],
+            stiffness: vec![1.0; c.k],
             exponent: HERTZ_EXPONENT,
         })
     }
@@ -383,30 +183,7 @@ impl MultiProblem {
         friction: &[f64],
         restitution: &[f64],
     ) -> Result<Self> {
-        let n = 2 * contacts;
-        let expected = n * (n + 1) / 2;
-        if contacts == 0 || upper.len() != expected {
-            return Err(Error::Invalid {
-                field: "w".into(),
-                reason: if contacts == 0 {
-                    "at least one contact is needed".into()
-                } else {
-                    format!(
-                        "expected {expected} numbers (the upper triangle of the {n} × {n} W, row by row), got {}",
-                        upper.len()
-                    )
-                },
-            });
-        }
-        let mut w = DMatrix::zeros(n, n);
-        let mut it = upper.iter();
-        for i in 0..n {
-            for j in i..n {
-                let x = *it.next().expect("counted above");
-                w[(i, j)] = x;
-                w[(j, i)] = x;
-            }
-        }
+        let w = from_upper_triangle(2, contacts, upper)?;
         Self::new(w, v, friction, restitution)
     }
 
