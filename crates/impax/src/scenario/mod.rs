@@ -2,9 +2,11 @@
 //! explorer arguments), read and checked once, here, for every front end.
 //!
 //! Today: the planar body scenario of `impax compare` — one striking body against a fixed
-//! surface, or two free bodies — with its TOML format ([`PlanarScenario::from_toml`]) and the
-//! builder of each body ([`BodySpec::build`]). The command line, the sweeps, the Python
-//! bindings and the explorer adapt these types rather than reading shapes themselves.
+//! surface, or two free bodies — with its TOML format ([`PlanarScenario::from_toml`]), the
+//! table of shapes and their parameters ([`Shape`], [`ShapeParam`], and [`ShapeScalar`] for
+//! the numbers a sweep sets by name) and the one builder of a body ([`BodySpec::build`]). The
+//! command line, the sweeps, the Python bindings and the explorer fill a [`BodySpec`] (or read
+//! the table) rather than knowing shapes themselves: a shape added here works in all of them.
 //!
 //! ```toml
 //! friction = 0.4          # μ
@@ -36,6 +38,8 @@
 
 mod body;
 mod planar;
+mod shape;
 
 pub use body::{BodySpec, BuiltBody, Scale};
 pub use planar::{BuiltPlanar, PlanarScenario, SEED_TOML};
+pub use shape::{AngleUnit, Need, Shape, ShapeParam, ShapeScalar};
