@@ -7,7 +7,7 @@ use impax::error::Num;
 use impax::math::{Mat2, Mat3};
 use impax::LawId;
 use numpy::{
-    AllowTypeChange, PyArrayDyn, PyArrayLikeDyn, PyArrayMethods, PyUntypedArray,
+    AllowTypeChange, PyArray2, PyArrayDyn, PyArrayLikeDyn, PyArrayMethods, PyUntypedArray,
     PyUntypedArrayMethods,
 };
 use pyo3::exceptions::{PyOverflowError, PyTypeError, PyValueError};
@@ -23,6 +23,14 @@ pub fn value_error(message: impl Display) -> PyErr {
 /// A library result as a Python result (`ValueError` with the library's message).
 pub fn lib<T>(r: impax::Result<T>) -> PyResult<T> {
     r.map_err(value_error)
+}
+
+/// A 2×2 matrix (`W`) as a numpy array.
+pub fn mat2<'py>(py: Python<'py>, w: Mat2) -> PyResult<Bound<'py, PyArray2<f64>>> {
+    Ok(PyArray2::from_vec2(
+        py,
+        &[vec![w[(0, 0)], w[(0, 1)]], vec![w[(1, 0)], w[(1, 1)]]],
+    )?)
 }
 
 /// A law id, parsed as the CLI parses it (`law: unknown impact law ...`).
