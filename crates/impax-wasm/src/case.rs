@@ -32,11 +32,35 @@ use impax::bodies::{self, BodyState2, PlanarImpact, Side};
 use impax::mechanism::builtin::{DoublePendulum, STANDARD_GRAVITY};
 use impax::mechanism::impact::MechanismImpact;
 use impax::planar::ContactProblem;
-use impax::scenario::{BodySpec, Shape};
+use impax::scenario::{AngleUnit, BodySpec, Shape, ShapeScalar};
 use serde::Deserialize;
 
 /// The body shapes a request may name: the core's ([`Shape::NAMES`]).
 pub const SHAPES: &[&str] = &Shape::NAMES;
+
+/// Each shape's numbers as the core's table names them (see [`crate::info_json`]): the page
+/// builds the sliders of a shape it has no preset for, and every request's body, from them.
+pub fn shape_parameters() -> serde_json::Value {
+    let mut shapes = serde_json::Map::new();
+    for shape in Shape::ALL {
+        let scalars: Vec<serde_json::Value> = ShapeScalar::ALL
+            .into_iter()
+            .filter(|&s| shape.has_scalar(s))
+            .map(|s| {
+                let (p, i) = s.param();
+                serde_json::json!({
+                    "name": s.name(),
+                    "key": p.key(AngleUnit::Degrees),
+                    "index": if p.count() == 1 { None } else { Some(i) },
+                    "label": s.label(),
+                    "quantity": s.quantity().name(),
+                })
+            })
+            .collect();
+        shapes.insert(shape.name().into(), scalars.into());
+    }
+    shapes.into()
+}
 
 /// The parameters of a body request a map may sweep.
 pub const BODY_PARAMETERS: [&str; 5] = [

@@ -132,6 +132,49 @@ fn every_shape_resolves() {
     }
 }
 
+/// Every shape the module lists (`info().shapes`, the core's table) is requested as the page
+/// requests a shape it has no preset for: its numbers from `shape_parameters`, put where `key`
+/// and `index` say, valued by their quantity. Each resolves with every law and an animation
+/// that stays above the floor.
+#[test]
+fn every_listed_shape_resolves_from_its_parameters() {
+    let info: Value = serde_json::from_str(&impax_wasm::info_json()).unwrap();
+    let shapes = info["shapes"].as_array().unwrap();
+    assert_eq!(shapes.len(), impax::scenario::Shape::ALL.len());
+    for shape in shapes {
+        let name = shape.as_str().unwrap();
+        let mut b =
+            json!({"shape": name, "mass": 1.5, "speed": 1, "alpha_deg": 30, "spin_ratio": 0.2});
+        let numbers = info["shape_parameters"][name].as_array().unwrap();
+        assert!(!numbers.is_empty(), "{name}");
+        for p in numbers {
+            let x = match p["quantity"].as_str().unwrap() {
+                "length" => 0.8,
+                "angle" => 20.0,
+                "inertia" => 0.5,
+                "offset" => -0.5,
+                q => panic!("{name}: unknown quantity {q}"),
+            };
+            let key = p["key"].as_str().unwrap();
+            match p["index"].as_u64() {
+                None => b[key] = json!(x),
+                Some(i) => {
+                    if b[key].is_null() {
+                        b[key] = json!([f64::NAN, f64::NAN]);
+                    }
+                    b[key][i as usize] = json!(x);
+                }
+            }
+        }
+        let v = compare(&json!({"friction": 0.4, "restitution": 0.7, "body": b}));
+        assert!(v["error"].is_null(), "{b}: {v}");
+        let scenario = v["scenario"].as_str().unwrap();
+        assert!(scenario.starts_with(name) || name == "rigid", "{scenario}");
+        assert_eq!(v["results"].as_array().unwrap().len(), LawId::ALL.len());
+        above_the_floor(&v["animation"]);
+    }
+}
+
 /// No frame of the animation takes a body through the floor `y = 0`.
 fn above_the_floor(animation: &Value) {
     use impax_wasm::animation::Outline;

@@ -42,4 +42,4 @@ mod shape;
 
 pub use body::{BodySpec, BuiltBody, Scale};
 pub use planar::{BuiltPlanar, PlanarScenario, SEED_TOML};
-pub use shape::{AngleUnit, Need, Shape, ShapeParam, ShapeScalar};
+pub use shape::{AngleUnit, Need, Quantity, Shape, ShapeParam, ShapeScalar};

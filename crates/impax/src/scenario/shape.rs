@@ -334,6 +334,19 @@ impl ShapeScalar {
         }
     }
 
+    /// What it measures.
+    pub fn quantity(self) -> Quantity {
+        match self {
+            ShapeScalar::Radius
+            | ShapeScalar::Length
+            | ShapeScalar::SemiAxisA
+            | ShapeScalar::SemiAxisB => Quantity::Length,
+            ShapeScalar::AngleDeg => Quantity::Angle,
+            ShapeScalar::Inertia => Quantity::Inertia,
+            ShapeScalar::ContactT | ShapeScalar::ContactN => Quantity::Offset,
+        }
+    }
+
     /// Whether its values must be `> 0` (lengths, the moment of inertia); the others take any
     /// finite value the body's builder accepts.
     pub fn positive(self) -> bool {
@@ -345,5 +358,32 @@ impl ShapeScalar {
                 | ShapeScalar::SemiAxisB
                 | ShapeScalar::Inertia
         )
+    }
+}
+
+/// What a shape's number measures: front ends that offer values of it (the explorer's
+/// sliders) choose their ranges by it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum Quantity {
+    /// A length (`> 0`).
+    Length,
+    /// An angle from the surface, in degrees.
+    Angle,
+    /// A moment of inertia (`> 0`).
+    Inertia,
+    /// A coordinate of a point from the centre of mass (any sign).
+    Offset,
+}
+
+impl Quantity {
+    /// `length`, `angle`, `inertia` or `offset`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Quantity::Length => "length",
+            Quantity::Angle => "angle",
+            Quantity::Inertia => "inertia",
+            Quantity::Offset => "offset",
+        }
     }
 }
