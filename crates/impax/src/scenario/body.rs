@@ -47,8 +47,13 @@ pub struct BodySpec {
     pub inertia: Option<f64>,
     /// Contact point from the centre of mass, `[t, n]` (rigid).
     pub contact: Option<[f64; 2]>,
-    /// Angle from the surface (rod; ellipse, its `a` axis) in [`BodySpec::angle_unit`]: the
-    /// key `angle_deg` of files.
+    /// Half-width and half-height `[a, b]` (box).
+    pub half_extents: Option<[f64; 2]>,
+    /// The signs `[s_a, s_b]` (each `±1`) of the corner that strikes, in the body's frame
+    /// (box; default: the lowest corner).
+    pub corner: Option<[f64; 2]>,
+    /// Angle from the surface (rod; ellipse, its `a` axis; box, its `a` side) in
+    /// [`BodySpec::angle_unit`]: the key `angle_deg` of files.
     #[serde(rename = "angle_deg")]
     pub angle: Option<f64>,
     /// Approach speed `v0 > 0` (round bodies).
@@ -149,6 +154,8 @@ impl BodySpec {
             ShapeParam::Inertia => one(self.inertia),
             ShapeParam::Contact => self.contact,
             ShapeParam::Angle => one(self.angle),
+            ShapeParam::HalfExtents => self.half_extents,
+            ShapeParam::Corner => self.corner,
         }
     }
 
@@ -160,6 +167,8 @@ impl BodySpec {
             ShapeParam::Inertia => Slot::One(&mut self.inertia),
             ShapeParam::Contact => Slot::Two(&mut self.contact),
             ShapeParam::Angle => Slot::One(&mut self.angle),
+            ShapeParam::HalfExtents => Slot::Two(&mut self.half_extents),
+            ShapeParam::Corner => Slot::Two(&mut self.corner),
         }
     }
 
@@ -265,6 +274,11 @@ impl BodySpec {
                 let [rt, rn] = self.contact.unwrap_or([nan; 2]);
                 RigidBody2::new(m, self.inertia.unwrap_or(nan), Vec2::new(rt, rn))
             }
+            Shape::Box => {
+                let angle = self.angle_radians(prefix)?;
+                let half_extents = self.half_extents.unwrap_or([nan; 2]);
+                bodies::rectangle(m, half_extents, angle, self.corner, side)
+            }
         };
         body.map_err(|e| e.prefixed(prefix))
     }
@@ -292,6 +306,15 @@ impl BodySpec {
                     "rigid body m = {m}, I = {}, contact at ({rt}, {rn})",
                     self.inertia.unwrap_or(nan)
                 )
+            }
+            Some(Shape::Box) => {
+                let [a, b] = self.half_extents.unwrap_or([nan; 2]);
+                match self.corner {
+                    None => format!("box m = {m}, a = {a}, b = {b}, at {angle}"),
+                    Some([sa, sb]) => {
+                        format!("box m = {m}, a = {a}, b = {b}, at {angle}, corner ({sa}, {sb})")
+                    }
+                }
             }
             None => format!("{} m = {m}", self.shape),
         }

@@ -14,12 +14,16 @@
 //! laws = ["whittaker", "energetic"]   # optional; default: every law
 //!
 //! [body]                  # the striking body A (contact at its lowest point)
-//! shape = "sphere"        # sphere | disc | rod | ellipse | rigid
+//! shape = "sphere"        # sphere | disc | rod | ellipse | rigid | box
 //! mass = 1.0
 //! radius = 1.0            # sphere, disc
 //! # length = 2.0; angle_deg = 50        (rod: angle from the surface)
 //! # semi_axes = [2.0, 1.0]; angle_deg = 20   (ellipse: its a axis from the surface)
 //! # inertia = 0.5; contact = [0.3, -1.0]     (rigid: contact point from the centre, (t, n))
+//! # half_extents = [1.0, 0.5]; angle_deg = 20; corner = [-1, -1]
+//! #     (box: half-width a, half-height b; its a side from the surface, default 0; the
+//! #     corner that strikes, signs in the box's frame, default the lowest — needed when an
+//! #     edge is lowest, as at angle 0)
 //! speed = 1.0             # round bodies: v0, α, γ as in paper A …
 //! alpha_deg = 30.0
 //! spin_ratio = 0.0

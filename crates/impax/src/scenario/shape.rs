@@ -20,6 +20,9 @@ pub enum Shape {
     Ellipse,
     /// Any planar rigid body (`inertia`, `contact`).
     Rigid,
+    /// A uniform rectangle striking with one corner (`half_extents`, optional `angle_deg` and
+    /// `corner`).
+    Box,
 }
 
 /// Whether a shape needs a parameter or may go without it (its default then applies).
@@ -33,16 +36,17 @@ pub enum Need {
 
 impl Shape {
     /// Every shape, in the order of [`Shape::NAMES`].
-    pub const ALL: [Shape; 5] = [
+    pub const ALL: [Shape; 6] = [
         Shape::Sphere,
         Shape::Disc,
         Shape::Rod,
         Shape::Ellipse,
         Shape::Rigid,
+        Shape::Box,
     ];
 
     /// The names of [`Shape::ALL`], as scenarios spell them.
-    pub const NAMES: [&'static str; 5] = ["sphere", "disc", "rod", "ellipse", "rigid"];
+    pub const NAMES: [&'static str; 6] = ["sphere", "disc", "rod", "ellipse", "rigid", "box"];
 
     /// The name, e.g. `"rod"`.
     pub fn name(self) -> &'static str {
@@ -52,6 +56,7 @@ impl Shape {
             Shape::Rod => "rod",
             Shape::Ellipse => "ellipse",
             Shape::Rigid => "rigid",
+            Shape::Box => "box",
         }
     }
 
@@ -88,6 +93,11 @@ impl Shape {
             Shape::Rigid => &[
                 (ShapeParam::Inertia, Required),
                 (ShapeParam::Contact, Required),
+            ],
+            Shape::Box => &[
+                (ShapeParam::HalfExtents, Required),
+                (ShapeParam::Angle, Optional),
+                (ShapeParam::Corner, Optional),
             ],
         }
     }
@@ -196,19 +206,26 @@ pub enum ShapeParam {
     /// `contact = [r_t, r_n]`, the contact point from the centre of mass (rigid).
     Contact,
     /// `angle_deg` (or `angle` in radians): the body's angle from the surface (rod; ellipse,
-    /// its `a` axis).
+    /// its `a` axis; box, its `a` side).
     Angle,
+    /// `half_extents = [a, b]`: half-width and half-height (box).
+    HalfExtents,
+    /// `corner = [s_a, s_b]`: the signs (`±1`) of the corner that strikes, in the body's frame
+    /// (box; default: the lowest corner).
+    Corner,
 }
 
 impl ShapeParam {
     /// Every shape parameter, in the order errors list them.
-    pub const ALL: [ShapeParam; 6] = [
+    pub const ALL: [ShapeParam; 8] = [
         ShapeParam::Radius,
         ShapeParam::Length,
         ShapeParam::SemiAxes,
         ShapeParam::Inertia,
         ShapeParam::Contact,
         ShapeParam::Angle,
+        ShapeParam::HalfExtents,
+        ShapeParam::Corner,
     ];
 
     /// The key, with angles in `unit`: `radius`, `semi_axes`, `angle_deg` or `angle`.
@@ -221,13 +238,18 @@ impl ShapeParam {
             (ShapeParam::Contact, _) => "contact",
             (ShapeParam::Angle, AngleUnit::Degrees) => "angle_deg",
             (ShapeParam::Angle, AngleUnit::Radians) => "angle",
+            (ShapeParam::HalfExtents, _) => "half_extents",
+            (ShapeParam::Corner, _) => "corner",
         }
     }
 
     /// How many numbers it holds (1, or 2 for a pair such as `semi_axes`).
     pub fn count(self) -> usize {
         match self {
-            ShapeParam::SemiAxes | ShapeParam::Contact => 2,
+            ShapeParam::SemiAxes
+            | ShapeParam::Contact
+            | ShapeParam::HalfExtents
+            | ShapeParam::Corner => 2,
             _ => 1,
         }
     }
@@ -271,11 +293,15 @@ pub enum ShapeScalar {
     ContactT,
     /// `contact_n`: `contact[1]`.
     ContactN,
+    /// `half_extent_a`: `half_extents[0]`.
+    HalfExtentA,
+    /// `half_extent_b`: `half_extents[1]`.
+    HalfExtentB,
 }
 
 impl ShapeScalar {
     /// Every one, in the order field lists show them.
-    pub const ALL: [ShapeScalar; 8] = [
+    pub const ALL: [ShapeScalar; 10] = [
         ShapeScalar::Radius,
         ShapeScalar::Length,
         ShapeScalar::AngleDeg,
@@ -284,6 +310,8 @@ impl ShapeScalar {
         ShapeScalar::Inertia,
         ShapeScalar::ContactT,
         ShapeScalar::ContactN,
+        ShapeScalar::HalfExtentA,
+        ShapeScalar::HalfExtentB,
     ];
 
     /// The name, e.g. `semi_axis_a` (the command line writes `semi-axis-a`).
@@ -297,6 +325,8 @@ impl ShapeScalar {
             ShapeScalar::Inertia => "inertia",
             ShapeScalar::ContactT => "contact_t",
             ShapeScalar::ContactN => "contact_n",
+            ShapeScalar::HalfExtentA => "half_extent_a",
+            ShapeScalar::HalfExtentB => "half_extent_b",
         }
     }
 
@@ -317,6 +347,8 @@ impl ShapeScalar {
             ShapeScalar::Inertia => "moment of inertia I",
             ShapeScalar::ContactT => "contact offset r_t",
             ShapeScalar::ContactN => "contact offset r_n",
+            ShapeScalar::HalfExtentA => "half-width a",
+            ShapeScalar::HalfExtentB => "half-height b",
         }
     }
 
@@ -331,6 +363,8 @@ impl ShapeScalar {
             ShapeScalar::Inertia => (ShapeParam::Inertia, 0),
             ShapeScalar::ContactT => (ShapeParam::Contact, 0),
             ShapeScalar::ContactN => (ShapeParam::Contact, 1),
+            ShapeScalar::HalfExtentA => (ShapeParam::HalfExtents, 0),
+            ShapeScalar::HalfExtentB => (ShapeParam::HalfExtents, 1),
         }
     }
 
@@ -340,7 +374,9 @@ impl ShapeScalar {
             ShapeScalar::Radius
             | ShapeScalar::Length
             | ShapeScalar::SemiAxisA
-            | ShapeScalar::SemiAxisB => Quantity::Length,
+            | ShapeScalar::SemiAxisB
+            | ShapeScalar::HalfExtentA
+            | ShapeScalar::HalfExtentB => Quantity::Length,
             ShapeScalar::AngleDeg => Quantity::Angle,
             ShapeScalar::Inertia => Quantity::Inertia,
             ShapeScalar::ContactT | ShapeScalar::ContactN => Quantity::Offset,
@@ -357,6 +393,8 @@ impl ShapeScalar {
                 | ShapeScalar::SemiAxisA
                 | ShapeScalar::SemiAxisB
                 | ShapeScalar::Inertia
+                | ShapeScalar::HalfExtentA
+                | ShapeScalar::HalfExtentB
         )
     }
 }

@@ -6,6 +6,7 @@
 
 mod analysis;
 mod bodies3;
+mod box_shape;
 mod brute_force;
 mod lcp;
 mod lcp_spatial;
