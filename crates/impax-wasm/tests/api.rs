@@ -370,3 +370,50 @@ fn c_abi_round_trip() {
     };
     assert_eq!(info["laws"].as_array().unwrap().len(), LawId::ALL.len());
 }
+
+/// The planar box, added to the core's table alone, in the explorer's requests: listed, with
+/// sliders for its numbers, and the `W` of the rigid body of the same inertia and corner.
+#[test]
+fn a_box_request_is_the_rigid_body_with_its_inertia_and_corner() {
+    let info: Value = serde_json::from_str(&impax_wasm::info_json()).unwrap();
+    assert!(info["shapes"].as_array().unwrap().contains(&json!("box")));
+    let names: Vec<&str> = info["shape_parameters"]["box"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|p| p["name"].as_str().unwrap())
+        .collect();
+    assert_eq!(names, ["angle_deg", "half_extent_a", "half_extent_b"]);
+    let (m, a, b, theta) = (1.5f64, 1.0f64, 0.4f64, 25f64.to_radians());
+    let (s, c) = theta.sin_cos();
+    let motion = |mut body: Value| {
+        for (k, x) in [("speed", 1.0), ("alpha_deg", 30.0), ("spin_ratio", 0.2)] {
+            body[k] = json!(x);
+        }
+        compare(&json!({"friction": 0.4, "restitution": 0.7, "body": body}))
+    };
+    let boxed = motion(json!({"shape": "box", "mass": m, "half_extents": [a, b], "angle_deg": 25}));
+    let rigid = motion(
+        json!({"shape": "rigid", "mass": m, "inertia": m * (a * a + b * b) / 3.0,
+                              "contact": [-a * c + b * s, -a * s - b * c]}),
+    );
+    assert!(boxed["error"].is_null(), "{boxed}");
+    assert!(boxed["scenario"]
+        .as_str()
+        .unwrap()
+        .starts_with("box m = 1.5, a = 1, b = 0.4, at 25°"));
+    for (x, y) in [(&boxed["problem"]["w"], &rigid["problem"]["w"])] {
+        for i in 0..2 {
+            for j in 0..2 {
+                let (p, q) = (x[i][j].as_f64().unwrap(), y[i][j].as_f64().unwrap());
+                assert!((p - q).abs() <= 1e-15, "W[{i}][{j}]: {p} vs {q}");
+            }
+        }
+    }
+    // Flat on an edge: an error naming the corner, not a trap.
+    let flat = motion(json!({"shape": "box", "mass": m, "half_extents": [a, b]}));
+    assert!(
+        flat["error"].as_str().unwrap().starts_with("corner:"),
+        "{flat}"
+    );
+}
