@@ -16,6 +16,7 @@
 //! | `length`, `angle-deg` | rod | `> 0`; `(0, 180)` degrees |
 //! | `semi-axis-a`, `semi-axis-b`, `angle-deg` | ellipse | `> 0`; degrees |
 //! | `inertia`, `contact-t`, `contact-n` | rigid | `> 0`; any |
+//! | `half-extent-a`, `half-extent-b`, `angle-deg` | box | `> 0`; degrees |
 //! | `speed`, `alpha-deg`, `spin-ratio` | round bodies given by v0, α, γ | `> 0`; `[−90, 90]` degrees; any |
 //! | `vx`, `vy`, `omega` | bodies given by their velocity | any |
 
