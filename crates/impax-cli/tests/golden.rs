@@ -228,3 +228,30 @@ fn sweep_body_fields() {
         insta::assert_snapshot!(format!("sweep_{name}"), csv);
     }
 }
+
+/// The built-in mechanisms through their descriptions (flags and files): `conserved` of the
+/// pendulums on a carrier and of the sphere, `audit sphere`, `compare` of a mechanism file.
+#[test]
+fn built_in_mechanisms() {
+    text_and_json("conserved_ring_pendulum", &["conserved", "ring-pendulum"]);
+    text_and_json(
+        "conserved_cart_pendulum",
+        &[
+            "conserved",
+            "cart-pendulum",
+            "--angles-deg",
+            "45",
+            "--rates",
+            "0.2,1",
+            "--masses",
+            "2,0.5",
+        ],
+    );
+    text_and_json("conserved_sphere", &["conserved", "sphere"]);
+    text_and_json("audit_sphere", &["audit", "sphere"]);
+    let rod = scenario(
+        "mechanism_rod",
+        "mechanism = \"rod\"\nfriction = 0.6\nrestitution = 0.4\nmasses = [2.0]\nlengths = [1.5]\nangles_deg = [40.0]\nrates = [0.3, -1.0, 0.5]\n",
+    );
+    text_and_json("compare_mechanism_rod", &["compare", rod.to_str().unwrap()]);
+}
