@@ -3,7 +3,6 @@
 //! Messages are the library's `Display` (the text the CLI prints after `error: `), so that a
 //! problem rejected by `impax resolve` is rejected here with the same words.
 
-use impax::error::Num;
 use impax::math::{Mat2, Mat3};
 use impax::LawId;
 use numpy::{
@@ -518,24 +517,4 @@ pub fn vector(obj: &Bound<'_, PyAny>, n: usize, what: &str) -> PyResult<[f64; 3]
         )));
     }
     Ok([s.data[0], s.data[1], s.data[2]])
-}
-
-/// A fixed-length list of floats (body and mechanism parameters): the CLI's
-/// `FIELD: needs N value(s), got M`.
-pub fn list(field: &str, values: &[f64], n: usize) -> PyResult<()> {
-    if values.len() != n {
-        return Err(value_error(format!(
-            "{field}: needs {n} value(s), got {}",
-            values.len()
-        )));
-    }
-    for (i, x) in values.iter().enumerate() {
-        if !x.is_finite() {
-            return Err(value_error(format!(
-                "{field}[{i}]: must be a finite number, got {}",
-                Num(*x)
-            )));
-        }
-    }
-    Ok(())
 }

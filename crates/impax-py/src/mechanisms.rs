@@ -1,14 +1,13 @@
 //! Built-in mechanisms striking with their contact: [`MechanismImpact`], [`mechanism`] by
 //! name with the command line's defaults, and [`double_pendulum`]. Angles in radians.
 
-use crate::convert::{arg, lib, list, mat2, value_error};
+use crate::convert::{arg, lib, mat2, value_error};
 use crate::outcome::{Context, Outcome, Raw};
 use impax::math::Vec2;
-use impax::mechanism::builtin::{
-    BuiltIn, CartPendulum, DoublePendulum, RingPendulum, Rod, Sphere, STANDARD_GRAVITY,
-};
+use impax::mechanism::builtin::{BuiltIn, STANDARD_GRAVITY};
 use impax::mechanism::impact::MechanismImpact as LibMechanismImpact;
 use impax::mechanism::Mechanism;
+use impax::scenario::{AngleUnit, BuiltMechanism, MechanismSpec};
 use impax::LawId;
 use numpy::PyArray2;
 use pyo3::prelude::*;
@@ -134,22 +133,9 @@ impl MechanismImpact {
     }
 }
 
-fn values(field: &str, v: Option<Vec<f64>>, default: &[f64]) -> PyResult<Vec<f64>> {
-    let v = v.unwrap_or_else(|| default.to_vec());
-    list(field, &v, default.len())?;
-    Ok(v)
-}
-
-fn reject(name: &str, field: &str, present: bool) -> PyResult<()> {
-    if present {
-        Err(value_error(format!("{field}: not a parameter of {name}")))
-    } else {
-        Ok(())
-    }
-}
-
-/// A built-in mechanism by name, with the CLI's defaults (`impax compare MECHANISM`);
-/// angles in radians.
+/// A built-in mechanism by name, with the CLI's defaults (`impax compare MECHANISM`); the
+/// description, its checks and its defaults are the core's (`impax::scenario::MechanismSpec`),
+/// with angles in radians.
 ///
 /// | name | coordinates | `masses`, `lengths`, `radius` | defaults |
 /// |---|---|---|---|
@@ -173,81 +159,31 @@ pub fn mechanism(
     #[pyo3(from_py_with = arg::friction)] friction: f64,
     #[pyo3(from_py_with = arg::restitution)] restitution: f64,
 ) -> PyResult<MechanismImpact> {
-    let g = gravity.unwrap_or(STANDARD_GRAVITY);
-    let (static_name, mechanism, q, u, description) = match name {
-        "double-pendulum" => {
-            reject(name, "radius", radius.is_some())?;
-            reject(name, "position", position.is_some())?;
-            let m = values("masses", masses, &[1.0, 1.0])?;
-            let l = values("lengths", lengths, &[1.0, 1.0])?;
-            let q = values("angles", angles, &[FRAC_PI_6, 0.0])?;
-            let u = values("rates", rates, &[-1.0, 2.0])?;
-            let mut dp = lib(DoublePendulum::new(m[0], m[1], l[0], l[1], g, 0.0))?;
-            dp.put_floor_at_tip([q[0], q[1]]);
-            let d = format!(
-                "double pendulum (m = {}, {}; l = {}, {}; g = {g}): θ = ({}, {}) rad, rates ({}, {}) rad/s; the tip of rod 2 strikes the floor",
-                m[0], m[1], l[0], l[1], q[0], q[1], u[0], u[1]
-            );
-            ("double-pendulum", BuiltIn::DoublePendulum(dp), q, u, d)
-        }
-        "sphere" => {
-            reject(name, "lengths", lengths.is_some())?;
-            let m = values("masses", masses, &[1.0])?;
-            let r = radius.unwrap_or(1.0);
-            let p = values("position", position, &[0.0, r])?;
-            let a = values("angles", angles, &[0.0])?;
-            let (s, c) = FRAC_PI_6.sin_cos();
-            let u = values("rates", rates, &[s, -c, 0.0])?;
-            let d = format!(
-                "sphere (m = {}, r = {r}; g = {g}) at ({}, {}), θ = {} rad, velocity ({}, {}), ω = {} rad/s; the floor is y = 0",
-                m[0], p[0], p[1], a[0], u[0], u[1], u[2]
-            );
-            let mech = BuiltIn::Sphere(lib(Sphere::new(m[0], r, g, 0.0))?);
-            ("sphere", mech, vec![p[0], p[1], a[0]], u, d)
-        }
-        "rod" => {
-            reject(name, "radius", radius.is_some())?;
-            let m = values("masses", masses, &[1.0])?;
-            let l = values("lengths", lengths, &[1.0])?;
-            let a = values("angles", angles, &[50f64.to_radians()])?;
-            let lift = 0.5 * l[0] * a[0].sin().abs();
-            let p = values("position", position, &[0.0, lift])?;
-            let u = values("rates", rates, &[0.5, -1.0, 0.0])?;
-            let d = format!(
-                "rod (m = {}, l = {}; g = {g}) at ({}, {}), θ = {} rad from the floor, velocity ({}, {}), ω = {} rad/s; the floor is y = 0",
-                m[0], l[0], p[0], p[1], a[0], u[0], u[1], u[2]
-            );
-            let mech = BuiltIn::Rod(lib(Rod::new(m[0], l[0], g, 0.0))?);
-            ("rod", mech, vec![p[0], p[1], a[0]], u, d)
-        }
-        "ring-pendulum" | "cart-pendulum" => {
-            // Built (so that bad parameters are named), then refused: no contact to strike.
-            let m = values("masses", masses, &[1.0, 1.0])?;
-            let l = values("lengths", lengths, &[1.0])?;
-            if name == "ring-pendulum" {
-                lib(RingPendulum::new(
-                    m[0],
-                    radius.unwrap_or(1.0),
-                    m[1],
-                    l[0],
-                    g,
-                ))?;
-            } else {
-                lib(CartPendulum::new(m[0], m[1], l[0], g))?;
-            }
-            return Err(value_error(format!(
-                "{name}: has no contact point to strike (try `impax conserved {name}`)"
-            )));
-        }
-        other => {
-            return Err(value_error(format!(
-                "mechanism: unknown mechanism `{other}` (known: {})",
-                BuiltIn::NAMES.join(", ")
-            )))
-        }
+    let spec = MechanismSpec {
+        mechanism: name.into(),
+        masses,
+        lengths,
+        radius,
+        gravity,
+        angles,
+        rates,
+        position,
+        angle_unit: AngleUnit::Radians,
+        ..MechanismSpec::default()
     };
+    let BuiltMechanism {
+        mechanism,
+        q,
+        u,
+        description,
+    } = lib(spec.build())?;
+    if mechanism.contacts().is_empty() {
+        return Err(value_error(format!(
+            "{name}: has no contact point to strike (try `impax conserved {name}`)"
+        )));
+    }
     let m = MechanismImpact {
-        name: static_name,
+        name: mechanism.name(),
         mechanism,
         q,
         u,

@@ -41,9 +41,11 @@
 //! `other.velocity`).
 
 mod body;
+mod mechanism;
 mod planar;
 mod shape;
 
 pub use body::{BodySpec, BuiltBody, Scale};
+pub use mechanism::{BuiltMechanism, MechanismSpec, MAX_ANGLE_DEG};
 pub use planar::{BuiltPlanar, PlanarScenario, SEED_TOML};
 pub use shape::{AngleUnit, Need, Quantity, Shape, ShapeParam, ShapeScalar};

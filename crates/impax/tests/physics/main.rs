@@ -10,6 +10,7 @@ mod box_shape;
 mod brute_force;
 mod lcp;
 mod lcp_spatial;
+mod mechanism_specs;
 mod mechanisms;
 mod multi_contact;
 mod multi_lzb;
