@@ -7,6 +7,8 @@
 //! the numbers a sweep sets by name) and the one builder of a body ([`BodySpec::build`]). The
 //! command line, the sweeps, the Python bindings and the explorer fill a [`BodySpec`] (or read
 //! the table) rather than knowing shapes themselves: a shape added here works in all of them.
+//! The built-in mechanisms likewise: [`MechanismSpec::build`] (a file with a `mechanism` key,
+//! the mechanism flags, Python's `mechanism(...)`).
 //!
 //! ```toml
 //! friction = 0.4          # μ
