@@ -15,6 +15,7 @@ const COEFFICIENTS = [
   { key: "restitution", label: "restitution e", unit: "", min: 0, max: 1, step: 0.01, value: 0.7 },
 ];
 const MASS = { key: "mass", label: "mass m", unit: "", min: 0.1, max: 5, step: 0.1, value: 1 };
+// Slider presets of the shapes (keys: the core's names of their numbers, info.shape_parameters).
 const SHAPE_PARAMETERS = {
   sphere: [MASS, { key: "radius", label: "radius r", unit: "length", min: 0.1, max: 3, step: 0.05, value: 1 }],
   disc: [MASS, { key: "radius", label: "radius r", unit: "length", min: 0.1, max: 3, step: 0.05, value: 1 }],
@@ -22,13 +23,20 @@ const SHAPE_PARAMETERS = {
     { key: "length", label: "length L", unit: "length", min: 0.2, max: 4, step: 0.05, value: 2 },
     { key: "angle_deg", label: "angle to the surface", unit: "°", min: 5, max: 175, step: 0.5, value: 50 }],
   ellipse: [MASS,
-    { key: "semi_a", label: "semi-axis a", unit: "length", min: 0.2, max: 3, step: 0.05, value: 2 },
-    { key: "semi_b", label: "semi-axis b", unit: "length", min: 0.2, max: 3, step: 0.05, value: 1 },
+    { key: "semi_axis_a", label: "semi-axis a", unit: "length", min: 0.2, max: 3, step: 0.05, value: 2 },
+    { key: "semi_axis_b", label: "semi-axis b", unit: "length", min: 0.2, max: 3, step: 0.05, value: 1 },
     { key: "angle_deg", label: "angle of a to the surface", unit: "°", min: -90, max: 90, step: 0.5, value: 20 }],
   rigid: [MASS,
     { key: "inertia", label: "moment of inertia I", unit: "about the centre", min: 0.05, max: 5, step: 0.05, value: 0.5 },
     { key: "contact_t", label: "contact point r_t", unit: "from the centre", min: -2, max: 2, step: 0.05, value: 0.3 },
     { key: "contact_n", label: "contact point r_n", unit: "below the centre", min: -2, max: -0.05, step: 0.05, value: -1 }],
+};
+// The sliders of a shape with no preset, by what its number measures (the core's quantity).
+const QUANTITY_SLIDERS = {
+  length: { unit: "length", min: 0.1, max: 3, step: 0.05, value: 1 },
+  angle: { unit: "° from the surface", min: -90, max: 90, step: 0.5, value: 20 },
+  inertia: { unit: "about the centre", min: 0.05, max: 5, step: 0.05, value: 0.5 },
+  offset: { unit: "from the centre", min: -2, max: 2, step: 0.05, value: 0 },
 };
 const PENDULUM = [
   { key: "angle1_deg", label: "θ₁ (rod 1)", unit: "° from the downward vertical", min: -85, max: 85, step: 0.5, value: 30 },
@@ -95,9 +103,15 @@ window.explorer = state;
 
 const $ = (id) => document.getElementById(id);
 
+function shapeParameters(kind) {
+  if (SHAPE_PARAMETERS[kind]) return SHAPE_PARAMETERS[kind];
+  const generic = (p) => ({ key: p.name, label: p.label, ...QUANTITY_SLIDERS[p.quantity] });
+  return [MASS, ...state.info.shape_parameters[kind].map(generic)];
+}
+
 function parametersOf(kind) {
   if (kind === "double-pendulum") return PENDULUM;
-  return [MOTION[0], MOTION[1], ...COEFFICIENTS, ...SHAPE_PARAMETERS[kind], MOTION[2]];
+  return [MOTION[0], MOTION[1], ...COEFFICIENTS, ...shapeParameters(kind), MOTION[2]];
 }
 
 function buildSliders() {
@@ -163,10 +177,11 @@ function request() {
     };
   }
   const body = { shape: state.kind, mass: v.mass, speed: v.speed, alpha_deg: v.alpha_deg, spin_ratio: v.spin_ratio };
-  if (state.kind === "sphere" || state.kind === "disc") body.radius = v.radius;
-  if (state.kind === "rod") Object.assign(body, { length: v.length, angle_deg: v.angle_deg });
-  if (state.kind === "ellipse") Object.assign(body, { semi_axes: [v.semi_a, v.semi_b], angle_deg: v.angle_deg });
-  if (state.kind === "rigid") Object.assign(body, { inertia: v.inertia, contact: [v.contact_t, v.contact_n] });
+  // The shape's numbers where the core's table puts them (`semi_axis_a` → `semi_axes[0]`).
+  for (const p of state.info.shape_parameters[state.kind]) {
+    if (p.index === null) body[p.key] = v[p.name];
+    else (body[p.key] ||= [])[p.index] = v[p.name];
+  }
   return { friction: v.friction, restitution: v.restitution, body };
 }
 
@@ -489,7 +504,7 @@ function drawRouth() {
 
 function mapParameters() {
   const known = state.info.map_parameters[state.kind === "double-pendulum" ? "mechanism" : "body"];
-  return known.filter((k) => k in state.values || k === "angle_deg" && state.kind in { rod: 1, ellipse: 1 });
+  return known.filter((k) => k in state.values);
 }
 
 function fillAxisSelect(select, chosen) {
@@ -886,6 +901,13 @@ async function main() {
     return;
   }
   state.info = Impax.info();
+  // Shapes of the core the page lists no option for yet (a shape added to the core's table).
+  const select = $("shape"), listed = [...select.options].map((o) => o.value);
+  for (const name of state.info.shapes.filter((n) => !listed.includes(n))) {
+    const o = document.createElement("option");
+    o.value = name; o.textContent = name;
+    select.insertBefore(o, select.querySelector('option[value="double-pendulum"]'));
+  }
   $("shape").addEventListener("change", () => setKind($("shape").value));
   $("reset").addEventListener("click", () => { $("shape").value = "sphere"; state.law = "whittaker"; setKind("sphere"); });
   $("law").addEventListener("change", () => selectLaw($("law").value));

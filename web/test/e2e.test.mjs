@@ -238,6 +238,26 @@ test("the energy-gain map is computed in the page and matches paper A eq. 13", a
   assert.ok(warm > 2000 && blue > 2000, `map pixels: ${warm} warm, ${blue} blue`);
 });
 
+test("every shape of the core's table is offered and resolved (a shape with no preset gets sliders from the core)", async () => {
+  const shapes = await page.evaluate(() => window.explorer.info.shapes);
+  const offered = await page.$$eval("#shape option", (os) => os.map((o) => o.value));
+  for (const s of shapes) assert.ok(offered.includes(s), `the page offers ${s}`);
+  for (const s of shapes) {
+    await page.selectOption("#shape", s);
+    await page.waitForFunction((k) => window.explorer.kind === k && window.explorer.compare, s);
+    const message = await page.$eval("#error", (e) => (e.hidden ? "" : e.textContent));
+    assert.equal(message, "", `${s}: ${message}`);
+    const scenario = await page.$eval("#scenario", (e) => e.textContent);
+    assert.ok(scenario.startsWith(s === "rigid" ? "rigid body" : s), `${s}: ${scenario}`);
+    // Every number of the shape has a slider, named as the core names it.
+    const numbers = await page.evaluate((k) => window.explorer.info.shape_parameters[k].map((p) => p.name), s);
+    for (const n of numbers) assert.ok(await page.$(`#p-${n}`), `${s}: a slider for ${n}`);
+  }
+  assert.ok(!(await page.content()).includes("NaN"));
+  await page.click("#reset");
+  await page.waitForFunction(() => document.querySelector('#laws tr[data-law="whittaker"] td[data-col="dT"]')?.textContent === "+0.24240");
+});
+
 test("Kane's double pendulum: the page agrees with impax compare double-pendulum --json", async () => {
   await page.selectOption("#shape", "double-pendulum");
   await page.waitForSelector('#laws tr[data-law="whittaker"]');

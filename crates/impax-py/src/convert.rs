@@ -3,11 +3,10 @@
 //! Messages are the library's `Display` (the text the CLI prints after `error: `), so that a
 //! problem rejected by `impax resolve` is rejected here with the same words.
 
-use impax::error::Num;
 use impax::math::{Mat2, Mat3};
 use impax::LawId;
 use numpy::{
-    AllowTypeChange, PyArrayDyn, PyArrayLikeDyn, PyArrayMethods, PyUntypedArray,
+    AllowTypeChange, PyArray2, PyArrayDyn, PyArrayLikeDyn, PyArrayMethods, PyUntypedArray,
     PyUntypedArrayMethods,
 };
 use pyo3::exceptions::{PyOverflowError, PyTypeError, PyValueError};
@@ -23,6 +22,14 @@ pub fn value_error(message: impl Display) -> PyErr {
 /// A library result as a Python result (`ValueError` with the library's message).
 pub fn lib<T>(r: impax::Result<T>) -> PyResult<T> {
     r.map_err(value_error)
+}
+
+/// A 2×2 matrix (`W`) as a numpy array.
+pub fn mat2<'py>(py: Python<'py>, w: Mat2) -> PyResult<Bound<'py, PyArray2<f64>>> {
+    Ok(PyArray2::from_vec2(
+        py,
+        &[vec![w[(0, 0)], w[(0, 1)]], vec![w[(1, 0)], w[(1, 1)]]],
+    )?)
 }
 
 /// A law id, parsed as the CLI parses it (`law: unknown impact law ...`).
@@ -512,24 +519,4 @@ pub fn vector(obj: &Bound<'_, PyAny>, n: usize, what: &str) -> PyResult<[f64; 3]
         )));
     }
     Ok([s.data[0], s.data[1], s.data[2]])
-}
-
-/// A fixed-length list of floats (body and mechanism parameters): the CLI's
-/// `FIELD: needs N value(s), got M`.
-pub fn list(field: &str, values: &[f64], n: usize) -> PyResult<()> {
-    if values.len() != n {
-        return Err(value_error(format!(
-            "{field}: needs {n} value(s), got {}",
-            values.len()
-        )));
-    }
-    for (i, x) in values.iter().enumerate() {
-        if !x.is_finite() {
-            return Err(value_error(format!(
-                "{field}[{i}]: must be a finite number, got {}",
-                Num(*x)
-            )));
-        }
-    }
-    Ok(())
 }

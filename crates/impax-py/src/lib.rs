@@ -8,8 +8,11 @@
 //! * [`single`]: `resolve` — one contact-space problem, a small `Outcome` object;
 //! * [`batch`]: `resolve_batch` — many problems on numpy arrays, the GIL released, rayon
 //!   inside, no allocation per row; with `contacts=K`, [`batch_multi`];
-//! * [`bodies`]: `sphere`, `disc`, `rod`, `ellipse`, `rigid_body`, `double_pendulum`,
-//!   `mechanism`, and `compare` — every law side by side, as `impax compare --json`;
+//! * [`shapes`]: `sphere`, `disc`, `rod`, `ellipse`, `rigid_body`, `body_impact` (any shape by
+//!   name) and `body` (a struck body B) — adapters over the core's `impax::scenario::BodySpec`,
+//!   building the classes of [`body`] (`BodyImpact`, `Body`);
+//! * [`mechanisms`]: `mechanism` (a built-in by name), `double_pendulum`, `MechanismImpact`;
+//! * [`compare`]: every law side by side, as `impax compare --json`;
 //! * [`scenarios`]: `rod_rows`, `sphere_rows` — the rows of many bodies at once, for
 //!   `impax.study`.
 
@@ -17,11 +20,14 @@ use pyo3::prelude::*;
 
 mod batch;
 mod batch_multi;
-mod bodies;
+mod body;
+mod compare;
 mod convert;
+mod mechanisms;
 mod multi;
 mod outcome;
 mod scenarios;
+mod shapes;
 mod single;
 
 /// The `impax._impax` extension module.
@@ -60,27 +66,29 @@ fn _impax(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("STATUSES", batch::STATUSES.to_vec())?;
     m.add("SEQUENCES", batch::SEQUENCES.to_vec())?;
     m.add("SEQUENCES_3D", batch::SEQUENCES_3D.to_vec())?;
+    m.add("SHAPES", impax::scenario::Shape::NAMES.to_vec())?;
     m.add(
         "MECHANISMS",
         impax::mechanism::builtin::BuiltIn::NAMES.to_vec(),
     )?;
     m.add_class::<outcome::Outcome>()?;
     m.add_class::<multi::MultiOutcome>()?;
-    m.add_class::<bodies::Body>()?;
-    m.add_class::<bodies::BodyImpact>()?;
-    m.add_class::<bodies::MechanismImpact>()?;
+    m.add_class::<body::Body>()?;
+    m.add_class::<body::BodyImpact>()?;
+    m.add_class::<mechanisms::MechanismImpact>()?;
     m.add_function(wrap_pyfunction!(single::resolve, m)?)?;
     m.add_function(wrap_pyfunction!(batch::resolve_batch, m)?)?;
     m.add_function(wrap_pyfunction!(batch::check_threads, m)?)?;
-    m.add_function(wrap_pyfunction!(bodies::sphere, m)?)?;
-    m.add_function(wrap_pyfunction!(bodies::disc, m)?)?;
-    m.add_function(wrap_pyfunction!(bodies::rod, m)?)?;
-    m.add_function(wrap_pyfunction!(bodies::ellipse, m)?)?;
-    m.add_function(wrap_pyfunction!(bodies::rigid_body, m)?)?;
-    m.add_function(wrap_pyfunction!(bodies::body, m)?)?;
-    m.add_function(wrap_pyfunction!(bodies::double_pendulum, m)?)?;
-    m.add_function(wrap_pyfunction!(bodies::mechanism, m)?)?;
-    m.add_function(wrap_pyfunction!(bodies::compare, m)?)?;
+    m.add_function(wrap_pyfunction!(shapes::sphere, m)?)?;
+    m.add_function(wrap_pyfunction!(shapes::disc, m)?)?;
+    m.add_function(wrap_pyfunction!(shapes::rod, m)?)?;
+    m.add_function(wrap_pyfunction!(shapes::ellipse, m)?)?;
+    m.add_function(wrap_pyfunction!(shapes::rigid_body, m)?)?;
+    m.add_function(wrap_pyfunction!(shapes::body_impact, m)?)?;
+    m.add_function(wrap_pyfunction!(shapes::body, m)?)?;
+    m.add_function(wrap_pyfunction!(mechanisms::double_pendulum, m)?)?;
+    m.add_function(wrap_pyfunction!(mechanisms::mechanism, m)?)?;
+    m.add_function(wrap_pyfunction!(compare::compare, m)?)?;
     m.add_function(wrap_pyfunction!(scenarios::rod_rows, m)?)?;
     m.add_function(wrap_pyfunction!(scenarios::sphere_rows, m)?)?;
     Ok(())

@@ -180,8 +180,9 @@ def test_struck_body_errors():
         impax.body("rod", 1.0, angle=1.0)
     with pytest.raises(ValueError, match=r"^radius: not a parameter of shape `rod`$"):
         impax.body("rod", 1.0, length=1.0, angle=1.0, radius=1.0)
-    with pytest.raises(ValueError, match=r"^shape: unknown shape `cube` \(known: sphere, disc, rod, ellipse, rigid\)$"):
+    with pytest.raises(ValueError) as err:
         impax.body("cube")
+    assert str(err.value) == "shape: unknown shape `cube` (known: " + ", ".join(impax.SHAPES) + ")"
     with pytest.raises(ValueError, match=r"^mass: -1(\.0)? is out of range: must be > 0$"):
         impax.body("disc", -1.0, radius=1.0)
     # B moving down faster than A: the contact separates, no impact.

@@ -9,10 +9,12 @@
 //!           "speed": 1, "alpha_deg": 30, "spin_ratio": 0}}
 //! ```
 //!
-//! `shape` is `sphere` or `disc` (`radius`), `rod` (`length`, `angle_deg` from the surface),
-//! `ellipse` (`semi_axes`, `angle_deg` of its `a` axis) or `rigid` (`inertia`, `contact` =
-//! the contact point from the centre, `(t, n)`). The motion is that of paper A for every
-//! shape: the centre approaches at `speed` v0 at `alpha_deg` α from the normal,
+//! The body is the core's description (`impax::scenario::BodySpec`, as a scenario file's
+//! `[body]` table): `shape` is one of [`SHAPES`] — `sphere` or `disc` (`radius`), `rod`
+//! (`length`, `angle_deg` from the surface), `ellipse` (`semi_axes`, `angle_deg` of its `a`
+//! axis), `rigid` (`inertia`, `contact` = the contact point from the centre, `(t, n)`), … — and
+//! the core checks and builds it. The motion is that of paper A for every shape (`speed`,
+//! `alpha_deg` and `spin_ratio` are required, `velocity` and `omega` refused): the centre approaches at `speed` v0 at `alpha_deg` α from the normal,
 //! `v = v0 (sin α, −cos α)`, spinning at `ω = γ v0 / ρ` where `γ` is `spin_ratio` and `ρ` the
 //! distance from the centre to the contact point (the radius of a round body, so that the
 //! slip before impact is `v0 (sin α + γ)`, paper A eq. 6).
@@ -26,15 +28,39 @@
 //!                "angles_deg": [30, 0], "rates": [-1, 2]}}
 //! ```
 
-use impax::bodies::{self, BodyState2, PlanarImpact, RigidBody2, Side};
-use impax::math::Vec2;
+use impax::bodies::{self, BodyState2, PlanarImpact, Side};
 use impax::mechanism::builtin::{DoublePendulum, STANDARD_GRAVITY};
 use impax::mechanism::impact::MechanismImpact;
 use impax::planar::ContactProblem;
+use impax::scenario::{AngleUnit, BodySpec, Shape, ShapeScalar};
 use serde::Deserialize;
 
-/// The body shapes a request may name.
-pub const SHAPES: [&str; 5] = ["sphere", "disc", "rod", "ellipse", "rigid"];
+/// The body shapes a request may name: the core's ([`Shape::NAMES`]).
+pub const SHAPES: &[&str] = &Shape::NAMES;
+
+/// Each shape's numbers as the core's table names them (see [`crate::info_json`]): the page
+/// builds the sliders of a shape it has no preset for, and every request's body, from them.
+pub fn shape_parameters() -> serde_json::Value {
+    let mut shapes = serde_json::Map::new();
+    for shape in Shape::ALL {
+        let scalars: Vec<serde_json::Value> = ShapeScalar::ALL
+            .into_iter()
+            .filter(|&s| shape.has_scalar(s))
+            .map(|s| {
+                let (p, i) = s.param();
+                serde_json::json!({
+                    "name": s.name(),
+                    "key": p.key(AngleUnit::Degrees),
+                    "index": if p.count() == 1 { None } else { Some(i) },
+                    "label": s.label(),
+                    "quantity": s.quantity().name(),
+                })
+            })
+            .collect();
+        shapes.insert(shape.name().into(), scalars.into());
+    }
+    shapes.into()
+}
 
 /// The parameters of a body request a map may sweep.
 pub const BODY_PARAMETERS: [&str; 5] = [
@@ -71,40 +97,6 @@ pub struct Request {
     pub mechanism: Option<MechanismSpec>,
 }
 
-/// A body and its motion before the impact.
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct BodySpec {
-    /// One of [`SHAPES`].
-    pub shape: String,
-    /// Mass m > 0.
-    pub mass: f64,
-    /// Radius (sphere, disc).
-    #[serde(default)]
-    pub radius: Option<f64>,
-    /// Length (rod).
-    #[serde(default)]
-    pub length: Option<f64>,
-    /// Angle from the surface in degrees (rod: 0 < angle < 180; ellipse: its `a` axis).
-    #[serde(default)]
-    pub angle_deg: Option<f64>,
-    /// Semi-axes `[a, b]` (ellipse).
-    #[serde(default)]
-    pub semi_axes: Option<[f64; 2]>,
-    /// Central moment of inertia (rigid).
-    #[serde(default)]
-    pub inertia: Option<f64>,
-    /// Contact point from the centre, `[t, n]` (rigid).
-    #[serde(default)]
-    pub contact: Option<[f64; 2]>,
-    /// Approach speed v0 > 0 of the centre.
-    pub speed: f64,
-    /// Approach angle α from the normal, degrees, in (−90, 90).
-    pub alpha_deg: f64,
-    /// Spin ratio γ = ω ρ / v0.
-    pub spin_ratio: f64,
-}
-
 /// A built-in mechanism and its state before the impact.
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -128,6 +120,14 @@ pub struct BodyCase {
     pub impact: PlanarImpact,
     /// The body as requested.
     pub spec: BodySpec,
+    /// Its shape.
+    pub shape: Shape,
+    /// Approach speed v0 > 0 of the centre.
+    pub speed: f64,
+    /// Approach angle α from the normal, degrees, in (−90, 90).
+    pub alpha_deg: f64,
+    /// Spin ratio γ = ω ρ / v0.
+    pub spin_ratio: f64,
     /// ρ: distance from the centre to the contact point (the spin's length scale).
     pub length_scale: f64,
     /// One line describing the case.
@@ -166,10 +166,11 @@ fn finite(field: &str, x: f64) -> Result<f64, String> {
     }
 }
 
-fn need(field: &str, shape: &str, x: Option<f64>) -> Result<f64, String> {
+/// A motion number the explorer requires.
+fn need(field: &str, x: Option<f64>) -> Result<f64, String> {
     finite(
         field,
-        x.ok_or_else(|| format!("{field}: required for shape `{shape}`"))?,
+        x.ok_or_else(|| format!("{field}: required (the explorer gives the motion as speed, alpha_deg and spin_ratio)"))?,
     )
 }
 
@@ -195,58 +196,23 @@ impl Request {
 }
 
 fn body_case(spec: &BodySpec) -> Result<BodyCase, String> {
-    let shape = spec.shape.as_str();
-    let m = finite("mass", spec.mass)?;
-    let (body, desc) = match shape {
-        "sphere" | "disc" => {
-            let r = need("radius", shape, spec.radius)?;
-            let b = if shape == "sphere" {
-                bodies::sphere(m, r, Side::Below)
-            } else {
-                bodies::disc(m, r, Side::Below)
-            }
-            .map_err(text)?;
-            (b, format!("{shape} m = {m}, r = {r}"))
-        }
-        "rod" => {
-            let l = need("length", shape, spec.length)?;
-            let a = need("angle_deg", shape, spec.angle_deg)?;
-            let b = bodies::rod(m, l, a.to_radians(), Side::Below).map_err(text)?;
-            (b, format!("rod m = {m}, L = {l}, at {a}° to the surface"))
-        }
-        "ellipse" => {
-            let [sa, sb] = spec
-                .semi_axes
-                .ok_or_else(|| "semi_axes: required for shape `ellipse`".to_string())?;
-            finite("semi_axes[0]", sa)?;
-            finite("semi_axes[1]", sb)?;
-            let a = finite("angle_deg", spec.angle_deg.unwrap_or(0.0))?;
-            let b = bodies::ellipse(m, sa, sb, a.to_radians(), Side::Below).map_err(text)?;
-            (b, format!("ellipse m = {m}, a = {sa}, b = {sb}, at {a}°"))
-        }
-        "rigid" => {
-            let i = need("inertia", shape, spec.inertia)?;
-            let [rt, rn] = spec
-                .contact
-                .ok_or_else(|| "contact: required for shape `rigid`".to_string())?;
-            finite("contact[0]", rt)?;
-            finite("contact[1]", rn)?;
-            let b = RigidBody2::new(m, i, Vec2::new(rt, rn)).map_err(text)?;
-            (
-                b,
-                format!("rigid body m = {m}, I = {i}, contact at ({rt}, {rn})"),
-            )
-        }
-        other => {
+    // The shape, its parameters and its description are the core's.
+    let body = spec.rigid_body("", Side::Below).map_err(text)?;
+    let shape = spec.parse_shape("").map_err(text)?;
+    let desc = spec.shape_description();
+    for (key, given) in [
+        ("velocity", spec.velocity.is_some()),
+        ("omega", spec.omega.is_some()),
+    ] {
+        if given {
             return Err(format!(
-                "shape: unknown shape `{other}` (known: {})",
-                SHAPES.join(", ")
-            ))
+                "{key}: the explorer gives the motion as speed, alpha_deg and spin_ratio"
+            ));
         }
-    };
-    let v0 = finite("speed", spec.speed)?;
-    let alpha = finite("alpha_deg", spec.alpha_deg)?;
-    let gamma = finite("spin_ratio", spec.spin_ratio)?;
+    }
+    let v0 = need("speed", spec.speed)?;
+    let alpha = need("alpha_deg", spec.alpha)?;
+    let gamma = need("spin_ratio", spec.spin_ratio)?;
     if v0 <= 0.0 {
         return Err(format!("speed: must be > 0, got {v0}"));
     }
@@ -263,6 +229,10 @@ fn body_case(spec: &BodySpec) -> Result<BodyCase, String> {
     Ok(BodyCase {
         impact: PlanarImpact::on_fixed_surface(body, state),
         spec: spec.clone(),
+        shape,
+        speed: v0,
+        alpha_deg: alpha,
+        spin_ratio: gamma,
         length_scale: rho,
         description: format!("{desc}, v0 = {v0}, α = {alpha}°, γ = {gamma}"),
     })

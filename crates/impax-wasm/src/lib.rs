@@ -61,7 +61,10 @@ pub fn map_json(request: &str, values: &mut Vec<f32>, classes: &mut Vec<u8>) -> 
 }
 
 /// The laws and bodies the module knows, as JSON: `{"version", "laws", "mechanism_laws",
-/// "shapes", "map_parameters"}`.
+/// "shapes", "shape_parameters", "map_parameters"}`. `shape_parameters` gives, for each shape,
+/// its numbers as the core's table names them: `{"name"` (e.g. `semi_axis_a`), `"key"` and
+/// `"index"` (where it goes in a request: `semi_axes[0]`; `index` null for a single number),
+/// `"label"`, `"quantity"` (`length`, `angle`, `inertia` or `offset`)`}`.
 pub fn info_json() -> String {
     let laws: Vec<&str> = impax::LawId::ALL.iter().map(|l| l.as_str()).collect();
     let mech: Vec<&str> = impax::LawId::CONTACT_SPACE
@@ -73,6 +76,7 @@ pub fn info_json() -> String {
         "laws": laws,
         "mechanism_laws": mech,
         "shapes": case::SHAPES,
+        "shape_parameters": case::shape_parameters(),
         "map_parameters": {
             "body": case::BODY_PARAMETERS,
             "mechanism": case::MECHANISM_PARAMETERS,

@@ -24,6 +24,7 @@ use impax::analysis::whittaker_sphere_thresholds;
 use impax::bodies::{self, PlanarImpact};
 use impax::mechanism::impact::MechanismImpact;
 use impax::planar::Verdict;
+use impax::scenario::{Shape, ShapeScalar};
 use impax::LawId;
 use serde::Deserialize;
 use serde_json::{json, Value};
@@ -119,10 +120,17 @@ fn set(r: &mut Request, name: &str, value: f64) {
     }
     if let Some(b) = r.body.as_mut() {
         match name {
-            "alpha_deg" => b.alpha_deg = value,
-            "spin_ratio" => b.spin_ratio = value,
-            "angle_deg" => b.angle_deg = Some(value),
-            _ => {}
+            "alpha_deg" => b.alpha = Some(value),
+            "spin_ratio" => b.spin_ratio = Some(value),
+            // A number of the body's shape, if its shape has it (the core's table).
+            _ => {
+                let shape = Shape::from_name(&b.shape);
+                if let Some(s) = ShapeScalar::from_name(name) {
+                    if shape.is_some_and(|shape| shape.has_scalar(s)) {
+                        b.set_scalar(s, value);
+                    }
+                }
+            }
         }
     }
     if let Some(m) = r.mechanism.as_mut() {
@@ -145,10 +153,9 @@ fn get(r: &Request, name: &str) -> Option<f64> {
     }
     if let Some(b) = &r.body {
         return match name {
-            "alpha_deg" => Some(b.alpha_deg),
-            "spin_ratio" => Some(b.spin_ratio),
-            "angle_deg" => b.angle_deg,
-            _ => None,
+            "alpha_deg" => b.alpha,
+            "spin_ratio" => b.spin_ratio,
+            _ => ShapeScalar::from_name(name).and_then(|s| b.scalar(s)),
         };
     }
     if let Some(m) = &r.mechanism {
@@ -173,17 +180,17 @@ fn body_point(
     let impact = match base {
         // Only the motion changes: keep the body, set the state.
         Some(base) => {
-            if !(spec.alpha_deg > -90.0 && spec.alpha_deg < 90.0) {
+            let alpha_deg = spec.alpha.unwrap_or(f64::NAN);
+            if !(alpha_deg > -90.0 && alpha_deg < 90.0) {
                 return Err(format!(
-                    "alpha_deg: must be in (-90, 90) for the body to approach the surface, got {}",
-                    spec.alpha_deg
+                    "alpha_deg: must be in (-90, 90) for the body to approach the surface, got {alpha_deg}"
                 ));
             }
             let rho = base.body.0.contact().norm();
             let state = bodies::spin_state(
-                spec.speed,
-                spec.alpha_deg.to_radians(),
-                spec.spin_ratio,
+                spec.speed.unwrap_or(f64::NAN),
+                alpha_deg.to_radians(),
+                spec.spin_ratio.unwrap_or(f64::NAN),
                 rho,
             )
             .map_err(|e| e.to_string())?;
@@ -344,7 +351,7 @@ fn threshold(req: &MapRequest, base: &Case, law: LawId) -> Value {
     let Case::Body(b) = base else {
         return Value::Null;
     };
-    if b.spec.shape != "sphere" || law != LawId::Whittaker {
+    if b.shape != Shape::Sphere || law != LawId::Whittaker {
         return Value::Null;
     }
     let (alpha_axis, alpha_is_y) = match (req.x.name.as_str(), req.y.name.as_str()) {

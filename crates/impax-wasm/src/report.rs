@@ -34,6 +34,7 @@ use crate::animation::{self, Outline};
 use crate::case::{BodyCase, Case, MechanismCase, Request};
 use impax::mechanism::{Mechanism, Pose};
 use impax::planar::{Breakdown, ContactProblem, Outcome};
+use impax::scenario::Shape;
 use impax::LawId;
 use serde_json::{json, Map, Value};
 
@@ -150,7 +151,7 @@ fn routh(p: &ContactProblem) -> Value {
 fn body(case: &BodyCase, friction: f64, restitution: f64) -> Result<Value, String> {
     let problem = case.problem(friction, restitution)?;
     let t0 = case.t0();
-    let (v0, rho) = (case.spec.speed, case.length_scale);
+    let (v0, rho) = (case.speed, case.length_scale);
     let results: Vec<Value> = LawId::ALL
         .iter()
         .map(|&law| match case.impact.resolve(law, &problem) {
@@ -187,13 +188,13 @@ fn body(case: &BodyCase, friction: f64, restitution: f64) -> Result<Value, Strin
             Err(b) => broken(&b),
         })
         .collect();
-    let threshold = if case.spec.shape == "sphere" {
+    let threshold = if case.shape == Shape::Sphere {
         let t = impax::analysis::whittaker_sphere_thresholds(
-            case.spec.alpha_deg.to_radians(),
+            case.alpha_deg.to_radians(),
             restitution,
             friction,
         );
-        let edge = -case.spec.alpha_deg.to_radians().sin();
+        let edge = -case.alpha_deg.to_radians().sin();
         json!({ "upper": t.upper.map(num), "lower": t.lower.map(num), "edge": num(edge) })
     } else {
         Value::Null
@@ -218,25 +219,23 @@ fn body(case: &BodyCase, friction: f64, restitution: f64) -> Result<Value, Strin
     }))
 }
 
-/// The body's outline in its own frame at the instant of impact.
+/// The body's outline in its own frame at the instant of impact: the shapes the page draws
+/// as they are, any other as a rigid body (its contact point and radius of gyration).
 fn body_outline(case: &BodyCase) -> Outline {
     let spec = &case.spec;
     let body = case.impact.body.0;
-    match spec.shape.as_str() {
-        "sphere" | "disc" => Outline::Circle {
+    let direction = spec.angle_unit.to_radians(spec.angle.unwrap_or(0.0));
+    match case.shape {
+        Shape::Sphere | Shape::Disc => Outline::Circle {
             radius: spec.radius.unwrap_or(0.0),
         },
-        "rod" => Outline::Segment {
+        Shape::Rod => Outline::Segment {
             half_length: 0.5 * spec.length.unwrap_or(0.0),
-            direction: spec.angle_deg.unwrap_or(0.0).to_radians(),
+            direction,
         },
-        "ellipse" => {
+        Shape::Ellipse => {
             let [a, b] = spec.semi_axes.unwrap_or([0.0, 0.0]);
-            Outline::Ellipse {
-                a,
-                b,
-                direction: spec.angle_deg.unwrap_or(0.0).to_radians(),
-            }
+            Outline::Ellipse { a, b, direction }
         }
         _ => Outline::Rigid {
             contact: [body.contact().x, body.contact().y],

@@ -132,6 +132,49 @@ fn every_shape_resolves() {
     }
 }
 
+/// Every shape the module lists (`info().shapes`, the core's table) is requested as the page
+/// requests a shape it has no preset for: its numbers from `shape_parameters`, put where `key`
+/// and `index` say, valued by their quantity. Each resolves with every law and an animation
+/// that stays above the floor.
+#[test]
+fn every_listed_shape_resolves_from_its_parameters() {
+    let info: Value = serde_json::from_str(&impax_wasm::info_json()).unwrap();
+    let shapes = info["shapes"].as_array().unwrap();
+    assert_eq!(shapes.len(), impax::scenario::Shape::ALL.len());
+    for shape in shapes {
+        let name = shape.as_str().unwrap();
+        let mut b =
+            json!({"shape": name, "mass": 1.5, "speed": 1, "alpha_deg": 30, "spin_ratio": 0.2});
+        let numbers = info["shape_parameters"][name].as_array().unwrap();
+        assert!(!numbers.is_empty(), "{name}");
+        for p in numbers {
+            let x = match p["quantity"].as_str().unwrap() {
+                "length" => 0.8,
+                "angle" => 20.0,
+                "inertia" => 0.5,
+                "offset" => -0.5,
+                q => panic!("{name}: unknown quantity {q}"),
+            };
+            let key = p["key"].as_str().unwrap();
+            match p["index"].as_u64() {
+                None => b[key] = json!(x),
+                Some(i) => {
+                    if b[key].is_null() {
+                        b[key] = json!([f64::NAN, f64::NAN]);
+                    }
+                    b[key][i as usize] = json!(x);
+                }
+            }
+        }
+        let v = compare(&json!({"friction": 0.4, "restitution": 0.7, "body": b}));
+        assert!(v["error"].is_null(), "{b}: {v}");
+        let scenario = v["scenario"].as_str().unwrap();
+        assert!(scenario.starts_with(name) || name == "rigid", "{scenario}");
+        assert_eq!(v["results"].as_array().unwrap().len(), LawId::ALL.len());
+        above_the_floor(&v["animation"]);
+    }
+}
+
 /// No frame of the animation takes a body through the floor `y = 0`.
 fn above_the_floor(animation: &Value) {
     use impax_wasm::animation::Outline;
@@ -326,4 +369,51 @@ fn c_abi_round_trip() {
         .unwrap()
     };
     assert_eq!(info["laws"].as_array().unwrap().len(), LawId::ALL.len());
+}
+
+/// The planar box, added to the core's table alone, in the explorer's requests: listed, with
+/// sliders for its numbers, and the `W` of the rigid body of the same inertia and corner.
+#[test]
+fn a_box_request_is_the_rigid_body_with_its_inertia_and_corner() {
+    let info: Value = serde_json::from_str(&impax_wasm::info_json()).unwrap();
+    assert!(info["shapes"].as_array().unwrap().contains(&json!("box")));
+    let names: Vec<&str> = info["shape_parameters"]["box"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|p| p["name"].as_str().unwrap())
+        .collect();
+    assert_eq!(names, ["angle_deg", "half_extent_a", "half_extent_b"]);
+    let (m, a, b, theta) = (1.5f64, 1.0f64, 0.4f64, 25f64.to_radians());
+    let (s, c) = theta.sin_cos();
+    let motion = |mut body: Value| {
+        for (k, x) in [("speed", 1.0), ("alpha_deg", 30.0), ("spin_ratio", 0.2)] {
+            body[k] = json!(x);
+        }
+        compare(&json!({"friction": 0.4, "restitution": 0.7, "body": body}))
+    };
+    let boxed = motion(json!({"shape": "box", "mass": m, "half_extents": [a, b], "angle_deg": 25}));
+    let rigid = motion(
+        json!({"shape": "rigid", "mass": m, "inertia": m * (a * a + b * b) / 3.0,
+                              "contact": [-a * c + b * s, -a * s - b * c]}),
+    );
+    assert!(boxed["error"].is_null(), "{boxed}");
+    assert!(boxed["scenario"]
+        .as_str()
+        .unwrap()
+        .starts_with("box m = 1.5, a = 1, b = 0.4, at 25°"));
+    for (x, y) in [(&boxed["problem"]["w"], &rigid["problem"]["w"])] {
+        for i in 0..2 {
+            for j in 0..2 {
+                let (p, q) = (x[i][j].as_f64().unwrap(), y[i][j].as_f64().unwrap());
+                assert!((p - q).abs() <= 1e-15, "W[{i}][{j}]: {p} vs {q}");
+            }
+        }
+    }
+    // Flat on an edge: an error naming the corner, not a trap.
+    let flat = motion(json!({"shape": "box", "mass": m, "half_extents": [a, b]}));
+    assert!(
+        flat["error"].as_str().unwrap().starts_with("corner:"),
+        "{flat}"
+    );
 }

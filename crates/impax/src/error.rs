@@ -151,8 +151,12 @@ impl Error {
 
 impl Error {
     /// The same error with its field named inside `prefix` (`mass` → `body.mass`): the field
-    /// as a file spells it when the error comes from one of its sections.
+    /// as a file spells it when the error comes from one of its sections. An empty prefix
+    /// leaves the error as it is (a front end that names fields without a section).
     pub fn prefixed(self, prefix: &str) -> Self {
+        if prefix.is_empty() {
+            return self;
+        }
         let name = |field: String| format!("{prefix}.{field}");
         match self {
             Error::NotFinite { field, value } => Error::NotFinite {

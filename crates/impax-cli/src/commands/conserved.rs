@@ -23,7 +23,7 @@ pub fn run(args: &ConservedArgs, out: &mut Vec<u8>) -> CliResult<()> {
         lengths: args.params.lengths.clone(),
         radius: args.radius,
         gravity: args.params.gravity,
-        angles_deg: args.params.angles_deg.clone(),
+        angles: args.params.angles_deg.clone(),
         rates: args.params.rates.clone(),
         position: args.params.position.clone(),
         ..MechanismSpec::default()

@@ -4,7 +4,9 @@
 //! The scenario file (or the seed's) is validated once, as `impax compare` would; then every
 //! point sets a few numeric fields and rebuilds the contact problem without allocation.
 //!
-//! Field names (kebab case; `_` is accepted for `-`; `other.` prefixes the second body):
+//! Field names (kebab case; `_` is accepted for `-`; `other.` prefixes the second body). The
+//! shape's numbers are the core's ([`impax::scenario::ShapeScalar`], named there in snake
+//! case); today:
 //!
 //! | field | applies to | domain |
 //! |---|---|---|
@@ -14,6 +16,7 @@
 //! | `length`, `angle-deg` | rod | `> 0`; `(0, 180)` degrees |
 //! | `semi-axis-a`, `semi-axis-b`, `angle-deg` | ellipse | `> 0`; degrees |
 //! | `inertia`, `contact-t`, `contact-n` | rigid | `> 0`; any |
+//! | `half-extent-a`, `half-extent-b`, `angle-deg` | box | `> 0`; degrees |
 //! | `speed`, `alpha-deg`, `spin-ratio` | round bodies given by v0, α, γ | `> 0`; `[−90, 90]` degrees; any |
 //! | `vx`, `vy`, `omega` | bodies given by their velocity | any |
 
@@ -21,33 +24,19 @@ use crate::input::{CliError, CliResult};
 use crate::sources::scenario::{build_body, parse_file, parse_laws, BodySpec};
 use crate::sources::Source;
 use impax::bodies::{self, BodyState2, PlanarImpact, RigidBody2, Side};
-use impax::math::Vec2;
 use impax::planar::{ContactProblem, InverseInertia};
+use impax::scenario::{Shape, ShapeScalar};
 use impax::LawId;
+use std::borrow::Cow;
 use std::path::Path;
-
-/// A body shape.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Shape {
-    Sphere,
-    Disc,
-    Rod,
-    Ellipse,
-    Rigid,
-}
 
 /// One numeric parameter of a body.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Param {
     Mass,
-    Radius,
-    Length,
-    AngleDeg,
-    SemiAxisA,
-    SemiAxisB,
-    Inertia,
-    ContactT,
-    ContactN,
+    /// A number of the body's shape (`radius`, `semi-axis-a`, …: the core's table of shapes,
+    /// [`ShapeScalar`]).
+    Shape(ShapeScalar),
     Speed,
     AlphaDeg,
     SpinRatio,
@@ -57,41 +46,31 @@ pub enum Param {
 }
 
 impl Param {
-    const ALL: [Param; 15] = [
-        Param::Mass,
-        Param::Radius,
-        Param::Length,
-        Param::AngleDeg,
-        Param::SemiAxisA,
-        Param::SemiAxisB,
-        Param::Inertia,
-        Param::ContactT,
-        Param::ContactN,
-        Param::Speed,
-        Param::AlphaDeg,
-        Param::SpinRatio,
-        Param::Vx,
-        Param::Vy,
-        Param::Omega,
-    ];
+    /// Every parameter, in the order field lists show them.
+    fn all() -> impl Iterator<Item = Param> {
+        std::iter::once(Param::Mass)
+            .chain(ShapeScalar::ALL.into_iter().map(Param::Shape))
+            .chain([
+                Param::Speed,
+                Param::AlphaDeg,
+                Param::SpinRatio,
+                Param::Vx,
+                Param::Vy,
+                Param::Omega,
+            ])
+    }
 
-    fn name(self) -> &'static str {
+    /// The name in kebab case, e.g. `semi-axis-a`.
+    fn name(self) -> Cow<'static, str> {
         match self {
-            Param::Mass => "mass",
-            Param::Radius => "radius",
-            Param::Length => "length",
-            Param::AngleDeg => "angle-deg",
-            Param::SemiAxisA => "semi-axis-a",
-            Param::SemiAxisB => "semi-axis-b",
-            Param::Inertia => "inertia",
-            Param::ContactT => "contact-t",
-            Param::ContactN => "contact-n",
-            Param::Speed => "speed",
-            Param::AlphaDeg => "alpha-deg",
-            Param::SpinRatio => "spin-ratio",
-            Param::Vx => "vx",
-            Param::Vy => "vy",
-            Param::Omega => "omega",
+            Param::Mass => "mass".into(),
+            Param::Shape(s) => s.name().replace('_', "-").into(),
+            Param::Speed => "speed".into(),
+            Param::AlphaDeg => "alpha-deg".into(),
+            Param::SpinRatio => "spin-ratio".into(),
+            Param::Vx => "vx".into(),
+            Param::Vy => "vy".into(),
+            Param::Omega => "omega".into(),
         }
     }
 
@@ -99,14 +78,7 @@ impl Param {
     fn label(self) -> &'static str {
         match self {
             Param::Mass => "mass m",
-            Param::Radius => "radius r",
-            Param::Length => "length L",
-            Param::AngleDeg => "angle θ from the surface (deg)",
-            Param::SemiAxisA => "semi-axis a",
-            Param::SemiAxisB => "semi-axis b",
-            Param::Inertia => "moment of inertia I",
-            Param::ContactT => "contact offset r_t",
-            Param::ContactN => "contact offset r_n",
+            Param::Shape(s) => s.label(),
             Param::Speed => "approach speed v0",
             Param::AlphaDeg => "approach angle α from the normal (deg)",
             Param::SpinRatio => "spin ratio γ = ω0 r / v0 (–)",
@@ -118,14 +90,10 @@ impl Param {
 
     /// The allowed closed interval of values (open ends are checked by the body builders).
     fn domain(self) -> (f64, f64, &'static str) {
+        let positive = (f64::MIN_POSITIVE, f64::INFINITY, "must be > 0");
         match self {
-            Param::Mass
-            | Param::Radius
-            | Param::Length
-            | Param::SemiAxisA
-            | Param::SemiAxisB
-            | Param::Inertia
-            | Param::Speed => (f64::MIN_POSITIVE, f64::INFINITY, "must be > 0"),
+            Param::Mass | Param::Speed => positive,
+            Param::Shape(s) if s.positive() => positive,
             Param::AlphaDeg => (-90.0, 90.0, "must be in [-90, 90] degrees"),
             _ => (f64::NEG_INFINITY, f64::INFINITY, ""),
         }
@@ -149,7 +117,7 @@ impl Field {
         match self {
             Field::Friction => "friction".into(),
             Field::Restitution => "restitution".into(),
-            Field::Body(p) => p.name().into(),
+            Field::Body(p) => p.name().into_owned(),
             Field::Other(p) => format!("other.{}", p.name()),
         }
     }
@@ -203,41 +171,25 @@ impl Motion {
     }
 }
 
-/// A body as numbers (absent parameters are NaN and never read).
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// A body as its description (the core's [`BodySpec`], its shape parsed) and its motion as
+/// numbers.
+#[derive(Debug, Clone, PartialEq)]
 struct BodyParams {
+    spec: BodySpec,
     shape: Shape,
     side: Side,
-    mass: f64,
-    radius: f64,
-    length: f64,
-    angle_deg: f64,
-    semi_a: f64,
-    semi_b: f64,
-    inertia: f64,
-    contact_t: f64,
-    contact_n: f64,
     motion: Motion,
 }
 
 impl BodyParams {
     /// From a spec already validated by [`build_body`].
-    fn of(spec: &BodySpec, side: Side) -> Self {
-        let shape = match spec.shape.as_str() {
-            "sphere" => Shape::Sphere,
-            "disc" => Shape::Disc,
-            "rod" => Shape::Rod,
-            "ellipse" => Shape::Ellipse,
-            _ => Shape::Rigid,
-        };
-        let nan = f64::NAN;
-        let [semi_a, semi_b] = spec.semi_axes.unwrap_or([nan, nan]);
-        let [contact_t, contact_n] = spec.contact.unwrap_or([nan, nan]);
-        let seed = spec.speed.is_some() || spec.alpha_deg.is_some() || spec.spin_ratio.is_some();
+    fn of(spec: &BodySpec, side: Side) -> CliResult<Self> {
+        let shape = spec.parse_shape("")?;
+        let seed = spec.speed.is_some() || spec.alpha.is_some() || spec.spin_ratio.is_some();
         let motion = if seed {
             Motion::Seed {
                 speed: spec.speed.unwrap_or(1.0),
-                alpha_deg: spec.alpha_deg.unwrap_or(0.0),
+                alpha_deg: spec.alpha.unwrap_or(0.0),
                 spin_ratio: spec.spin_ratio.unwrap_or(0.0),
             }
         } else {
@@ -248,22 +200,12 @@ impl BodyParams {
                 omega: spec.omega.unwrap_or(0.0),
             }
         };
-        Self {
+        Ok(Self {
+            spec: spec.clone(),
             shape,
             side,
-            mass: spec.mass,
-            radius: spec.radius.unwrap_or(nan),
-            length: spec.length.unwrap_or(nan),
-            angle_deg: spec
-                .angle_deg
-                .unwrap_or(if shape == Shape::Ellipse { 0.0 } else { nan }),
-            semi_a,
-            semi_b,
-            inertia: spec.inertia.unwrap_or(nan),
-            contact_t,
-            contact_n,
             motion,
-        }
+        })
     }
 
     /// Whether the parameter describes this body (shape and kind of motion).
@@ -271,76 +213,36 @@ impl BodyParams {
         let seed = matches!(self.motion, Motion::Seed { .. });
         match p {
             Param::Mass => true,
-            Param::Radius => matches!(self.shape, Shape::Sphere | Shape::Disc),
-            Param::Length => self.shape == Shape::Rod,
-            Param::AngleDeg => matches!(self.shape, Shape::Rod | Shape::Ellipse),
-            Param::SemiAxisA | Param::SemiAxisB => self.shape == Shape::Ellipse,
-            Param::Inertia | Param::ContactT | Param::ContactN => self.shape == Shape::Rigid,
+            Param::Shape(s) => self.shape.has_scalar(s),
             Param::Speed | Param::AlphaDeg | Param::SpinRatio => seed,
             Param::Vx | Param::Vy | Param::Omega => !seed,
         }
     }
 
-    fn slot(&mut self, p: Param) -> &mut f64 {
+    /// Set a parameter ([`BodyParams::has`] is checked when a field is resolved by name).
+    fn set(&mut self, p: Param, value: f64) {
         match (p, &mut self.motion) {
-            (Param::Mass, _) => &mut self.mass,
-            (Param::Radius, _) => &mut self.radius,
-            (Param::Length, _) => &mut self.length,
-            (Param::AngleDeg, _) => &mut self.angle_deg,
-            (Param::SemiAxisA, _) => &mut self.semi_a,
-            (Param::SemiAxisB, _) => &mut self.semi_b,
-            (Param::Inertia, _) => &mut self.inertia,
-            (Param::ContactT, _) => &mut self.contact_t,
-            (Param::ContactN, _) => &mut self.contact_n,
-            (Param::Speed, Motion::Seed { speed, .. }) => speed,
-            (Param::AlphaDeg, Motion::Seed { alpha_deg, .. }) => alpha_deg,
-            (Param::SpinRatio, Motion::Seed { spin_ratio, .. }) => spin_ratio,
-            (Param::Vx, Motion::Direct { vx, .. }) => vx,
-            (Param::Vy, Motion::Direct { vy, .. }) => vy,
-            (Param::Omega, Motion::Direct { omega, .. }) => omega,
-            // `has` is checked when a field is resolved by name.
-            (_, Motion::Seed { speed, .. }) => speed,
-            (_, Motion::Direct { vx, .. }) => vx,
+            (Param::Mass, _) => self.spec.mass = value,
+            (Param::Shape(s), _) => self.spec.set_scalar(s, value),
+            (Param::Speed, Motion::Seed { speed, .. }) => *speed = value,
+            (Param::AlphaDeg, Motion::Seed { alpha_deg, .. }) => *alpha_deg = value,
+            (Param::SpinRatio, Motion::Seed { spin_ratio, .. }) => *spin_ratio = value,
+            (Param::Vx, Motion::Direct { vx, .. }) => *vx = value,
+            (Param::Vy, Motion::Direct { vy, .. }) => *vy = value,
+            (Param::Omega, Motion::Direct { omega, .. }) => *omega = value,
+            _ => {}
         }
     }
 
     /// Whether setting the parameter changes the body (not only its state).
     fn shapes_body(p: Param) -> bool {
-        !matches!(
-            p,
-            Param::Speed
-                | Param::AlphaDeg
-                | Param::SpinRatio
-                | Param::Vx
-                | Param::Vy
-                | Param::Omega
-        )
+        matches!(p, Param::Mass | Param::Shape(_))
     }
 
-    /// The body (numbers only; errors name the field).
+    /// The body (the core's builder; errors name the field without a section, no
+    /// allocation unless it fails).
     fn body(&self) -> impax::Result<RigidBody2> {
-        Ok(match self.shape {
-            Shape::Sphere => bodies::sphere(self.mass, self.radius, self.side)?,
-            Shape::Disc => bodies::disc(self.mass, self.radius, self.side)?,
-            Shape::Rod => bodies::rod(
-                self.mass,
-                self.length,
-                self.angle_deg.to_radians(),
-                self.side,
-            )?,
-            Shape::Ellipse => bodies::ellipse(
-                self.mass,
-                self.semi_a,
-                self.semi_b,
-                self.angle_deg.to_radians(),
-                self.side,
-            )?,
-            Shape::Rigid => RigidBody2::new(
-                self.mass,
-                self.inertia,
-                Vec2::new(self.contact_t, self.contact_n),
-            )?,
-        })
+        self.spec.rigid_body("", self.side)
     }
 
     /// The state before the impact: for v0, α, γ exactly [`bodies::spin_state`] (paper A
@@ -365,7 +267,7 @@ impl BodyParams {
                 if !alpha_deg.is_finite() || !spin_ratio.is_finite() {
                     // The library names the field.
                     let alpha = alpha_deg.to_radians();
-                    return bodies::spin_state(speed, alpha, spin_ratio, self.radius);
+                    return bodies::spin_state(speed, alpha, spin_ratio, self.radius());
                 }
                 if trig.0.to_bits() != alpha_deg.to_bits() {
                     let alpha = alpha_deg.to_radians();
@@ -374,11 +276,17 @@ impl BodyParams {
                 Ok(BodyState2::new(
                     speed * trig.1,
                     -speed * trig.2,
-                    spin_ratio * speed / self.radius,
+                    spin_ratio * speed / self.radius(),
                 ))
             }
             Motion::Direct { vx, vy, omega } => Ok(BodyState2::new(vx, vy, omega)),
         }
+    }
+
+    /// The radius of a round body given by v0, α, γ (validated with the body).
+    #[inline(always)]
+    fn radius(&self) -> f64 {
+        self.spec.radius.unwrap_or(f64::NAN)
     }
 }
 
@@ -443,8 +351,12 @@ impl Template {
         Ok(Self {
             friction: spec.friction,
             restitution: spec.restitution,
-            body: BodyParams::of(&spec.body, Side::Below),
-            other: spec.other.as_ref().map(|o| BodyParams::of(o, Side::Above)),
+            body: BodyParams::of(&spec.body, Side::Below)?,
+            other: spec
+                .other
+                .as_ref()
+                .map(|o| BodyParams::of(o, Side::Above))
+                .transpose()?,
             laws,
             built: None,
             trig: [(f64::NAN, 0.0, 0.0); 2],
@@ -464,20 +376,16 @@ impl Template {
             None => (false, canon.as_str()),
         };
         let known = || {
-            let mut names = vec!["friction", "restitution"];
-            names.extend(Param::ALL.iter().map(|p| p.name()));
+            let mut names = vec![Cow::from("friction"), "restitution".into()];
+            names.extend(Param::all().map(Param::name));
             names.join(", ")
         };
-        let param = Param::ALL
-            .iter()
-            .copied()
-            .find(|p| p.name() == pname)
-            .ok_or_else(|| {
-                format!(
-                    "unknown field `{name}` (known: {}; prefix `other.` for body B)",
-                    known()
-                )
-            })?;
+        let param = Param::all().find(|p| p.name() == pname).ok_or_else(|| {
+            format!(
+                "unknown field `{name}` (known: {}; prefix `other.` for body B)",
+                known()
+            )
+        })?;
         let body = if target {
             self.other
                 .as_ref()
@@ -495,7 +403,7 @@ impl Template {
                     "the scenario gives the body's speed/alpha_deg/spin_ratio, not velocity/omega"
                         .to_string()
                 }
-                _ => format!("not a parameter of shape `{:?}`", body.shape).to_lowercase(),
+                _ => format!("not a parameter of shape `{}`", body.shape),
             };
             return Err(format!("field `{name}`: {what}"));
         }
@@ -513,14 +421,14 @@ impl Template {
             Field::Friction => self.friction = value,
             Field::Restitution => self.restitution = value,
             Field::Body(p) => {
-                *self.body.slot(p) = value;
+                self.body.set(p, value);
                 if BodyParams::shapes_body(p) {
                     self.built = None;
                 }
             }
             Field::Other(p) => {
                 if let Some(o) = self.other.as_mut() {
-                    *o.slot(p) = value;
+                    o.set(p, value);
                 }
                 if BodyParams::shapes_body(p) {
                     self.built = None;

@@ -70,7 +70,7 @@ pub fn load(args: &CompareArgs, file: Option<&super::File>) -> CliResult<Scenari
     if let Some(x) = args.mass {
         spec.body.mass = finite_flag("mass", x)?;
     }
-    let round = matches!(spec.body.shape.as_str(), "sphere" | "disc");
+    let round = impax::scenario::Shape::from_name(&spec.body.shape).is_some_and(|s| s.is_round());
     for (flag, value) in [
         ("radius", args.radius),
         ("speed", args.speed),
@@ -98,7 +98,7 @@ pub fn load(args: &CompareArgs, file: Option<&super::File>) -> CliResult<Scenari
             ));
         }
         spec.body.speed = args.speed.or(spec.body.speed);
-        spec.body.alpha_deg = args.alpha_deg.or(spec.body.alpha_deg);
+        spec.body.alpha = args.alpha_deg.or(spec.body.alpha);
         spec.body.spin_ratio = args.spin_ratio.or(spec.body.spin_ratio);
     }
     let laws = if !args.law.is_empty() {

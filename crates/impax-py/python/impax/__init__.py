@@ -14,8 +14,9 @@ normal last; approach means ``v_n < 0``; the impulse ``p`` acts on the moving bo
   with ``K`` contacts at once, a :class:`MultiOutcome`);
 * :func:`resolve_batch` — many problems on numpy arrays, in parallel with the GIL released;
 * :func:`sphere`, :func:`disc`, :func:`rod`, :func:`ellipse`, :func:`rigid_body`,
-  :func:`double_pendulum`, :func:`mechanism` — bodies and mechanisms producing problems
-  (:func:`body` — a struck free body, the ``other=`` of a body: body against body);
+  :func:`body_impact` (any shape of :data:`SHAPES` by name), :func:`double_pendulum`,
+  :func:`mechanism` — bodies and mechanisms producing problems (:func:`body` — a struck free
+  body, the ``other=`` of a body: body against body);
 * :func:`compare` — every law side by side, as ``impax compare --json``;
 * :mod:`impax.study` — parameter spaces (grids, random samples) of built-in scenarios, run
   in chunks, reduced;
@@ -34,6 +35,7 @@ from ._impax import (
     MULTI_CONTACT_LAWS,
     SEQUENCES,
     SEQUENCES_3D,
+    SHAPES,
     SPATIAL_LAWS,
     STATUSES,
     Body,
@@ -43,6 +45,7 @@ from ._impax import (
     Outcome,
     __version__,
     body,
+    body_impact,
     compare,
     disc,
     double_pendulum,
@@ -64,6 +67,7 @@ __all__ = [
     "MULTI_CONTACT_LAWS",
     "SEQUENCES",
     "SEQUENCES_3D",
+    "SHAPES",
     "SPATIAL_LAWS",
     "STATUSES",
     "Body",
@@ -73,6 +77,7 @@ __all__ = [
     "Outcome",
     "__version__",
     "body",
+    "body_impact",
     "compare",
     "disc",
     "double_pendulum",

@@ -21,6 +21,8 @@ STATUSES: list[str]
 SEQUENCES: list[str]
 #: ``resolve_batch`` phase-sequence codes of spatial problems, by index.
 SEQUENCES_3D: list[str]
+#: Planar body shape names (the core's), for :func:`body_impact` and :func:`body`.
+SHAPES: list[str]
 #: Built-in mechanism names.
 MECHANISMS: list[str]
 #: The most worker threads ``resolve_batch(..., threads=)`` accepts (256).
@@ -138,7 +140,7 @@ class Body:
     def description(self) -> str: ...
 
 def body(
-    shape: Literal["sphere", "disc", "rod", "ellipse", "rigid"],
+    shape: str,
     mass: float = 1.0,
     *,
     radius: float | None = None,
@@ -149,8 +151,10 @@ def body(
     contact: tuple[float, float] | None = None,
     velocity: tuple[float, float] = (0.0, 0.0),
     omega: float = 0.0,
+    **params: float | tuple[float, float] | None,
 ) -> Body:
-    """A struck body B for ``other=`` (the ``[other]`` table of a scenario file); angles in radians."""
+    """A struck body B for ``other=`` (the ``[other]`` table of a scenario file): ``shape`` one of
+    :data:`SHAPES`, its parameters by keyword as scenario files name them; angles in radians."""
 
 class BodyImpact:
     """A planar body with its state striking a fixed surface, with μ and e."""
@@ -377,6 +381,25 @@ def ellipse(
     other: Body | None = None,
 ) -> BodyImpact:
     """A uniform elliptical disc (``I = m (a² + b²)/4``), its ``a`` axis at ``angle`` from the surface."""
+
+def body_impact(
+    shape: str,
+    mass: float = 1.0,
+    *,
+    speed: float | None = None,
+    alpha: float | None = None,
+    spin_ratio: float | None = None,
+    velocity: tuple[float, float] | None = None,
+    omega: float | None = None,
+    friction: float = 0.4,
+    restitution: float = 0.7,
+    other: Body | None = None,
+    **params: float | tuple[float, float] | None,
+) -> BodyImpact:
+    """A striking body A of any shape of :data:`SHAPES`, its parameters by keyword as scenario
+    files name them (angles in radians: ``angle``). The motion: ``velocity``/``omega``, or paper
+    A's ``speed``, ``alpha``, ``spin_ratio`` for a sphere or disc; without either, the seed's
+    state for a round body and ``velocity=(0.5, -1)`` for any other."""
 
 def rigid_body(
     mass: float,

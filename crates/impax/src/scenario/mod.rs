@@ -2,9 +2,13 @@
 //! explorer arguments), read and checked once, here, for every front end.
 //!
 //! Today: the planar body scenario of `impax compare` — one striking body against a fixed
-//! surface, or two free bodies — with its TOML format ([`PlanarScenario::from_toml`]) and the
-//! builder of each body ([`BodySpec::build`]). The command line, the sweeps, the Python
-//! bindings and the explorer adapt these types rather than reading shapes themselves.
+//! surface, or two free bodies — with its TOML format ([`PlanarScenario::from_toml`]), the
+//! table of shapes and their parameters ([`Shape`], [`ShapeParam`], and [`ShapeScalar`] for
+//! the numbers a sweep sets by name) and the one builder of a body ([`BodySpec::build`]). The
+//! command line, the sweeps, the Python bindings and the explorer fill a [`BodySpec`] (or read
+//! the table) rather than knowing shapes themselves: a shape added here works in all of them.
+//! The built-in mechanisms likewise: [`MechanismSpec::build`] (a file with a `mechanism` key,
+//! the mechanism flags, Python's `mechanism(...)`).
 //!
 //! ```toml
 //! friction = 0.4          # μ
@@ -12,12 +16,16 @@
 //! laws = ["whittaker", "energetic"]   # optional; default: every law
 //!
 //! [body]                  # the striking body A (contact at its lowest point)
-//! shape = "sphere"        # sphere | disc | rod | ellipse | rigid
+//! shape = "sphere"        # sphere | disc | rod | ellipse | rigid | box
 //! mass = 1.0
 //! radius = 1.0            # sphere, disc
 //! # length = 2.0; angle_deg = 50        (rod: angle from the surface)
 //! # semi_axes = [2.0, 1.0]; angle_deg = 20   (ellipse: its a axis from the surface)
 //! # inertia = 0.5; contact = [0.3, -1.0]     (rigid: contact point from the centre, (t, n))
+//! # half_extents = [1.0, 0.5]; angle_deg = 20; corner = [-1, -1]
+//! #     (box: half-width a, half-height b; its a side from the surface, default 0; the
+//! #     corner that strikes, signs in the box's frame, default the lowest — needed when an
+//! #     edge is lowest, as at angle 0)
 //! speed = 1.0             # round bodies: v0, α, γ as in paper A …
 //! alpha_deg = 30.0
 //! spin_ratio = 0.0
@@ -35,7 +43,11 @@
 //! `other.velocity`).
 
 mod body;
+mod mechanism;
 mod planar;
+mod shape;
 
 pub use body::{BodySpec, BuiltBody, Scale};
+pub use mechanism::{BuiltMechanism, MechanismSpec, MAX_ANGLE_DEG};
 pub use planar::{BuiltPlanar, PlanarScenario, SEED_TOML};
+pub use shape::{AngleUnit, Need, Quantity, Shape, ShapeParam, ShapeScalar};

@@ -6,9 +6,11 @@
 
 mod analysis;
 mod bodies3;
+mod box_shape;
 mod brute_force;
 mod lcp;
 mod lcp_spatial;
+mod mechanism_specs;
 mod mechanisms;
 mod multi_contact;
 mod multi_lzb;

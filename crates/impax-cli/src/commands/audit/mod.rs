@@ -222,9 +222,10 @@ fn mechanism_flags(args: &AuditArgs) -> MechanismSpec {
         lengths: args.mechanism.lengths.clone(),
         radius: args.radius,
         gravity: args.mechanism.gravity,
-        angles_deg: args.mechanism.angles_deg.clone(),
+        angles: args.mechanism.angles_deg.clone(),
         rates: args.mechanism.rates.clone(),
         position: args.mechanism.position.clone(),
+        angle_unit: Default::default(),
     }
 }
 
