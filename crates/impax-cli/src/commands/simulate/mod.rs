@@ -24,7 +24,7 @@ mod scenario;
 mod spec;
 mod table;
 
-pub use scenario::{build, MAX_ANGLE_DEG};
+pub use scenario::build;
 pub use spec::SimSpec;
 
 use crate::cli::SimulateArgs;

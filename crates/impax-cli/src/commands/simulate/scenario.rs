@@ -5,13 +5,10 @@ use super::{Case, Shape, SimSpec, NAMES};
 use crate::input::{CliError, CliResult};
 use crate::output::fmt::Plain;
 use impax::mechanism::builtin::STANDARD_GRAVITY;
+use impax::scenario::MAX_ANGLE_DEG;
 use impax::simulation::scenarios::{self, Initial};
 use impax::simulation::SimulationOptions;
 use impax::LawId;
-
-/// The largest angle magnitude, in degrees, a scenario accepts: one full turn either way
-/// (beyond it an angle only adds turns, and 1e308° is a typo, not a release angle).
-pub const MAX_ANGLE_DEG: f64 = 360.0;
 
 /// Check an angle in degrees: finite and at most [`MAX_ANGLE_DEG`] in magnitude.
 fn angle(field: &str, deg: f64) -> CliResult<f64> {
