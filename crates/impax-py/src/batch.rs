@@ -361,6 +361,17 @@ pub fn check_threads(threads: Option<&Bound<'_, PyAny>>) -> PyResult<Option<usiz
     thread_count(threads)
 }
 
+/// `on_invalid=`: whether an invalid row raises (`"raise"`) or is marked (`"mark"`).
+fn raises(on_invalid: &str) -> PyResult<bool> {
+    match on_invalid {
+        "raise" => Ok(true),
+        "mark" => Ok(false),
+        other => Err(value_error(format!(
+            "on_invalid: expected \"raise\" or \"mark\", got {other:?}"
+        ))),
+    }
+}
+
 /// Resolve many impacts with one law, in parallel, on numpy arrays.
 ///
 /// Planar: `w` of shape (N, 3) holds `W_tt, W_tn, W_nn`, `v` of shape (N, 2) holds
@@ -401,16 +412,8 @@ pub fn resolve_batch<'py>(
     threads: Option<&Bound<'py, PyAny>>,
     contacts: Option<usize>,
 ) -> PyResult<Bound<'py, PyDict>> {
+    let raise = raises(on_invalid)?;
     if let Some(k) = contacts {
-        let raise = match on_invalid {
-            "raise" => true,
-            "mark" => false,
-            other => {
-                return Err(value_error(format!(
-                    "on_invalid: expected \"raise\" or \"mark\", got {other:?}"
-                )))
-            }
-        };
         return crate::batch_multi::resolve(
             py,
             w,
@@ -428,15 +431,6 @@ pub fn resolve_batch<'py>(
     let v = float_array(v, "v")?;
     let friction = float_array(friction, "friction")?;
     let restitution = float_array(restitution, "restitution")?;
-    let raise = match on_invalid {
-        "raise" => true,
-        "mark" => false,
-        other => {
-            return Err(value_error(format!(
-                "on_invalid: expected \"raise\" or \"mark\", got {other:?}"
-            )))
-        }
-    };
     let w_view = w.as_array();
     let v_view = v.as_array();
     let (n, spatial) = match w_view.shape() {
