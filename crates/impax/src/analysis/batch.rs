@@ -333,6 +333,10 @@ macro_rules! with_law {
 /// `smith-centre` in contact space: always a breakdown (it needs a body).
 struct NeedsBody;
 impl ImpactLaw for NeedsBody {
+    type Problem = crate::planar::ContactProblem;
+    type Outcome = crate::planar::Outcome;
+    type Brief = crate::planar::OutcomeBrief;
+
     fn id(&self) -> LawId {
         LawId::SmithCentre
     }
@@ -436,7 +440,10 @@ pub fn resolve_columns(
 }
 
 #[inline(always)]
-fn summarize<L: ImpactLaw>(law: &L, p: &ContactProblem) -> ImpactSummary {
+fn summarize<L: ImpactLaw<Problem = ContactProblem, Outcome = crate::planar::Outcome>>(
+    law: &L,
+    p: &ContactProblem,
+) -> ImpactSummary {
     match law.resolve(p) {
         Ok(o) => ImpactSummary::of(&o),
         Err(_) => ImpactSummary::BREAKDOWN,

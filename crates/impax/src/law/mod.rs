@@ -14,7 +14,6 @@ pub(crate) use work::record_is_finite;
 pub use work::WorkSplit;
 
 use crate::error::{Error, Result};
-use crate::planar::{BriefResolution, ContactProblem, OutcomeBrief, Resolution};
 use std::fmt;
 use std::str::FromStr;
 
@@ -148,94 +147,6 @@ impl LawId {
     pub fn is_darboux_keller(self) -> bool {
         matches!(self, LawId::Newton | LawId::Poisson | LawId::Energetic)
     }
-
-    /// Resolve a contact-space problem with this law.
-    ///
-    /// `smith-centre` needs a body's centre velocity, which contact space does not have: it
-    /// returns [`BreakdownReason::NeedsBody`]. Use
-    /// [`crate::bodies::PlanarImpact::resolve`] (or [`crate::planar::laws::Smith::centre`]).
-    /// `sequential` and `lzb` with one contact are `energetic`, its outcome (or breakdown)
-    /// labelled `sequential` or `lzb`.
-    #[inline]
-    pub fn resolve(self, problem: &ContactProblem) -> Resolution {
-        use crate::planar::laws::*;
-        match self {
-            LawId::Whittaker => Whittaker.resolve(problem),
-            LawId::TwoPhase => TwoPhase.resolve(problem),
-            LawId::Smith => Smith::SLIP.resolve(problem),
-            LawId::SmithCentre => Err(Breakdown {
-                law: self,
-                reason: BreakdownReason::NeedsBody,
-            }),
-            LawId::Brach => Brach.resolve(problem),
-            LawId::Newton => Newton.resolve(problem),
-            LawId::Poisson => Poisson.resolve(problem),
-            LawId::Energetic => Energetic.resolve(problem),
-            LawId::Lcp => Lcp.resolve(problem),
-            LawId::Sequential => crate::multi::sequential::OneContact.resolve(problem),
-            LawId::Lzb => crate::multi::lzb::OneContact.resolve(problem),
-        }
-    }
-
-    /// Resolve a planar problem with several contacts ([`crate::multi`]).
-    ///
-    /// `lcp`, `sequential` and `lzb` take several contacts (`lcp` at most
-    /// [`crate::multi::lcp::MAX_CONTACTS`], `lzb` at most [`crate::multi::lzb::MAX_CONTACTS`],
-    /// `sequential` any number); with one contact every contact-space law does,
-    /// its one-contact outcome carried over ([`MultiOutcome::from_outcome`]).
-    ///
-    /// Errors ([`Error::Invalid`] naming the field `law`): a one-contact law with two contacts
-    /// or more, `smith-centre` (it needs a body), `lcp` with more than
-    /// [`crate::multi::lcp::MAX_CONTACTS`] contacts, `lzb` with more than
-    /// [`crate::multi::lzb::MAX_CONTACTS`]. A law that has no result for these
-    /// numbers gives a [`Breakdown`], as with one contact.
-    ///
-    /// [`MultiOutcome::from_outcome`]: crate::multi::MultiOutcome::from_outcome
-    ///
-    /// ```
-    /// use impax::{LawId, multi::MultiProblem};
-    /// // Two contacts that do not interact: each is its own one-contact problem.
-    /// let p = MultiProblem::from_upper(
-    ///     2,
-    ///     &[2.0, 0.5, 0.0, 0.0, /**/ 1.5, 0.0, 0.0, /**/ 3.0, 0.2, /**/ 1.0],
-    ///     &[0.3, -1.0, -0.4, -0.5],
-    ///     &[0.3],
-    ///     &[0.5],
-    /// )
-    /// .unwrap();
-    /// let out = LawId::Lcp.resolve_multi(&p).unwrap().unwrap();
-    /// assert!((out.contacts[0].velocity_after.y - 0.5).abs() < 1e-12); // −e v_n⁻
-    /// assert!((out.contacts[1].velocity_after.y - 0.25).abs() < 1e-12);
-    /// assert!(LawId::Whittaker.resolve_multi(&p).is_err()); // a one-contact law
-    /// ```
-    pub fn resolve_multi(
-        self,
-        problem: &crate::multi::MultiProblem,
-    ) -> Result<crate::multi::MultiResolution> {
-        crate::multi::resolve(self, problem)
-    }
-}
-
-impl LawId {
-    /// Resolve a spatial (3D) contact-space problem with this law.
-    #[inline]
-    pub fn resolve3(
-        self,
-        problem: &crate::spatial::ContactProblem3,
-    ) -> crate::spatial::Resolution3 {
-        crate::spatial::laws::resolve(self, problem)
-    }
-
-    /// Resolve a spatial (3D) contact-space problem with this law and the options of the
-    /// Darboux–Keller integration (tolerance).
-    #[inline]
-    pub fn resolve3_with(
-        self,
-        problem: &crate::spatial::ContactProblem3,
-        opts: &crate::spatial::SpatialOptions,
-    ) -> crate::spatial::Resolution3 {
-        crate::spatial::laws::resolve_with(self, problem, opts)
-    }
 }
 
 impl fmt::Display for LawId {
@@ -278,20 +189,31 @@ impl TryFrom<String> for LawId {
     }
 }
 
-/// A planar impact law: maps a contact-space problem to an outcome or a breakdown.
+/// An impact law: maps a contact-space problem to an outcome or a breakdown — the one trait
+/// of the planar laws ([`crate::planar::laws`]: `Problem = ContactProblem`,
+/// `Outcome = Outcome`, `Brief = OutcomeBrief`) and of any law on another kind of problem.
 ///
 /// Laws are pure functions of the problem: no I/O, no allocation.
 pub trait ImpactLaw {
+    /// What the law resolves (a contact-space problem).
+    type Problem;
+    /// What it returns for one impact.
+    type Outcome;
+    /// What a tally reads of an outcome (verdict, phases and `ΔT`): always the brief of the
+    /// outcome of [`resolve`](ImpactLaw::resolve).
+    type Brief: for<'a> From<&'a Self::Outcome>;
     /// The law's stable id.
     fn id(&self) -> LawId;
     /// Resolve one impact.
-    fn resolve(&self, problem: &ContactProblem) -> Resolution;
-    /// Resolve one impact to its verdict, phases and `ΔT` only: what a tally reads. Always
-    /// [`OutcomeBrief::of`] the outcome of [`resolve`](ImpactLaw::resolve) (or the same
-    /// breakdown); a law may override it to skip the rest of the record (the Darboux–Keller
-    /// laws do).
+    fn resolve(&self, problem: &Self::Problem) -> std::result::Result<Self::Outcome, Breakdown>;
+    /// Resolve one impact to its brief only. Always the brief of the outcome of
+    /// [`resolve`](ImpactLaw::resolve) (or the same breakdown); a law may override it to skip
+    /// the rest of the record (the planar Darboux–Keller laws do).
     #[inline]
-    fn resolve_brief(&self, problem: &ContactProblem) -> BriefResolution {
-        self.resolve(problem).map(|o| OutcomeBrief::of(&o))
+    fn resolve_brief(
+        &self,
+        problem: &Self::Problem,
+    ) -> std::result::Result<Self::Brief, Breakdown> {
+        self.resolve(problem).map(|o| Self::Brief::from(&o))
     }
 }

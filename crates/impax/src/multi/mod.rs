@@ -112,3 +112,43 @@ pub fn resolve(law: LawId, problem: &MultiProblem) -> Result<MultiResolution> {
         }),
     }
 }
+
+impl LawId {
+    /// Resolve a planar problem with several contacts ([`crate::multi`]).
+    ///
+    /// `lcp`, `sequential` and `lzb` take several contacts (`lcp` at most
+    /// [`crate::multi::lcp::MAX_CONTACTS`], `lzb` at most [`crate::multi::lzb::MAX_CONTACTS`],
+    /// `sequential` any number); with one contact every contact-space law does,
+    /// its one-contact outcome carried over ([`MultiOutcome::from_outcome`]).
+    ///
+    /// Errors ([`Error::Invalid`] naming the field `law`): a one-contact law with two contacts
+    /// or more, `smith-centre` (it needs a body), `lcp` with more than
+    /// [`crate::multi::lcp::MAX_CONTACTS`] contacts, `lzb` with more than
+    /// [`crate::multi::lzb::MAX_CONTACTS`]. A law that has no result for these
+    /// numbers gives a [`Breakdown`], as with one contact.
+    ///
+    /// [`MultiOutcome::from_outcome`]: crate::multi::MultiOutcome::from_outcome
+    ///
+    /// ```
+    /// use impax::{LawId, multi::MultiProblem};
+    /// // Two contacts that do not interact: each is its own one-contact problem.
+    /// let p = MultiProblem::from_upper(
+    ///     2,
+    ///     &[2.0, 0.5, 0.0, 0.0, /**/ 1.5, 0.0, 0.0, /**/ 3.0, 0.2, /**/ 1.0],
+    ///     &[0.3, -1.0, -0.4, -0.5],
+    ///     &[0.3],
+    ///     &[0.5],
+    /// )
+    /// .unwrap();
+    /// let out = LawId::Lcp.resolve_multi(&p).unwrap().unwrap();
+    /// assert!((out.contacts[0].velocity_after.y - 0.5).abs() < 1e-12); // −e v_n⁻
+    /// assert!((out.contacts[1].velocity_after.y - 0.25).abs() < 1e-12);
+    /// assert!(LawId::Whittaker.resolve_multi(&p).is_err()); // a one-contact law
+    /// ```
+    pub fn resolve_multi(
+        self,
+        problem: &crate::multi::MultiProblem,
+    ) -> Result<crate::multi::MultiResolution> {
+        crate::multi::resolve(self, problem)
+    }
+}

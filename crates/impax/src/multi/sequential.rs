@@ -175,6 +175,10 @@ pub fn resolve(problem: &MultiProblem) -> MultiResolution {
 pub struct OneContact;
 
 impl ImpactLaw for OneContact {
+    type Problem = crate::planar::ContactProblem;
+    type Outcome = crate::planar::Outcome;
+    type Brief = crate::planar::OutcomeBrief;
+
     fn id(&self) -> LawId {
         LawId::Sequential
     }

@@ -398,6 +398,13 @@ impl Outcome {
 /// What a law returns: an outcome or a breakdown.
 pub type Resolution = Result<Outcome, Breakdown>;
 
+impl From<&Outcome> for OutcomeBrief {
+    /// [`OutcomeBrief::of`].
+    fn from(o: &Outcome) -> Self {
+        OutcomeBrief::of(o)
+    }
+}
+
 /// What [`ImpactLaw::resolve_brief`](crate::law::ImpactLaw::resolve_brief) returns: the
 /// brief of an outcome, or the breakdown.
 pub type BriefResolution = Result<OutcomeBrief, Breakdown>;

@@ -362,3 +362,25 @@ pub fn hodograph(problem: &ContactProblem3, law: LawId) -> Result<Vec<[f64; 4]>,
     darboux_keller_observed(problem, law, &mut |p, v| pts.push([p, v.x, v.y, v.z]))?;
     Ok(pts)
 }
+
+impl LawId {
+    /// Resolve a spatial (3D) contact-space problem with this law.
+    #[inline]
+    pub fn resolve3(
+        self,
+        problem: &crate::spatial::ContactProblem3,
+    ) -> crate::spatial::Resolution3 {
+        crate::spatial::laws::resolve(self, problem)
+    }
+
+    /// Resolve a spatial (3D) contact-space problem with this law and the options of the
+    /// Darboux–Keller integration (tolerance).
+    #[inline]
+    pub fn resolve3_with(
+        self,
+        problem: &crate::spatial::ContactProblem3,
+        opts: &crate::spatial::SpatialOptions,
+    ) -> crate::spatial::Resolution3 {
+        crate::spatial::laws::resolve_with(self, problem, opts)
+    }
+}

@@ -24,6 +24,10 @@ use crate::planar::{
 pub struct Brach;
 
 impl ImpactLaw for Brach {
+    type Problem = crate::planar::ContactProblem;
+    type Outcome = crate::planar::Outcome;
+    type Brief = crate::planar::OutcomeBrief;
+
     fn id(&self) -> LawId {
         LawId::Brach
     }

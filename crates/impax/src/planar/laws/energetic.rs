@@ -42,6 +42,10 @@ impl Energetic {
 }
 
 impl ImpactLaw for Energetic {
+    type Problem = crate::planar::ContactProblem;
+    type Outcome = crate::planar::Outcome;
+    type Brief = crate::planar::OutcomeBrief;
+
     fn id(&self) -> LawId {
         LawId::Energetic
     }

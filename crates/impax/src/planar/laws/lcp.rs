@@ -176,6 +176,10 @@ impl Lcp {
 }
 
 impl ImpactLaw for Lcp {
+    type Problem = crate::planar::ContactProblem;
+    type Outcome = crate::planar::Outcome;
+    type Brief = crate::planar::OutcomeBrief;
+
     fn id(&self) -> LawId {
         LawId::Lcp
     }

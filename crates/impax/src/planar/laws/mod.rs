@@ -40,6 +40,35 @@ use crate::math::Vec2;
 
 pub use crate::law::energy::ENERGY_GAIN_ROUND_OFF;
 
+impl LawId {
+    /// Resolve a contact-space problem with this law.
+    ///
+    /// `smith-centre` needs a body's centre velocity, which contact space does not have: it
+    /// returns [`BreakdownReason::NeedsBody`]. Use
+    /// [`crate::bodies::PlanarImpact::resolve`] (or [`crate::planar::laws::Smith::centre`]).
+    /// `sequential` and `lzb` with one contact are `energetic`, its outcome (or breakdown)
+    /// labelled `sequential` or `lzb`.
+    #[inline]
+    pub fn resolve(self, problem: &ContactProblem) -> Resolution {
+        match self {
+            LawId::Whittaker => Whittaker.resolve(problem),
+            LawId::TwoPhase => TwoPhase.resolve(problem),
+            LawId::Smith => Smith::SLIP.resolve(problem),
+            LawId::SmithCentre => Err(Breakdown {
+                law: self,
+                reason: BreakdownReason::NeedsBody,
+            }),
+            LawId::Brach => Brach.resolve(problem),
+            LawId::Newton => Newton.resolve(problem),
+            LawId::Poisson => Poisson.resolve(problem),
+            LawId::Energetic => Energetic.resolve(problem),
+            LawId::Lcp => Lcp.resolve(problem),
+            LawId::Sequential => crate::multi::sequential::OneContact.resolve(problem),
+            LawId::Lzb => crate::multi::lzb::OneContact.resolve(problem),
+        }
+    }
+}
+
 /// Whether `energy_change = ΔT` of the impulse `p` (taking `v⁻` to `v⁺`) is a real gain: it
 /// exceeds the round-off of its own evaluation.
 ///

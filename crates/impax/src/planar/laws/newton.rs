@@ -33,6 +33,10 @@ impl Newton {
 }
 
 impl ImpactLaw for Newton {
+    type Problem = crate::planar::ContactProblem;
+    type Outcome = crate::planar::Outcome;
+    type Brief = crate::planar::OutcomeBrief;
+
     fn id(&self) -> LawId {
         LawId::Newton
     }

@@ -31,6 +31,10 @@ impl Poisson {
 }
 
 impl ImpactLaw for Poisson {
+    type Problem = crate::planar::ContactProblem;
+    type Outcome = crate::planar::Outcome;
+    type Brief = crate::planar::OutcomeBrief;
+
     fn id(&self) -> LawId {
         LawId::Poisson
     }

@@ -36,6 +36,10 @@ use crate::planar::{
 pub struct TwoPhase;
 
 impl ImpactLaw for TwoPhase {
+    type Problem = crate::planar::ContactProblem;
+    type Outcome = crate::planar::Outcome;
+    type Brief = crate::planar::OutcomeBrief;
+
     fn id(&self) -> LawId {
         LawId::TwoPhase
     }

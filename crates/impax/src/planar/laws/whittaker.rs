@@ -33,6 +33,10 @@ use crate::planar::{
 pub struct Whittaker;
 
 impl ImpactLaw for Whittaker {
+    type Problem = crate::planar::ContactProblem;
+    type Outcome = crate::planar::Outcome;
+    type Brief = crate::planar::OutcomeBrief;
+
     fn id(&self) -> LawId {
         LawId::Whittaker
     }

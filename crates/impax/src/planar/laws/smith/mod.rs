@@ -76,6 +76,10 @@ impl Default for Smith {
 }
 
 impl ImpactLaw for Smith {
+    type Problem = crate::planar::ContactProblem;
+    type Outcome = crate::planar::Outcome;
+    type Brief = crate::planar::OutcomeBrief;
+
     fn id(&self) -> LawId {
         match self.reading {
             SmithReading::SlipVelocity => LawId::Smith,
