@@ -194,30 +194,69 @@ pub fn multi_problem(p: &MultiProblem) -> Value {
 /// `breakdown`, `detail` (every number null when the law broke down).
 pub fn multi_entry(r: &MultiResolution) -> Value {
     match r {
-        Ok(o) => json!({
-            "law": o.law.as_str(),
-            "verdict": o.verdict.id(),
-            "contacts": o.contacts.iter().map(|c| json!({
-                "impulse": vec2(c.impulse),
-                "velocity_after": vec2(c.velocity_after),
-                "phases": multi_phases(&c.phases),
-                "work": multi_work(&c.work),
-            })).collect::<Vec<_>>(),
-            "energy_change": num(o.energy_change),
-            "inconsistency": o.inconsistency.map_or(Value::Null, |i| json!({ "id": i.id(), "message": i.to_string() })),
-            "breakdown": Value::Null,
-            "detail": multi_detail(o),
-        }),
-        Err(b) => json!({
-            "law": b.law.as_str(),
-            "verdict": "breakdown",
-            "contacts": Value::Null,
-            "energy_change": Value::Null,
-            "inconsistency": Value::Null,
-            "breakdown": { "id": b.reason.id(), "message": b.reason.to_string() },
-            "detail": Value::Null,
-        }),
+        Ok(o) => entry_of(
+            o.law,
+            o.verdict,
+            o.contacts
+                .iter()
+                .map(|c| {
+                    contact_of(
+                        vec2(c.impulse),
+                        vec2(c.velocity_after),
+                        multi_phases(&c.phases),
+                        &c.work,
+                    )
+                })
+                .collect(),
+            o.energy_change,
+            o.inconsistency,
+            multi_detail(o),
+        ),
+        Err(b) => broken_entry(b),
     }
+}
+
+/// One contact's object: `impulse`, `velocity_after`, `phases`, `work`.
+fn contact_of(impulse: Value, velocity_after: Value, phases: Value, work: &WorkSplit) -> Value {
+    json!({
+        "impulse": impulse,
+        "velocity_after": velocity_after,
+        "phases": phases,
+        "work": multi_work(work),
+    })
+}
+
+/// A multi-contact law's entry, planar or spatial.
+fn entry_of(
+    law: impax::LawId,
+    verdict: impax::law::Verdict,
+    contacts: Vec<Value>,
+    energy_change: f64,
+    inconsistency: Option<impax::law::Inconsistency>,
+    detail: Value,
+) -> Value {
+    json!({
+        "law": law.as_str(),
+        "verdict": verdict.id(),
+        "contacts": contacts,
+        "energy_change": num(energy_change),
+        "inconsistency": inconsistency.map_or(Value::Null, |i| json!({ "id": i.id(), "message": i.to_string() })),
+        "breakdown": Value::Null,
+        "detail": detail,
+    })
+}
+
+/// The entry of a multi-contact law that broke down: every number null.
+fn broken_entry(b: &Breakdown) -> Value {
+    json!({
+        "law": b.law.as_str(),
+        "verdict": "breakdown",
+        "contacts": Value::Null,
+        "energy_change": Value::Null,
+        "inconsistency": Value::Null,
+        "breakdown": { "id": b.reason.id(), "message": b.reason.to_string() },
+        "detail": Value::Null,
+    })
 }
 
 /// `lcp`: `solutions` (each `energy_change` and per contact `kind`, `impulse`,
@@ -331,29 +370,25 @@ pub fn multi3_problem(p: &multi3::MultiProblem) -> Value {
 /// `{t1, t2, n}`.
 pub fn multi3_entry(r: &multi3::MultiResolution) -> Value {
     match r {
-        Ok(o) => json!({
-            "law": o.law.as_str(),
-            "verdict": o.verdict.id(),
-            "contacts": o.contacts.iter().map(|c| json!({
-                "impulse": vec3(c.impulse),
-                "velocity_after": vec3(c.velocity_after),
-                "phases": multi3_phases(&c.phases),
-                "work": multi_work(&c.work),
-            })).collect::<Vec<_>>(),
-            "energy_change": num(o.energy_change),
-            "inconsistency": o.inconsistency.map_or(Value::Null, |i| json!({ "id": i.id(), "message": i.to_string() })),
-            "breakdown": Value::Null,
-            "detail": multi3_detail(o),
-        }),
-        Err(b) => json!({
-            "law": b.law.as_str(),
-            "verdict": "breakdown",
-            "contacts": Value::Null,
-            "energy_change": Value::Null,
-            "inconsistency": Value::Null,
-            "breakdown": { "id": b.reason.id(), "message": b.reason.to_string() },
-            "detail": Value::Null,
-        }),
+        Ok(o) => entry_of(
+            o.law,
+            o.verdict,
+            o.contacts
+                .iter()
+                .map(|c| {
+                    contact_of(
+                        vec3(c.impulse),
+                        vec3(c.velocity_after),
+                        multi3_phases(&c.phases),
+                        &c.work,
+                    )
+                })
+                .collect(),
+            o.energy_change,
+            o.inconsistency,
+            multi3_detail(o),
+        ),
+        Err(b) => broken_entry(b),
     }
 }
 

@@ -1,7 +1,7 @@
 //! The planar contact-space problem with `K` contacts `(W, v⁻, μ_j, e_j)`.
 
-use super::validate::{check, coefficients, from_upper_triangle};
-use crate::error::{Error, Result};
+use super::validate::{check, exponent as exponent_checked, from_upper_triangle, stiffnesses};
+use crate::error::Result;
 use crate::math::{Mat2, Units, Vec2};
 use crate::planar::{ContactProblem, InverseInertia};
 use nalgebra::{DMatrix, DVector};
@@ -141,9 +141,7 @@ impl MultiProblem {
     /// assert_eq!(e.field(), "stiffness[2]");
     /// ```
     pub fn with_stiffness(mut self, stiffness: &[f64]) -> Result<Self> {
-        self.stiffness = coefficients("stiffness", stiffness, self.k, |x| {
-            (x <= 0.0).then_some("a stiffness must be > 0")
-        })?;
+        self.stiffness = stiffnesses(stiffness, self.k)?;
         Ok(self)
     }
 
@@ -162,15 +160,7 @@ impl MultiProblem {
     /// assert_eq!(p.with_exponent(0.0).unwrap_err().field(), "exponent");
     /// ```
     pub fn with_exponent(mut self, exponent: f64) -> Result<Self> {
-        crate::error::finite("exponent", exponent)?;
-        if exponent <= 0.0 {
-            return Err(Error::OutOfRange {
-                field: "exponent".into(),
-                value: exponent,
-                reason: "the exponent of the force law must be > 0".into(),
-            });
-        }
-        self.exponent = exponent;
+        self.exponent = exponent_checked(exponent)?;
         Ok(self)
     }
 

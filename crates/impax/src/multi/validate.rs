@@ -74,6 +74,27 @@ pub(crate) fn coefficients(
         .collect())
 }
 
+/// The stiffness ratios `κ_j` of `lzb`: one value for every contact or `K`, each positive and
+/// finite (field `stiffness`, `stiffness[j]`).
+pub(crate) fn stiffnesses(values: &[f64], k: usize) -> Result<Vec<f64>> {
+    coefficients("stiffness", values, k, |x| {
+        (x <= 0.0).then_some("a stiffness must be > 0")
+    })
+}
+
+/// The exponent `η` of `lzb`'s force law: finite and `> 0` (field `exponent`).
+pub(crate) fn exponent(eta: f64) -> Result<f64> {
+    crate::error::finite("exponent", eta)?;
+    if eta <= 0.0 {
+        return Err(Error::OutOfRange {
+            field: "exponent".into(),
+            value: eta,
+            reason: "the exponent of the force law must be > 0".into(),
+        });
+    }
+    Ok(eta)
+}
+
 /// `W` from its upper triangle, row by row (`dK (dK + 1) / 2` numbers).
 pub(crate) fn from_upper_triangle(
     d: usize,

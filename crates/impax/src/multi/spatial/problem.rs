@@ -1,9 +1,9 @@
 //! The spatial contact-space problem with `K` contacts `(W, v⁻, μ_j, e_j)`.
 
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::math::{Mat3, Units, Vec3};
 use crate::multi::problem::HERTZ_EXPONENT;
-use crate::multi::validate::{check, coefficients, Checked};
+use crate::multi::validate::{check, exponent as exponent_checked, stiffnesses, Checked};
 use crate::spatial::ContactProblem3;
 use nalgebra::{DMatrix, DVector};
 
@@ -92,24 +92,14 @@ impl MultiProblem {
     /// The same problem with the stiffness ratios `κ_j` of `lzb` (as
     /// [`crate::multi::MultiProblem::with_stiffness`]).
     pub fn with_stiffness(mut self, stiffness: &[f64]) -> Result<Self> {
-        self.stiffness = coefficients("stiffness", stiffness, self.checked.k, |x| {
-            (x <= 0.0).then_some("a stiffness must be > 0")
-        })?;
+        self.stiffness = stiffnesses(stiffness, self.checked.k)?;
         Ok(self)
     }
 
     /// The same problem with the exponent `η` of `lzb`'s force law (as
     /// [`crate::multi::MultiProblem::with_exponent`]).
     pub fn with_exponent(mut self, exponent: f64) -> Result<Self> {
-        crate::error::finite("exponent", exponent)?;
-        if exponent <= 0.0 {
-            return Err(Error::OutOfRange {
-                field: "exponent".into(),
-                value: exponent,
-                reason: "the exponent of the force law must be > 0".into(),
-            });
-        }
-        self.exponent = exponent;
+        self.exponent = exponent_checked(exponent)?;
         Ok(self)
     }
 
