@@ -17,6 +17,7 @@
 use super::system::{Layout, Outline, System};
 use impax::mechanism::builtin::BuiltIn;
 use impax::mechanism::{dynamics, Mechanism};
+use impax::ode::Tolerances;
 use impax::simulation::{simulate, SimulationOptions, StopReason};
 use impax::LawId;
 use serde_json::{json, Value};
@@ -26,6 +27,13 @@ pub const FRAMES: usize = 120;
 
 /// The longest motion simulated after the impact, seconds.
 pub const HORIZON: f64 = 3.0;
+
+/// The integration's tolerances: a picture's (the run's events are still located to
+/// round-off).
+pub const TOLERANCES: Tolerances = Tolerances {
+    relative: 1e-9,
+    absolute: 1e-12,
+};
 
 /// The window when every law leaves the bodies at rest at once, seconds.
 pub const REST_WINDOW: f64 = 0.25;
@@ -122,6 +130,7 @@ fn on_floor(m: &BuiltIn, system: &System, law: LawId, u: &[f64]) -> Motion {
     let mut options = SimulationOptions::new(law, system.friction, system.restitution, HORIZON);
     options.max_impacts = 0;
     options.sample_interval = HORIZON / 3000.0;
+    options.tolerances = TOLERANCES;
     let q0 = &system.q;
     let run = match simulate(m, q0, u, &options) {
         Ok(run) => run,
