@@ -5,8 +5,15 @@
 
 const Impax = {
   exports: null,
+  loading: null,
 
-  async load(url) {
+  // Load the module once: the page's views share it (a second call gets the same promise).
+  load(url) {
+    if (!this.loading) this.loading = this.instantiate(url);
+    return this.loading;
+  },
+
+  async instantiate(url) {
     let bytes;
     try {
       const response = await fetch(url);
@@ -57,6 +64,11 @@ const Impax = {
 
   compare(request) {
     return this.call("impax_compare", request);
+  },
+
+  // Every multi-contact law on a built-in system struck at several contacts.
+  multi(request) {
+    return this.call("impax_multi", request);
   },
 
   // An energy map: the description, and copies of the cells (ΔT/T0 as f32, class as u8).

@@ -5,7 +5,9 @@
 //
 // Environment: IMPAX_BIN (the binary, required), CHROMIUM (default /usr/bin/chromium),
 // SCREENSHOT (default target/explorer.png beside the repository root; the book's picture
-// docs/src/img/explorer.png is refreshed with SCREENSHOT=docs/src/img/explorer.png).
+// docs/src/img/explorer.png is refreshed with SCREENSHOT=docs/src/img/explorer.png),
+// MULTI_SCREENSHOT (the view with several contacts, default target/explorer-multi.png; the
+// book's docs/src/img/explorer-multi.png).
 import { test, before, after } from "node:test";
 import assert from "node:assert/strict";
 import { spawn, execFileSync } from "node:child_process";
@@ -21,6 +23,7 @@ const root = path.resolve(here, "../..");
 const IMPAX = process.env.IMPAX_BIN && path.resolve(process.env.IMPAX_BIN);
 const CHROMIUM = process.env.CHROMIUM || "/usr/bin/chromium";
 const SCREENSHOT = process.env.SCREENSHOT || path.join(root, "target/explorer.png");
+const MULTI_SCREENSHOT = process.env.MULTI_SCREENSHOT || path.join(root, "target/explorer-multi.png");
 const FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--no-first-run",
   "--disable-background-networking", "--disable-component-update", "--disable-sync"];
 
@@ -280,6 +283,142 @@ test("Kane's double pendulum: the page agrees with impax compare double-pendulum
   await page.waitForFunction(() => document.querySelector('#laws tr[data-law="whittaker"] td[data-col="dT"]')?.textContent === "+0.24240");
 });
 
+// ---- the view with several contacts ------------------------------------------------------
+
+async function multiCell(law, key) {
+  return page.$eval(`#multi-laws td[data-law="${law}"][data-key="${key}"]`, (td) => td.textContent);
+}
+
+// Set a slider of the view and wait for the page to answer it.
+async function setMultiSlider(key, value) {
+  const before = await page.$eval("#several", (s) => s.dataset.updates);
+  await page.$eval(`#m-${key}`, (el, v) => {
+    el.value = v;
+    el.dispatchEvent(new Event("input", { bubbles: true }));
+  }, String(value));
+  await page.waitForFunction((b) => document.getElementById("several").dataset.updates !== b, before);
+}
+
+// The table against `impax compare NAME --json`, to the five decimals shown, for every law.
+async function checkMultiTable(json) {
+  const a = await page.evaluate(() => window.explorerMulti.answer);
+  assert.deepEqual(a.results.map((r) => r.law), json.results.map((r) => r.law));
+  for (const r of json.results) {
+    assert.equal(await page.$eval(`#multi-laws td.verdict[data-law="${r.law}"]`, (td) => td.dataset.verdict), r.verdict, `${r.law}: verdict`);
+    const expected = { dT: r.energy_change, ratio: r.energy_ratio };
+    for (const c of a.columns) {
+      if (c.kind === "velocity") expected[c.key] = r.velocities_after[json.coordinates.indexOf(c.key)];
+    }
+    r.contacts.forEach((ct, j) => { expected[`pn${j + 1}`] = ct.impulse.n; });
+    assert.equal(Object.keys(expected).length, a.columns.length);
+    for (const [key, value] of Object.entries(expected)) {
+      const text = await multiCell(r.law, key);
+      assert.equal(shown(text).toFixed(5), (Math.abs(value) < 0.5e-5 ? 0 : value).toFixed(5).replace("-0.00000", "0.00000"),
+        `${r.law} ${key}: page shows ${text}, impax compare --json gives ${value}`);
+    }
+  }
+}
+
+// How many pixels of a law's canvas are not white.
+async function inked(law) {
+  return page.$eval(`#multi-anims figure[data-law="${law}"] canvas`, (c) => {
+    const d = c.getContext("2d").getImageData(0, 0, c.width, c.height).data;
+    let n = 0;
+    for (let i = 0; i < d.length; i += 4) if (d[i] < 200 || d[i + 1] < 200 || d[i + 2] < 200) n++;
+    return n;
+  });
+}
+
+async function pixels(law) {
+  return page.$eval(`#multi-anims figure[data-law="${law}"] canvas`, (c) => c.toDataURL());
+}
+
+async function setClock(fraction) {
+  await page.$eval("#multi-clock", (el, v) => { el.value = v; el.dispatchEvent(new Event("input", { bubbles: true })); }, String(fraction));
+}
+
+test("several contacts: Newton's cradle under every multi-contact law, as impax compare cradle --json", async () => {
+  await page.click("#tab-several");
+  await page.waitForSelector('#several[data-ready="1"]', { timeout: 20000 });
+  assert.equal(await page.$eval("#one-contact", (m) => m.hidden), true);
+  assert.equal(await page.$eval("#multi-system", (s) => s.value), "cradle");
+  const laws = await page.$$eval("#multi-laws thead th.law", (ths) => ths.map((th) => th.dataset.law));
+  assert.deepEqual(laws, ["lcp", "sequential", "lzb"]);
+  // The LCP's cradle: (−1/3, 2/3, 2/3) v0; binary impacts: (0, 0, v0).
+  assert.equal(await multiCell("lcp", "x1"), "−0.33333");
+  assert.equal(await multiCell("lcp", "x2"), "+0.66667");
+  assert.equal(await multiCell("sequential", "x3"), "+1.00000");
+  await checkMultiTable(impax("compare", "cradle", "--json"));
+  // One animation per law, drawn.
+  for (const law of laws) assert.ok((await inked(law)) > 500, `${law}: the canvas is drawn`);
+  // The clock moves the balls: lcp's first ball goes back, sequential's stays.
+  await setClock(0.05);
+  const [lcpAt0, seqAt0] = [await pixels("lcp"), await pixels("sequential")];
+  await setClock(0.8);
+  assert.notEqual(await pixels("lcp"), lcpAt0, "lcp's balls move");
+  assert.notEqual(await pixels("sequential"), seqAt0, "the last ball moves under sequential");
+  assert.equal(await page.$eval("#multi-play", (b) => b.textContent), "play");
+  await page.click("#multi-play");
+  assert.equal(await page.$eval("#multi-play", (b) => b.textContent), "pause");
+});
+
+test("several contacts: a slider changes the numbers (balls, then e), as impax compare cradle does", async () => {
+  await setMultiSlider("balls", 4);
+  assert.notEqual(await multiCell("lcp", "x1"), "−0.33333");
+  assert.ok(await page.$('#multi-laws td[data-law="lcp"][data-key="x4"]'), "a fourth ball's column");
+  await checkMultiTable(impax("compare", "cradle", "--balls", "4", "--json"));
+  const before = await multiCell("sequential", "ratio");
+  await setMultiSlider("restitution", 0.5);
+  assert.notEqual(await multiCell("sequential", "ratio"), before);
+  await checkMultiTable(impax("compare", "cradle", "--balls", "4", "--restitution", "0.5", "--json"));
+  // Eight balls: seven contacts, beyond lcp's six: its column says so.
+  await setMultiSlider("balls", 8);
+  assert.equal(await page.$eval('#multi-laws td.verdict[data-law="lcp"]', (td) => td.dataset.verdict), "omitted");
+  assert.match(await page.$eval("#multi-notes", (p) => p.textContent), /lcp: .*at most 6 contacts/);
+  assert.ok((await inked("sequential")) > 500);
+  await page.click("#multi-reset");
+  await page.waitForFunction(() => document.querySelector('#multi-laws td[data-law="lcp"][data-key="x1"]')?.textContent === "−0.33333");
+});
+
+test("several contacts: the rod landing flat and the rocking block, and a rod that does not land is an error", async () => {
+  await page.selectOption("#multi-system", "rod-flat");
+  await page.waitForFunction(() => window.explorerMulti.answer.system === "rod-flat");
+  const vy = await page.$eval("#m-vy", (el) => el.value), omega = await page.$eval("#m-omega", (el) => el.value);
+  await checkMultiTable(impax("compare", "rod-flat", "--vy", vy, "--omega", omega, "--json"));
+  const end = await page.$eval('#multi-anims figure[data-law="lcp"] figcaption', (f) => f.textContent);
+  assert.match(end, /strikes the floor at t = /);
+  await setMultiSlider("omega", 0);
+  await setMultiSlider("vy", -2);
+  await checkMultiTable(impax("compare", "rod-flat", "--vy", "-2", "--omega", "0", "--json"));
+  // Landing level: lcp and lzb give (0, e |v_y|, 0).
+  assert.equal(await multiCell("lcp", "y"), "+1.00000");
+  assert.equal(await multiCell("lzb", "y"), "+1.00000");
+  await page.$eval("#m-vy", (el) => { el.value = "0.5"; el.dispatchEvent(new Event("input", { bubbles: true })); });
+  assert.match(await page.$eval("#multi-error", (e) => (e.hidden ? "" : e.textContent)), /^vy, omega: no end of the rod comes down/);
+  await page.selectOption("#multi-system", "rocking-block");
+  await page.waitForFunction(() => window.explorerMulti.answer.system === "rocking-block");
+  assert.equal(await page.$eval("#multi-error", (e) => e.hidden), true);
+  await checkMultiTable(impax("compare", "rocking-block", "--json"));
+  // Housner: ω⁺/ω⁻ = 1 − (3/2) sin²α = 0.85 for b = 0.2, h = 0.6.
+  assert.equal(await multiCell("lcp", "theta"), "−0.85000");
+  await page.selectOption("#multi-system", "ball-ball-wall");
+  await page.waitForFunction(() => window.explorerMulti.answer.system === "ball-ball-wall");
+  await checkMultiTable(impax("compare", "ball-ball-wall", "--json"));
+  const [sw, iw] = await page.evaluate(() => [document.documentElement.scrollWidth, window.innerWidth]);
+  assert.ok(sw <= iw, `no horizontal scrolling (${sw} > ${iw})`);
+  assert.ok(!(await page.content()).includes("NaN"));
+  // The screenshot of the view: the cradle 1.2 s after the impact.
+  await page.selectOption("#multi-system", "cradle");
+  await page.waitForFunction(() => window.explorerMulti.answer.system === "cradle");
+  await setClock(0.6);
+  fs.mkdirSync(path.dirname(MULTI_SCREENSHOT), { recursive: true });
+  await page.screenshot({ path: MULTI_SCREENSHOT, fullPage: true });
+  await page.click("#tab-one");
+  assert.equal(await page.$eval("#several", (m) => m.hidden), true);
+  assert.equal(await cell("whittaker", "dT"), "+0.24240");
+  assert.deepEqual(errors, []);
+});
+
 test("the folder written by --out works offline (file://) and the page fits a laptop screen", async () => {
   const dir = fs.mkdtempSync(path.join(os.tmpdir(), "impax-explorer-"));
   execFileSync(IMPAX, ["explore", "--out", dir]);
@@ -287,6 +426,10 @@ test("the folder written by --out works offline (file://) and the page fits a la
   await offline.goto(pathToFileURL(path.join(dir, "index.html")).href);
   await offline.waitForSelector('body[data-ready="1"]', { timeout: 20000 });
   assert.equal(await offline.$eval('#laws tr[data-law="whittaker"] td[data-col="dT"]', (td) => td.textContent), "+0.24240");
+  await offline.click("#tab-several");
+  await offline.waitForSelector('#several[data-ready="1"]', { timeout: 20000 });
+  assert.equal(await offline.$eval('#multi-laws td[data-law="lcp"][data-key="x1"]', (td) => td.textContent), "−0.33333");
+  await offline.click("#tab-one");
   for (const p of [offline, page]) {
     const [sw, iw] = await p.evaluate(() => [document.documentElement.scrollWidth, window.innerWidth]);
     assert.ok(sw <= iw, `no horizontal scrolling (${sw} > ${iw})`);

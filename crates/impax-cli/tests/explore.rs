@@ -14,11 +14,12 @@ use std::net::{TcpListener, TcpStream};
 use std::path::PathBuf;
 use std::process::{Child, Stdio};
 
-const FILES: [&str; 5] = [
+const FILES: [&str; 6] = [
     "index.html",
     "style.css",
     "impax.js",
     "explorer.js",
+    "multi.js",
     "impax_wasm.wasm",
 ];
 

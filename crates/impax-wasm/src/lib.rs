@@ -10,15 +10,17 @@
 //!
 //! 1. `impax_alloc(len) -> ptr`: room for a request of `len` bytes;
 //! 2. write the UTF-8 request at `ptr`;
-//! 3. `impax_compare(ptr, len)` or `impax_map(ptr, len)` (which also free the request)
-//!    returns a pointer to the answer, `impax_output_len()` its length in bytes;
+//! 3. `impax_compare(ptr, len)`, `impax_multi(ptr, len)` or `impax_map(ptr, len)` (which
+//!    also free the request) returns a pointer to the answer, `impax_output_len()` its
+//!    length in bytes;
 //! 4. `impax_map` also leaves the map's cells in two arrays: `impax_map_values()`
 //!    (`f32` per cell: `ΔT/T0`, NaN where the law broke down or the point is invalid) and
 //!    `impax_map_classes()` (`u8` per cell, see [`map::Class`]), `nx × ny` cells, row by row
 //!    from the lowest `y`.
 //!
 //! A bad request is answered with `{"error": "one line"}`, never a trap. The Rust functions
-//! behind the exports, [`compare_json`] and [`map_json`], are public for tests on the host.
+//! behind the exports, [`compare_json`], [`multi_json`] and [`map_json`], are public for
+//! tests on the host.
 //!
 //! ## Example
 //! ```
@@ -38,6 +40,7 @@
 pub mod animation;
 pub mod case;
 pub mod map;
+pub mod multi;
 pub mod report;
 
 use std::cell::RefCell;
@@ -51,6 +54,25 @@ pub fn compare_json(request: &str) -> String {
     finish(answer)
 }
 
+/// Answer a request of the view with several contacts (see [`multi::system::MultiRequest`]:
+/// a built-in system, its parameters, μ and e) with every multi-contact law's result, the
+/// scene and each law's motion after the impact (see [`multi`]), or `{"error": …}`.
+///
+/// ```
+/// let answer = impax_wasm::multi_json(r#"{"system": "cradle", "balls": 3}"#);
+/// let v: serde_json::Value = serde_json::from_str(&answer).unwrap();
+/// let lcp = &v["results"][0];
+/// assert_eq!(lcp["law"], "lcp");
+/// let first = lcp["velocities_after"][0].as_f64().unwrap();
+/// assert!((first + 1.0 / 3.0).abs() < 1e-12); // the LCP's cradle: (−1/3, 2/3, 2/3) v0
+/// ```
+pub fn multi_json(request: &str) -> String {
+    let answer = serde_json::from_str::<multi::system::MultiRequest>(request)
+        .map_err(|e| format!("request: {e}"))
+        .and_then(|r| multi::answer(&r));
+    finish(answer)
+}
+
 /// Answer a map request (see [`map::MapRequest`]): the map's description as JSON, the cells
 /// in `values` and `classes` (cleared and refilled), or `{"error": …}`.
 pub fn map_json(request: &str, values: &mut Vec<f32>, classes: &mut Vec<u8>) -> String {
@@ -61,7 +83,9 @@ pub fn map_json(request: &str, values: &mut Vec<f32>, classes: &mut Vec<u8>) -> 
 }
 
 /// The laws and bodies the module knows, as JSON: `{"version", "laws", "mechanism_laws",
-/// "shapes", "shape_parameters", "map_parameters"}`. `shape_parameters` gives, for each shape,
+/// "multi_laws", "shapes", "shape_parameters", "map_parameters", "multi_systems"}`.
+/// `multi_systems` gives each system of the view with several contacts its parameters with
+/// the core's defaults, its default μ and e ([`multi::system::systems_json`]). `shape_parameters` gives, for each shape,
 /// its numbers as the core's table names them: `{"name"` (e.g. `semi_axis_a`), `"key"` and
 /// `"index"` (where it goes in a request: `semi_axes[0]`; `index` null for a single number),
 /// `"label"`, `"quantity"` (`length`, `angle`, `inertia` or `offset`)`}`.
@@ -71,16 +95,22 @@ pub fn info_json() -> String {
         .iter()
         .map(|l| l.as_str())
         .collect();
+    let multi_laws: Vec<&str> = impax::LawId::MULTI_CONTACT
+        .iter()
+        .map(|l| l.as_str())
+        .collect();
     serde_json::json!({
         "version": env!("CARGO_PKG_VERSION"),
         "laws": laws,
         "mechanism_laws": mech,
+        "multi_laws": multi_laws,
         "shapes": case::SHAPES,
         "shape_parameters": case::shape_parameters(),
         "map_parameters": {
             "body": case::BODY_PARAMETERS,
             "mechanism": case::MECHANISM_PARAMETERS,
         },
+        "multi_systems": multi::system::systems_json(),
     })
     .to_string()
 }
@@ -165,6 +195,20 @@ pub unsafe extern "C" fn impax_compare(ptr: *mut u8, len: usize) -> *const u8 {
     // SAFETY: forwarded from the caller's contract.
     let answer = match unsafe { take_request(ptr, len) } {
         Ok(text) => compare_json(&text),
+        Err(e) => finish(Err(e)),
+    };
+    keep(answer)
+}
+
+/// Every multi-contact law on a built-in system ([`multi_json`]); the request is freed.
+///
+/// # Safety
+/// `ptr` must come from `impax_alloc(len)` and hold the request; it is freed here.
+#[no_mangle]
+pub unsafe extern "C" fn impax_multi(ptr: *mut u8, len: usize) -> *const u8 {
+    // SAFETY: forwarded from the caller's contract.
+    let answer = match unsafe { take_request(ptr, len) } {
+        Ok(text) => multi_json(&text),
         Err(e) => finish(Err(e)),
     };
     keep(answer)

@@ -24,7 +24,7 @@ pub struct Asset {
 }
 
 /// The files of `web/`, embedded at build time.
-pub const ASSETS: [Asset; 5] = [
+pub const ASSETS: [Asset; 6] = [
     Asset {
         name: "index.html",
         mime: "text/html; charset=utf-8",
@@ -44,6 +44,11 @@ pub const ASSETS: [Asset; 5] = [
         name: "explorer.js",
         mime: "text/javascript; charset=utf-8",
         bytes: include_bytes!("../../../../web/explorer.js"),
+    },
+    Asset {
+        name: "multi.js",
+        mime: "text/javascript; charset=utf-8",
+        bytes: include_bytes!("../../../../web/multi.js"),
     },
     Asset {
         name: "impax_wasm.wasm",
