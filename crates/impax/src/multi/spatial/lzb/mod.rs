@@ -133,7 +133,7 @@ pub const NEAR: f64 = 1e-6;
 /// the impact's force scale (the largest force of a contact alone stopping the largest
 /// `|v⁻_i|`): the round-off of the stick solve, and of a symmetric body's contacts that
 /// separate a hair apart, their forces then a hair from zero and unequal.
-pub const STICK_ROUND_OFF: f64 = 1e-10;
+pub const STICK_ROUND_OFF: f64 = 1e-12;
 
 /// The relative tolerance of the integration (each component of the state, against
 /// `atol + RTOL |y|`, `atol` from the scale of the contact's impulse, deflection and

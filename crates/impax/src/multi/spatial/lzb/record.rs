@@ -282,7 +282,10 @@ impl<'a> Path<'a> {
     }
 
     /// The normal changes of the contacts other than `except` already due at `y` (events of
-    /// several contacts at one point: a symmetric body).
+    /// several contacts at one point: a symmetric body). A compression ends here if it is
+    /// within the approach round-off of its end (`v_n > −a`): a symmetric body's contacts
+    /// end their compressions together, and with `e = 0` one going off first would leave
+    /// the others pressing unequally for a moment.
     fn settle(
         &mut self,
         except: usize,
@@ -297,7 +300,7 @@ impl<'a> Path<'a> {
             for j in (0..setup.k).filter(|&j| j != except) {
                 let (vn, s) = (v[3 * j + 2], y[PER * j + S]);
                 match self.modes.normal[j] {
-                    Normal::Compression if vn > 0.0 => self.end_compression(j, y),
+                    Normal::Compression if vn > -setup.approach => self.end_compression(j, y),
                     Normal::Expansion if s <= 0.0 => self.separate(j, y),
                     Normal::Expansion if vn < -setup.approach => self.recompress(j, y),
                     Normal::Off if vn < -setup.approach => {
