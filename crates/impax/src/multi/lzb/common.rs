@@ -286,24 +286,11 @@ pub(in crate::multi) fn grow(en: f64) -> f64 {
 }
 
 /// The pseudo-inverse of the symmetric positive semidefinite `n × n` matrix `a` (cyclic
-/// Jacobi, until the squared off-diagonal norm is below `1e-34` of the diagonal's, or 64
-/// sweeps; eigenvalues within [`RANK_TOL`] of the largest are zero).
-pub(in crate::multi) fn pseudo_inverse<const M: usize>(
-    a: [[f64; M]; M],
-    n: usize,
-) -> [[f64; M]; M] {
-    pseudo_inverse_to(a, n, 1e-34)
-}
-
-/// [`pseudo_inverse`] with the sweeps ending once the squared off-diagonal norm is below
-/// `off_tol` of the diagonal's (`1e-34` is below round-off: the sweeps then end where
-/// rotations make the off-diagonal entries exactly zero, or after 64; `1e-30`, the
-/// off-diagonal entries at round-off, ends them in a few sweeps).
+/// Jacobi; eigenvalues within [`RANK_TOL`] of the largest are zero).
 #[allow(clippy::needless_range_loop)] // the rotations index rows and columns alike
-pub(in crate::multi) fn pseudo_inverse_to<const M: usize>(
+pub(in crate::multi) fn pseudo_inverse<const M: usize>(
     mut a: [[f64; M]; M],
     n: usize,
-    off_tol: f64,
 ) -> [[f64; M]; M] {
     let mut out = [[0.0; M]; M];
     if n == 1 {
@@ -325,7 +312,7 @@ pub(in crate::multi) fn pseudo_inverse_to<const M: usize>(
                 off += a[p][q] * a[p][q];
             }
         }
-        if off <= off_tol * diag {
+        if off <= 1e-34 * diag {
             break;
         }
         for p in 0..n {

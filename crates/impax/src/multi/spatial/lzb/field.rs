@@ -43,7 +43,19 @@ pub(super) fn tangential_rates(
     f: &[f64; MAXK],
     v: &[f64; ROWS],
 ) -> [Vec2; MAXK] {
-    let k = setup.k;
+    rates_of_k(setup, modes, f, v, setup.k)
+}
+
+/// [`tangential_rates`] with the number of contacts `k` given (a constant where the
+/// state's size is: the loops then unrolled).
+#[inline(always)]
+fn rates_of_k(
+    setup: &Setup,
+    modes: &Modes,
+    f: &[f64; MAXK],
+    v: &[f64; ROWS],
+    k: usize,
+) -> [Vec2; MAXK] {
     let mut pt = [Vec2::zeros(); MAXK];
     for j in (0..k).filter(|&j| modes.active(j) && setup.mu[j] > 0.0) {
         match modes.tangent[j] {
@@ -92,7 +104,12 @@ fn dot(a: &[f64], b: &[f64]) -> f64 {
 /// The velocities, forces and tangential rates at the state `y`.
 #[inline(always)]
 pub(super) fn eval(setup: &Setup, modes: &Modes, y: &[f64]) -> Eval {
-    let k = setup.k;
+    eval_k(setup, modes, y, setup.k)
+}
+
+/// [`eval`] with the number of contacts `k` given (as [`rates_of_k`]).
+#[inline(always)]
+fn eval_k(setup: &Setup, modes: &Modes, y: &[f64], k: usize) -> Eval {
     let n = 3 * k;
     let mut p = [0.0; ROWS];
     for c in 0..k {
@@ -110,7 +127,7 @@ pub(super) fn eval(setup: &Setup, modes: &Modes, y: &[f64]) -> Eval {
             *fj = setup.force(j, y[PER * j + S]);
         }
     }
-    let pt = tangential_rates(setup, modes, &f, &v);
+    let pt = rates_of_k(setup, modes, &f, &v, k);
     Eval { v, f, pt }
 }
 
@@ -121,9 +138,10 @@ pub(super) fn rates<const N: usize>(
     modes: &Modes,
     y: &[f64; N],
 ) -> ([f64; N], Eval) {
-    let ev = eval(setup, modes, y);
+    // (N = 5K: the contacts' loops unrolled for each K.)
+    let ev = eval_k(setup, modes, y, N / PER);
     let mut dy = [0.0; N];
-    for j in 0..setup.k {
+    for j in 0..N / PER {
         let vn = ev.v[3 * j + 2];
         let o = PER * j;
         dy[o + PT1] = ev.pt[j].x;

@@ -4,8 +4,9 @@
 //!
 //! **Stick.** The sticking contacts `S` keep `v_t = 0`: their tangential impulse rates
 //! (two per contact) solve `W_SS^tt x_S = −r_S` (`field.rs`) in the least-norm sense,
-//! `x_S = −(W_SS^tt)⁺ r_S`, the pseudo-inverse of the `2|S| × 2|S|` block by Jacobi's
-//! rotations (shared with the planar law). Stick holds while `|x_j| ≤ μ_j F_j` up to the
+//! `x_S = −(W_SS^tt)⁺ r_S`, the pseudo-inverse of the `2|S| × 2|S|` block from its
+//! eigenvalues (those within [`crate::multi::RANK_TOL`] of the largest zero, as the planar
+//! law's Jacobi rotations do). Stick holds while `|x_j| ≤ μ_j F_j` up to the
 //! round-off [`super::STICK_ROUND_OFF`] of the force scale (a symmetric body's contacts
 //! separate a hair apart, their forces a hair from zero and unequal: round-off must not
 //! break their stick there).
@@ -37,14 +38,16 @@
 use super::field::{cone_excess, rate_scale, slip_rate, tangential_rates};
 use super::state::{Modes, Setup, StickSet, Tangent, MAXK, ROWS};
 use crate::math::{Mat2, Vec2};
-use crate::multi::lzb::common::pseudo_inverse_to;
+use crate::multi::RANK_TOL;
 use crate::spatial::invariant::{rays_of, resumption_ray, InvariantRays, RayKind};
+use nalgebra::{DMatrix, SymmetricEigen};
 use std::f64::consts::TAU;
 
 /// Gauss–Seidel sweeps for the rays of several contacts leaving rest together.
 const SWEEPS: usize = 60;
 
-/// The stick set of the contacts `idx` (increasing): `(W_SS^tt)⁺` by Jacobi's rotations.
+/// The stick set of the contacts `idx` (increasing): `(W_SS^tt)⁺` from the block's
+/// eigenvalues (those within [`RANK_TOL`] of the largest zero).
 pub(super) fn stick_set(setup: &Setup, idx: &[usize]) -> StickSet {
     let n = idx.len();
     let mut set = StickSet::EMPTY;
@@ -53,13 +56,21 @@ pub(super) fn stick_set(setup: &Setup, idx: &[usize]) -> StickSet {
     if n == 0 {
         return set;
     }
-    let mut a = [[0.0; 2 * MAXK]; 2 * MAXK];
-    for p in 0..2 * n {
-        for q in 0..2 * n {
-            a[p][q] = setup.w[3 * idx[p / 2] + p % 2][3 * idx[q / 2] + q % 2];
+    let m = 2 * n;
+    let row = |p: usize| 3 * idx[p / 2] + p % 2;
+    let a = DMatrix::from_fn(m, m, |p, q| setup.w[row(p)][row(q)]);
+    let eig = SymmetricEigen::new(a);
+    let dmax = eig.eigenvalues.iter().fold(0.0f64, |x, d| x.max(d.abs()));
+    for (e, &d) in eig.eigenvalues.iter().enumerate() {
+        if d > RANK_TOL * dmax {
+            let col = eig.eigenvectors.column(e);
+            for p in 0..m {
+                for q in 0..m {
+                    set.pinv[p][q] += col[p] * col[q] / d;
+                }
+            }
         }
     }
-    set.pinv = pseudo_inverse_to(a, 2 * n, 1e-30);
     set
 }
 
@@ -183,6 +194,7 @@ pub(super) fn halting_ray(
     v: &[f64; ROWS],
     j: usize,
     s0: Vec2,
+    hint: Option<f64>,
 ) -> Option<Vec2> {
     let af = affine(setup, modes, f, v, &[j]);
     let (c, b) = (af.c[0], af.b[0][0]);
@@ -192,11 +204,22 @@ pub(super) fn halting_ray(
         let a = field(s);
         s.x * a.y - s.y * a.x
     };
+    let phi0 = s0.y.atan2(s0.x);
+    // The root next to the ray found last (it drifts a little between two looks), or next
+    // to the direction if that is on a ray to 10⁻⁶: Newton's method alone.
+    let next_to = hint.or((cross(s0).abs() <= 1e-6 * field(s0).norm()).then_some(phi0));
+    if let Some(start) = next_to {
+        let phi = polish(start, &field, &cross, &m);
+        let s = Vec2::new(phi.cos(), phi.sin());
+        let turned = (phi - start).sin().atan2((phi - start).cos()).abs();
+        if turned <= 0.1 && cross(s).abs() <= 1e-12 * field(s).norm() && s.dot(&field(s)) < 0.0 {
+            return Some(s);
+        }
+    }
     let rays = match rays_of(&m, c, 1.0) {
         InvariantRays::All => return Some(s0),
         InvariantRays::Rays { rays, len } => (rays, len),
     };
-    let phi0 = s0.y.atan2(s0.x);
     let f0 = cross(s0);
     // (The angle either way and the angle ahead to the nearest ray, each with its angle.)
     let mut nearest: Option<(f64, f64)> = None;
@@ -216,11 +239,24 @@ pub(super) fn halting_ray(
             best = Some((ahead, r.angle));
         }
     }
-    let mut phi = match (nearest, best) {
+    let start = match (nearest, best) {
         (Some((either, angle)), _) if either <= 1e-6 => angle,
         (_, Some((_, angle))) => angle,
         _ => return None,
     };
+    let phi = polish(start, &field, &cross, &m);
+    let s = Vec2::new(phi.cos(), phi.sin());
+    (s.dot(&field(s)) < 0.0).then_some(s)
+}
+
+/// A root of `cross(φ) = ŝ × field(ŝ)` (`field(s) = c − M s`) from the angle `phi`, by at
+/// most eight Newton steps.
+fn polish(
+    mut phi: f64,
+    field: &impl Fn(Vec2) -> Vec2,
+    cross: &impl Fn(Vec2) -> f64,
+    m: &Mat2,
+) -> f64 {
     for _ in 0..8 {
         let (sn, cs) = phi.sin_cos();
         let s = Vec2::new(cs, sn);
@@ -237,8 +273,7 @@ pub(super) fn halting_ray(
             break;
         }
     }
-    let s = Vec2::new(phi.cos(), phi.sin());
-    (s.dot(&field(s)) < 0.0).then_some(s)
+    phi
 }
 
 /// What a contact at rest may do: stick (or else only slip).

@@ -126,13 +126,8 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
             // at the step's end, with no event to locate).
             if var != Var::Root && path.check_halts(&ev_b, var.to_time(setup, x, h, &ev_b)) {
                 modes = path.modes;
-                let ev = eval(setup, &modes, &y);
-                h = guard(var.to_time(setup, x, h, &ev_b), shortest);
-                var = Var::Time.next(setup, &modes, 0.0, h, &y, &ev, root_end);
-                (x, h) = var.start_from_time(setup, &modes, &ev.v, &y, h);
-                k1 = var.rhs::<N>(setup, &modes, x, &y);
-                watch = events::watch(setup, &modes, &y, &ev);
-                g_a = events::values(setup, &modes, &watch, &y, &ev);
+                let h_tau = guard(var.to_time(setup, x, h, &ev_b), shortest);
+                (var, x, h, k1, watch, g_a) = restart(setup, &modes, &y, h_tau, root_end);
                 continue;
             }
             let next = var.next(setup, &modes, x, h, &y1, &ev_b, root_end);
@@ -155,18 +150,30 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
             path.end_settled(&y);
             break;
         }
-        // On from the event: in time, or in a separation's or a halt's variable if one is
-        // near.
         modes = path.modes;
-        let ev = eval(setup, &modes, &y);
-        h = guard(var.to_time(setup, x, h, &ev_before), shortest);
-        var = Var::Time.next(setup, &modes, 0.0, h, &y, &ev, root_end);
-        (x, h) = var.start_from_time(setup, &modes, &ev.v, &y, h);
-        k1 = var.rhs::<N>(setup, &modes, x, &y);
-        watch = events::watch(setup, &modes, &y, &ev);
-        g_a = events::values(setup, &modes, &watch, &y, &ev);
+        let h_tau = guard(var.to_time(setup, x, h, &ev_before), shortest);
+        (var, x, h, k1, watch, g_a) = restart(setup, &modes, &y, h_tau, root_end);
     }
     Ok(path.finish(&y, steps))
+}
+
+/// Going on from `y` in new regimes `modes` with a step `h` of `τ`: in `τ`, or in a
+/// separation's or a halt's variable if one is near. Returns the variable, where it starts
+/// and its first step, the derivative there and the watched events with their values.
+fn restart<const N: usize>(
+    setup: &Setup,
+    modes: &Modes,
+    y: &[f64; N],
+    h: f64,
+    root_end: f64,
+) -> (Var, f64, f64, [f64; N], events::Watch, events::Values) {
+    let ev = eval(setup, modes, y);
+    let var = Var::Time.next(setup, modes, 0.0, h, y, &ev, root_end);
+    let (x, h) = var.start_from_time(setup, modes, &ev.v, y, h);
+    let k1 = var.rhs::<N>(setup, modes, x, y);
+    let watch = events::watch(setup, modes, y, &ev);
+    let g = events::values(setup, modes, &watch, y, &ev);
+    (var, x, h, k1, watch, g)
 }
 
 /// The first of the events crossing inside a step (`crosses`), located on the step's dense

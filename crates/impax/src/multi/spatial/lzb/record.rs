@@ -164,7 +164,8 @@ impl<'a> Path<'a> {
         let vt = slip(&ev.v, j);
         let sigma = vt.norm();
         let s0 = vt / sigma;
-        let ray = halting_ray(setup, &self.modes, &ev.f, &ev.v, j, s0);
+        let hint = self.rays[j].map(|(phi, _)| phi);
+        let ray = halting_ray(setup, &self.modes, &ev.f, &ev.v, j, s0, hint);
         let close = ray.is_some_and(|d| sigma * between(s0, d) <= setup.freeze);
         let dir = if close { ray.unwrap_or(s0) } else { s0 };
         self.fix(j, dir, ray, sigma);
@@ -208,7 +209,8 @@ impl<'a> Path<'a> {
                 self.rays[j] = None;
                 continue;
             }
-            let Some(ray) = halting_ray(setup, &self.modes, &ev.f, &ev.v, j, s0) else {
+            let hint = self.rays[j].map(|(phi, _)| phi);
+            let Some(ray) = halting_ray(setup, &self.modes, &ev.f, &ev.v, j, s0, hint) else {
                 self.rays[j] = None;
                 continue;
             };
@@ -285,7 +287,8 @@ impl<'a> Path<'a> {
     /// several contacts at one point: a symmetric body). A compression ends here if it is
     /// within the approach round-off of its end (`v_n > −a`): a symmetric body's contacts
     /// end their compressions together, and with `e = 0` one going off first would leave
-    /// the others pressing unequally for a moment.
+    /// the others pressing unequally for a moment; an expansion if what it has left to give
+    /// is below the integration's tolerance.
     fn settle(
         &mut self,
         except: usize,
@@ -301,7 +304,7 @@ impl<'a> Path<'a> {
                 let (vn, s) = (v[3 * j + 2], y[PER * j + S]);
                 match self.modes.normal[j] {
                     Normal::Compression if vn > -setup.approach => self.end_compression(j, y),
-                    Normal::Expansion if s <= 0.0 => self.separate(j, y),
+                    Normal::Expansion if s <= 0.0 || self.spent(j, s, vn) => self.separate(j, y),
                     Normal::Expansion if vn < -setup.approach => self.recompress(j, y),
                     Normal::Off if vn < -setup.approach => {
                         self.join(j, y);
@@ -317,6 +320,15 @@ impl<'a> Path<'a> {
                 return;
             }
         }
+    }
+
+    /// Whether contact `j`, expanding at `vn` with deflection `s`, has less left to give
+    /// than the integration's absolute tolerance on its impulse: the rest of its expansion,
+    /// `∫ F dτ = e² Ê / v_n`, below it (a symmetric body's contacts separating a hair apart
+    /// then separate together).
+    fn spent(&self, j: usize, s: f64, vn: f64) -> bool {
+        let setup = self.setup;
+        vn > 0.0 && setup.energy(j, s) * setup.e[j] * setup.e[j] <= setup.atol[PER * j + PN] * vn
     }
 
     /// Compression of `j` ends (`v_nj = 0`): its compression work is the energy stored in
