@@ -91,9 +91,12 @@ pub(crate) fn slip_rate(wtt: &Mat2, wtn: Vec2, mu: f64, s: Vec2) -> Vec2 {
 
 /// The invariant rays of the problem's slip field.
 pub fn invariant_rays(problem: &ContactProblem3) -> InvariantRays {
-    let wtt = problem.wtt();
-    let w = problem.wtn();
-    let mu = problem.friction();
+    rays_of(&problem.wtt(), problem.wtn(), problem.friction())
+}
+
+/// [`invariant_rays`] of the slip field `g(ŝ) = w − μ W_tt ŝ`.
+pub(crate) fn rays_of(wtt: &Mat2, w: Vec2, mu: f64) -> InvariantRays {
+    let wtt = *wtt;
     let a = w.y;
     let b = -w.x;
     let c = -mu * wtt[(0, 1)];
@@ -229,9 +232,13 @@ pub fn sticking_ratio(problem: &ContactProblem3) -> Vec2 {
 /// Newton's method from a point left of the root (`max(0, |w̃| − μ d_max)`) converges
 /// monotonically.
 pub fn resumption_direction(problem: &ContactProblem3) -> Option<(Vec2, f64)> {
-    let wtt = problem.wtt();
-    let w = problem.wtn();
-    let mu = problem.friction();
+    resumption_ray(&problem.wtt(), problem.wtn(), problem.friction())
+}
+
+/// [`resumption_direction`] of the slip field `g(ŝ) = w − μ W_tt ŝ` (`W_tt` symmetric
+/// positive semidefinite): the unit `ŝ` and `λ' > 0` with `(λ' I + μ W_tt) ŝ = w`, if any.
+pub(crate) fn resumption_ray(wtt: &Mat2, w: Vec2, mu: f64) -> Option<(Vec2, f64)> {
+    let wtt = *wtt;
     if mu == 0.0 {
         // Frictionless: g = w_tn whatever the direction; slip leaves along w_tn.
         let n = w.norm();

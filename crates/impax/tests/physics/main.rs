@@ -16,6 +16,7 @@ mod multi_contact;
 mod multi_lzb;
 mod multi_scenarios;
 mod multi_spatial;
+mod multi_spatial_lzb;
 mod paper_liu2012;
 mod properties;
 mod regression_brach_frictionless;

@@ -297,8 +297,8 @@ fn random_problems_satisfy_the_conditions() {
     );
 }
 
-/// The spatial dispatcher: `lzb` at several contacts is refused naming `law`; with one
-/// contact every spatial law runs.
+/// The spatial dispatcher: a one-contact law at several contacts is refused naming `law`,
+/// `lzb` runs; with one contact every spatial law runs.
 #[test]
 fn the_dispatcher_names_the_law() {
     let p = MultiProblem::from_upper(
@@ -312,7 +312,7 @@ fn the_dispatcher_names_the_law() {
         &[1.0],
     )
     .unwrap();
-    assert_eq!(spatial::resolve(LawId::Lzb, &p).unwrap_err().field(), "law");
+    assert!(spatial::resolve(LawId::Lzb, &p).unwrap().is_ok());
     assert_eq!(
         spatial::resolve(LawId::Newton, &p).unwrap_err().field(),
         "law"

@@ -8,7 +8,7 @@
 //! `W = J M⁻¹ Jᵀ`) and only the least-norm split is chosen (as `lcp` does). The
 //! pseudo-inverse is computed once per stick set, by Jacobi's rotations on the small
 //! symmetric block, eigenvalues within [`crate::multi::RANK_TOL`] of the largest counted as
-//! zero. Stick holds while `|x_j| ≤ μ_j F_j`.
+//! zero (`common.rs`). Stick holds while `|x_j| ≤ μ_j F_j`.
 //!
 //! **Choice.** Where contacts with friction have zero slip — at the start, when a slip
 //! halts, when a stick breaks, when a contact joins at rest — every assignment of
@@ -19,9 +19,9 @@
 //! one-contact law). If no assignment is consistent (not observed), the least inconsistent
 //! one is taken.
 
+use super::common::pseudo_inverse;
 use super::field::{tangential_acceleration, tangential_rates};
 use super::state::{Modes, Setup, StickSet, Tangent, MAXK};
-use crate::multi::RANK_TOL;
 
 /// The most contacts whose regimes are chosen by enumeration (`3^6 = 729` assignments);
 /// beyond, the contacts past the sixth keep slipping in the direction the all-stick solve
@@ -45,75 +45,6 @@ pub(super) fn stick_set(setup: &Setup, idx: &[usize]) -> StickSet {
     }
     set.pinv = pseudo_inverse(a, n);
     set
-}
-
-/// The pseudo-inverse of the symmetric positive semidefinite `n × n` matrix `a` (cyclic
-/// Jacobi; eigenvalues within [`RANK_TOL`] of the largest are zero).
-#[allow(clippy::needless_range_loop)] // the rotations index rows and columns alike
-fn pseudo_inverse(mut a: [[f64; MAXK]; MAXK], n: usize) -> [[f64; MAXK]; MAXK] {
-    let mut out = [[0.0; MAXK]; MAXK];
-    if n == 1 {
-        if a[0][0] > 0.0 {
-            out[0][0] = 1.0 / a[0][0];
-        }
-        return out;
-    }
-    let mut v = [[0.0; MAXK]; MAXK];
-    for (i, row) in v.iter_mut().enumerate().take(n) {
-        row[i] = 1.0;
-    }
-    for _ in 0..64 {
-        let mut off = 0.0;
-        let mut diag = 0.0;
-        for p in 0..n {
-            diag += a[p][p] * a[p][p];
-            for q in p + 1..n {
-                off += a[p][q] * a[p][q];
-            }
-        }
-        if off <= 1e-34 * diag {
-            break;
-        }
-        for p in 0..n {
-            for q in p + 1..n {
-                let apq = a[p][q];
-                if apq == 0.0 {
-                    continue;
-                }
-                let theta = (a[q][q] - a[p][p]) / (2.0 * apq);
-                let t = theta.signum() / (theta.abs() + (theta * theta + 1.0).sqrt());
-                let c = 1.0 / (t * t + 1.0).sqrt();
-                let s = t * c;
-                for k in 0..n {
-                    let (akp, akq) = (a[k][p], a[k][q]);
-                    a[k][p] = c * akp - s * akq;
-                    a[k][q] = s * akp + c * akq;
-                }
-                for k in 0..n {
-                    let (apk, aqk) = (a[p][k], a[q][k]);
-                    a[p][k] = c * apk - s * aqk;
-                    a[q][k] = s * apk + c * aqk;
-                }
-                for k in 0..n {
-                    let (vkp, vkq) = (v[k][p], v[k][q]);
-                    v[k][p] = c * vkp - s * vkq;
-                    v[k][q] = s * vkp + c * vkq;
-                }
-            }
-        }
-    }
-    let dmax = (0..n).fold(0.0f64, |m, i| m.max(a[i][i].abs()));
-    for e in 0..n {
-        let d = a[e][e];
-        if d > RANK_TOL * dmax {
-            for p in 0..n {
-                for q in 0..n {
-                    out[p][q] += v[p][e] * v[q][e] / d;
-                }
-            }
-        }
-    }
-    out
 }
 
 /// What a contact at rest may do: stick, slip in `+t`, slip in `−t`.
@@ -256,42 +187,4 @@ fn violation(setup: &Setup, modes: &Modes, f: &[f64; MAXK], rest: &[usize], fsca
         }
     }
     bad
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    #[allow(clippy::needless_range_loop)] // matrices indexed as written
-    fn pseudo_inverse_of_a_singular_and_a_regular_matrix() {
-        // [[1, 1], [1, 1]]⁺ = [[1, 1], [1, 1]] / 4.
-        let mut a = [[0.0; MAXK]; MAXK];
-        a[0][0] = 1.0;
-        a[0][1] = 1.0;
-        a[1][0] = 1.0;
-        a[1][1] = 1.0;
-        let p = pseudo_inverse(a, 2);
-        for r in 0..2 {
-            for c in 0..2 {
-                assert!((p[r][c] - 0.25).abs() < 1e-15, "{p:?}");
-            }
-        }
-        // A regular 3 × 3: the inverse.
-        let m = [[4.0, -2.0, 1.0], [-2.0, 4.0, -2.0], [1.0, -2.0, 4.0]];
-        let mut a = [[0.0; MAXK]; MAXK];
-        for r in 0..3 {
-            for c in 0..3 {
-                a[r][c] = m[r][c];
-            }
-        }
-        let p = pseudo_inverse(a, 3);
-        for r in 0..3 {
-            for c in 0..3 {
-                let x: f64 = (0..3).map(|i| m[r][i] * p[i][c]).sum();
-                let id = if r == c { 1.0 } else { 0.0 };
-                assert!((x - id).abs() < 1e-14, "{r} {c}: {x}");
-            }
-        }
-    }
 }

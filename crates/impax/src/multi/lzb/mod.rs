@@ -146,6 +146,7 @@
 //! assert_eq!(primaries[0].contact, 0); // the first contact struck starts as the primary
 //! ```
 
+pub(in crate::multi) mod common;
 mod events;
 mod field;
 mod friction;

@@ -10,12 +10,13 @@
 //! there a hair below zero, the regime it starts is offset so that it starts below zero all
 //! the same: `events.rs`).
 
+use super::common::{grow, guard, shrink, NormalWork, Primary};
 use super::events::{self, Event};
 use super::field::{eval, tangential_acceleration, tangential_rates, Eval};
 use super::friction::{choose, rebuild, Allowed};
 use super::state::{Modes, Normal, Setup, StickSet, Tangent, MAXK, PER, PN, PT, S, WT};
 use super::variable::Var;
-use super::{MAX_STEPS, PRIMARY_MARGIN, RTOL};
+use super::{MAX_STEPS, RTOL};
 use crate::law::{BreakdownReason, WorkSplit};
 use crate::math::Vec2;
 use crate::multi::{ContactPhaseKind, ContactResult, LzbPrimary};
@@ -36,12 +37,8 @@ pub(super) struct End {
 /// One contact's record.
 #[derive(Debug, Clone)]
 struct Track {
-    /// `Ê` at the start of the current normal phase.
-    mark: f64,
-    /// Normal work in compression so far.
-    compression: f64,
-    /// Normal work in expansion so far.
-    restitution: f64,
+    /// The normal work so far.
+    work: NormalWork,
     /// The current tangential regime, while the contact carries a force.
     label: Option<ContactPhaseKind>,
     /// The result being built (phases).
@@ -55,8 +52,7 @@ struct Path<'a> {
     setup: &'a Setup,
     modes: Modes,
     tracks: Vec<Track>,
-    primary: usize,
-    primaries: Vec<LzbPrimary>,
+    primary: Primary,
 }
 
 /// Integrate the impact to its end (module docs of [`super`]); `N = 4K`.
@@ -70,20 +66,19 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
     for j in 0..k {
         let vn = setup.v0[2 * j + 1];
         if vn < 0.0 {
-            let energy = 0.5 * vn * vn / setup.w[2 * j + 1][2 * j + 1];
-            let smax = ((setup.eta + 1.0) * energy / setup.kappa[j]).powf(1.0 / (setup.eta + 1.0));
-            shortest = shortest.min(smax / -vn);
+            let wnn = setup.w[2 * j + 1][2 * j + 1];
+            shortest = shortest.min(setup.law.compression_time(setup.kappa[j], wnn, vn));
         }
     }
     // The start in u = τ^(1/m) (a quarter of that time), or in τ for an integer exponent; the
     // first step a tenth of the way.
-    let (mut var, mut x, mut h) = if setup.m == 1 {
+    let (mut var, mut x, mut h) = if setup.law.m == 1 {
         (Var::Time, 0.0, 0.01 * shortest)
     } else {
         (
             Var::Root,
             0.0,
-            0.1 * (0.25 * shortest).powf(1.0 / f64::from(setup.m)),
+            0.1 * (0.25 * shortest).powf(1.0 / f64::from(setup.law.m)),
         )
     };
     let root_end = 0.25 * shortest;
@@ -267,33 +262,6 @@ fn jammed(setup: &Setup, modes: &Modes, y: &[f64], ev: &Eval) -> Option<f64> {
     Some(setup.units.work(stored))
 }
 
-/// A step of `τ` for going on: `h`, or a hundredth of the shortest compression time if `h`
-/// is not a positive number (a change of variable where `dτ/dx` vanishes).
-#[inline]
-fn guard(h: f64, shortest: f64) -> f64 {
-    if h > 0.0 && h.is_finite() {
-        h
-    } else {
-        0.01 * shortest
-    }
-}
-
-/// Step-size factor after a rejected step (`en > 1` or NaN): `0.9 en^(-1/8)`, at least 0.2.
-#[inline]
-fn shrink(en: f64) -> f64 {
-    if en.is_finite() {
-        (0.9 / en.sqrt().sqrt().sqrt()).max(0.2)
-    } else {
-        0.2
-    }
-}
-
-/// Step-size factor after an accepted step: `0.9 en^(-1/8)`, at most 6.
-#[inline]
-fn grow(en: f64) -> f64 {
-    (0.9 / en.max(1e-10).sqrt().sqrt().sqrt()).min(6.0)
-}
-
 impl<'a> Path<'a> {
     /// The regimes at the start: the approaching contacts in compression, the tangential
     /// regimes chosen with the forces' limiting ratios `F_j ∝ κ_j |v_nj⁻|^η` (at `τ → 0`,
@@ -311,7 +279,7 @@ impl<'a> Path<'a> {
             let vn = setup.v0[2 * j + 1];
             if vn < 0.0 {
                 modes.normal[j] = Normal::Compression;
-                *fj = setup.kappa[j] * setup.power.of(-vn);
+                *fj = setup.kappa[j] * setup.law.power.of(-vn);
                 // The energy grows as κ_j |v_nj|^(η+1) τ^(η+1)/(η+1).
                 let growth = *fj * -vn;
                 if growth > best.0 {
@@ -321,9 +289,7 @@ impl<'a> Path<'a> {
         }
         let tracks = (0..k)
             .map(|j| Track {
-                mark: 0.0,
-                compression: 0.0,
-                restitution: 0.0,
+                work: NormalWork::default(),
                 label: None,
                 result: ContactResult {
                     impulse: Vec2::zeros(),
@@ -338,11 +304,7 @@ impl<'a> Path<'a> {
             setup,
             modes,
             tracks,
-            primary: best.1,
-            primaries: vec![LzbPrimary {
-                contact: best.1,
-                impulse: 0.0,
-            }],
+            primary: Primary::start(best.1),
         };
         let mut rest = Vec::new();
         for j in 0..k {
@@ -457,14 +419,13 @@ impl<'a> Path<'a> {
     fn end_compression(&mut self, j: usize, y: &mut [f64]) {
         let setup = self.setup;
         let energy = setup.energy(j, y[PER * j + S]);
-        let tr = &mut self.tracks[j];
-        tr.compression -= energy - tr.mark;
+        self.tracks[j].work.end_compression(energy);
         if setup.e[j] == 0.0 {
             y[PER * j + S] = 0.0;
             self.go_off(j, y);
         } else {
             self.modes.normal[j] = Normal::Expansion;
-            self.tracks[j].mark = energy;
+            self.tracks[j].work.mark = energy;
         }
     }
 
@@ -474,8 +435,7 @@ impl<'a> Path<'a> {
         let setup = self.setup;
         let energy = setup.energy(j, y[PER * j + S]);
         let e2 = setup.e[j] * setup.e[j];
-        let tr = &mut self.tracks[j];
-        tr.restitution += e2 * (tr.mark - energy);
+        self.tracks[j].work.end_expansion(energy, e2);
         y[PER * j + S] = 0.0;
         self.go_off(j, y);
     }
@@ -486,9 +446,9 @@ impl<'a> Path<'a> {
         let setup = self.setup;
         let energy = setup.energy(j, y[PER * j + S]);
         let e2 = setup.e[j] * setup.e[j];
-        let tr = &mut self.tracks[j];
-        tr.restitution += e2 * (tr.mark - energy);
-        tr.mark = energy;
+        let work = &mut self.tracks[j].work;
+        work.end_expansion(energy, e2);
+        work.mark = energy;
         self.modes.normal[j] = Normal::Compression;
     }
 
@@ -499,7 +459,7 @@ impl<'a> Path<'a> {
             tr.result.push_phase(ContactPhaseKind::Off, y[PER * j + PN]);
         }
         tr.engaged = true;
-        tr.mark = 0.0;
+        tr.work.mark = 0.0;
         self.modes.normal[j] = Normal::Compression;
         self.modes.tangent[j] = Tangent::Slip(0.0);
     }
@@ -513,23 +473,14 @@ impl<'a> Path<'a> {
         if let Some(label) = tr.label.take() {
             tr.result.push_phase(label, y[PER * j + PN]);
         }
-        if j == self.primary {
-            let setup = self.setup;
-            let mut best = (0.0, j);
-            for c in (0..setup.k).filter(|&c| self.modes.active(c)) {
-                let q = setup.energy_order(c, y[PER * c + S]);
-                if q > best.0 {
-                    best = (q, c);
-                }
-            }
-            if best.1 != j {
-                self.primary = best.1;
-                self.primaries.push(LzbPrimary {
-                    contact: best.1,
-                    impulse: y[PER * best.1 + PN],
-                });
-            }
-        }
+        let (setup, modes) = (self.setup, &self.modes);
+        self.primary.hand_over(
+            j,
+            setup.k,
+            |c| setup.energy_order(c, y[PER * c + S]),
+            |c| modes.active(c),
+            |c| y[PER * c + PN],
+        );
     }
 
     /// Choose the tangential regimes: the contacts `rest` (restricted by `allowed`) and
@@ -627,35 +578,17 @@ impl<'a> Path<'a> {
         y1: &[f64; N],
         dense: &dyn Fn() -> Dense<N>,
     ) {
-        let setup = self.setup;
-        let m = self.primary;
-        let order = |j: usize, y: &[f64]| setup.energy_order(j, y[PER * j + S]);
-        let qm = order(m, y1);
-        let mut best = (qm * (1.0 + PRIMARY_MARGIN), m);
-        for j in (0..setup.k).filter(|&j| self.modes.active(j)) {
-            let q = order(j, y1);
-            if q > best.0 {
-                best = (q, j);
-            }
-        }
-        let c = best.1;
-        if c == m {
-            return;
-        }
-        let g = |y: &[f64]| order(c, y) - (1.0 + PRIMARY_MARGIN) * order(m, y);
-        let g0 = g(y0);
-        let at = if g0 > 0.0 {
-            y0[PER * c + PN]
-        } else {
-            let d = dense();
-            let th = illinois(|th| g(&d.at(th)), 0.0, g0, theta, g(y1).max(0.0));
-            d.at(th)[PER * c + PN]
-        };
-        self.primary = c;
-        self.primaries.push(LzbPrimary {
-            contact: c,
-            impulse: at,
-        });
+        let (setup, modes) = (self.setup, &self.modes);
+        self.primary.follow(
+            setup.k,
+            theta,
+            y0,
+            y1,
+            dense,
+            |j, y| setup.energy_order(j, y[PER * j + S]),
+            |j| modes.active(j),
+            |j, y| y[PER * j + PN],
+        );
     }
 
     /// The impact has settled ([`settled`]): the contacts still carrying a force are off,
@@ -666,10 +599,10 @@ impl<'a> Path<'a> {
                 let energy = self.setup.energy(j, y[PER * j + S]);
                 let tr = &mut self.tracks[j];
                 if self.modes.normal[j] == Normal::Compression {
-                    tr.compression -= energy - tr.mark;
+                    tr.work.end_compression(energy);
                 } else {
                     let e2 = self.setup.e[j] * self.setup.e[j];
-                    tr.restitution += e2 * (tr.mark - energy);
+                    tr.work.end_expansion(energy, e2);
                 }
                 self.go_off(j, y);
             }
@@ -689,8 +622,8 @@ impl<'a> Path<'a> {
                 tr.result.impulse = Vec2::new(y[o + PT], y[o + PN]);
                 tr.result.velocity_after = Vec2::new(ev.v[2 * j], ev.v[2 * j + 1]);
                 tr.result.work = WorkSplit {
-                    compression: tr.compression,
-                    restitution: tr.restitution,
+                    compression: tr.work.compression,
+                    restitution: tr.work.restitution,
                     friction: y[o + WT],
                 };
                 if !tr.engaged {
@@ -701,7 +634,7 @@ impl<'a> Path<'a> {
             .collect();
         End {
             contacts,
-            primaries: self.primaries,
+            primaries: self.primary.list,
             steps,
         }
     }

@@ -11,9 +11,12 @@
 //!
 //! The velocities are not integrated: `v = v⁻ + W p` at every point.
 
+use super::common::{stiffness_ratios, ForceLaw};
 use super::{MAX_CONTACTS, RTOL};
 use crate::math::Units;
 use crate::multi::MultiProblem;
+
+pub(super) use super::common::Normal;
 
 /// The largest number of contacts (the arrays' size).
 pub(super) const MAXK: usize = MAX_CONTACTS;
@@ -26,28 +29,6 @@ pub(super) const PT: usize = 0;
 pub(super) const PN: usize = 1;
 pub(super) const S: usize = 2;
 pub(super) const WT: usize = 3;
-
-/// How `s^η` is evaluated: exactly for the common exponents, by `powf` otherwise.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(super) enum Power {
-    /// `η = 1`: a linear spring.
-    One,
-    /// `η = 3/2`: Hertz, `s √s`.
-    ThreeHalves,
-    /// Any other `η > 0`.
-    General(f64),
-}
-
-impl Power {
-    #[inline(always)]
-    pub(super) fn of(self, s: f64) -> f64 {
-        match self {
-            Power::One => s,
-            Power::ThreeHalves => s * s.sqrt(),
-            Power::General(eta) => s.powf(eta),
-        }
-    }
-}
 
 /// The problem in the canonical units of [`MultiProblem`] on the stack, with the law's
 /// parameters and tolerances.
@@ -65,15 +46,9 @@ pub(super) struct Setup {
     pub e: [f64; MAXK],
     /// Stiffness ratios, the largest scaled to 1.
     pub kappa: [f64; MAXK],
-    /// The exponent `η`.
-    pub eta: f64,
-    /// `s^η`.
-    pub power: Power,
-    /// The power `m` of the regularising variables at the start (`τ = u^m`) and at a
-    /// separation (`s_j = σ^m`), `variable.rs`: 1 when `s^η` is analytic (an integer `η`:
-    /// no regularisation), 2 when `2η` is an integer (`η = 3/2`: `F ∝ u³`), else the least
-    /// with `m η ≥ 9` (the force then smooth to the integrator's order).
-    pub m: i32,
+    /// The force law `F = κ s^η` and the power `m` of the regularising variables
+    /// (`variable.rs`).
+    pub law: ForceLaw,
     /// A contact approaches while `v_n < −approach`: [`super::APPROACH_ROUND_OFF`] times
     /// `max_i |v⁻_i|`. Also the tangential speed below which a contact joining or starting
     /// is taken at rest.
@@ -101,27 +76,11 @@ impl Setup {
             mu: [0.0; MAXK],
             e: [0.0; MAXK],
             kappa: [0.0; MAXK],
-            eta: problem.exponent(),
-            power: Power::General(problem.exponent()),
-            m: 1,
+            law: ForceLaw::new(problem.exponent()),
             approach: 0.0,
             settled: 0.0,
             units,
             atol: [0.0; PER * MAXK],
-        };
-        s.power = if s.eta == 1.0 {
-            Power::One
-        } else if s.eta == 1.5 {
-            Power::ThreeHalves
-        } else {
-            Power::General(s.eta)
-        };
-        s.m = if s.eta.fract() == 0.0 {
-            1
-        } else if (2.0 * s.eta).fract() == 0.0 {
-            2
-        } else {
-            ((9.0 / s.eta).ceil() as i32).clamp(2, 24)
         };
         for i in 0..2 * k {
             s.v0[i] = v[i];
@@ -129,14 +88,11 @@ impl Setup {
                 s.w[i][j] = w[(i, j)];
             }
         }
-        let kmax = problem.stiffnesses().iter().fold(0.0f64, |m, &x| m.max(x));
         for j in 0..k {
             s.mu[j] = problem.frictions()[j];
             s.e[j] = problem.restitutions()[j];
-            // (A ratio below the smallest normal number would make the forces vanish: kept
-            // representable, the contact is then as soft as arithmetic allows.)
-            s.kappa[j] = (problem.stiffnesses()[j] / kmax).max(f64::MIN_POSITIVE);
         }
+        stiffness_ratios(problem.stiffnesses(), &mut s.kappa[..k]);
         let vmax = s.v0[..2 * k].iter().fold(0.0f64, |m, x| m.max(x.abs()));
         s.approach = super::APPROACH_ROUND_OFF * vmax;
         s.settled = super::SETTLED * vmax;
@@ -144,10 +100,7 @@ impl Setup {
         // alone, the deflection that would store the energy of that impulse, that energy; the
         // absolute tolerance a tenth of the relative one of these scales.
         for j in 0..k {
-            let wnn = s.w[2 * j + 1][2 * j + 1];
-            let p = vmax / wnn;
-            let energy = 0.5 * vmax * vmax / wnn;
-            let defl = ((s.eta + 1.0) * energy / s.kappa[j]).powf(1.0 / (s.eta + 1.0));
+            let (p, energy, defl) = s.law.scales(s.kappa[j], s.w[2 * j + 1][2 * j + 1], vmax);
             s.atol[PER * j + PT] = 0.1 * RTOL * p;
             s.atol[PER * j + PN] = 0.1 * RTOL * p;
             s.atol[PER * j + S] = 0.1 * RTOL * defl;
@@ -159,36 +112,20 @@ impl Setup {
     /// The normal force `F_j = κ_j s^η` (zero for `s ≤ 0`).
     #[inline(always)]
     pub(super) fn force(&self, j: usize, s: f64) -> f64 {
-        if s > 0.0 {
-            self.kappa[j] * self.power.of(s)
-        } else {
-            0.0
-        }
+        self.law.force(self.kappa[j], s)
     }
 
     /// The stored energy `Ê_j = κ_j s^(η+1)/(η+1) = s F_j/(η+1)` (zero for `s ≤ 0`).
     #[inline]
     pub(super) fn energy(&self, j: usize, s: f64) -> f64 {
-        s.max(0.0) * self.force(j, s) / (self.eta + 1.0)
+        self.law.energy(self.kappa[j], s)
     }
 
     /// The primary's ordering quantity `κ_j^(1/(η+1)) s_j`, increasing with `Ê_j`.
     #[inline]
     pub(super) fn energy_order(&self, j: usize, s: f64) -> f64 {
-        self.kappa[j].powf(1.0 / (self.eta + 1.0)) * s.max(0.0)
+        self.law.energy_order(self.kappa[j], s)
     }
-}
-
-/// The normal regime of a contact.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(super) enum Normal {
-    /// No force: not in contact, or separated (`s = 0`, `v_n ≥ −approach`).
-    Off,
-    /// Compression: `v_n < 0`, `ds/dτ = −v_n` (the energy stored is the normal work done).
-    Compression,
-    /// Expansion: `v_n ≥ 0`, `ds/dτ = −v_n / e²` (the normal work done is `e²` times the
-    /// energy released).
-    Expansion,
 }
 
 /// The tangential regime of a contact that carries a force.

@@ -40,7 +40,7 @@ impl Var {
     /// `dτ/dx` at `x`, given the velocities `v`.
     #[inline(always)]
     fn dtau(self, setup: &Setup, x: f64, v: &[f64; 2 * MAXK]) -> f64 {
-        let m = setup.m;
+        let m = setup.law.m;
         match self {
             Var::Time => 1.0,
             Var::Root => f64::from(m) * x.powi(m - 1),
@@ -79,7 +79,7 @@ impl Var {
             }
             if let Var::Separation { contact: j, .. } = self {
                 // s_j = σ^m exactly.
-                dy[PER * j + S] = f64::from(setup.m) * x.powi(setup.m - 1);
+                dy[PER * j + S] = f64::from(setup.law.m) * x.powi(setup.law.m - 1);
             }
         }
         (dy, ev)
@@ -115,9 +115,9 @@ impl Var {
         root_end: f64,
     ) -> Var {
         match self {
-            Var::Root if x.powi(setup.m) >= root_end => Var::Time,
+            Var::Root if x.powi(setup.law.m) >= root_end => Var::Time,
             Var::Root => Var::Root,
-            Var::Time if setup.m == 1 => Var::Time,
+            Var::Time if setup.law.m == 1 => Var::Time,
             Var::Time => {
                 // The expanding contact whose separation is soonest, within two steps.
                 let mut best: Option<(f64, usize)> = None;
@@ -156,7 +156,7 @@ impl Var {
             Var::Time | Var::Root => (0.0, h),
             Var::Separation { contact: j, .. } => {
                 // The whole way to the separation at once (the error test shortens it).
-                let sigma = y[PER * j + S].max(0.0).powf(1.0 / f64::from(setup.m));
+                let sigma = y[PER * j + S].max(0.0).powf(1.0 / f64::from(setup.law.m));
                 (sigma, -sigma)
             }
         }

@@ -34,6 +34,7 @@
 //! ```
 
 pub mod lcp;
+pub mod lzb;
 mod outcome;
 mod problem;
 pub mod sequential;
@@ -62,6 +63,14 @@ pub fn resolve(law: LawId, problem: &MultiProblem) -> Result<MultiResolution> {
         }),
         LawId::Lcp if k > 1 => Ok(lcp::resolve(problem)),
         LawId::Sequential if k > 1 => Ok(sequential::resolve(problem)),
+        LawId::Lzb if k > lzb::MAX_CONTACTS => Err(Error::Invalid {
+            field: "law".into(),
+            reason: format!(
+                "`lzb` integrates on fixed-size arrays and takes at most {} contacts, got {k} (`sequential` takes any number)",
+                lzb::MAX_CONTACTS
+            ),
+        }),
+        LawId::Lzb if k > 1 => Ok(lzb::resolve(problem)),
         _ if k == 1 => {
             let one = problem.contact(0)?;
             let run = match law {
@@ -82,16 +91,10 @@ pub fn resolve(law: LawId, problem: &MultiProblem) -> Result<MultiResolution> {
                 })
                 .map_err(|b| Breakdown { law, ..b }))
         }
-        LawId::Lzb => Err(Error::Invalid {
-            field: "law".into(),
-            reason: format!(
-                "`lzb` at several spatial contacts is not available yet; with {k} contacts in 3D use lcp or sequential"
-            ),
-        }),
         _ => Err(Error::Invalid {
             field: "law".into(),
             reason: format!(
-                "`{law}` is a one-contact law; with {k} contacts in 3D use lcp or sequential"
+                "`{law}` is a one-contact law; with {k} contacts in 3D use lcp, sequential or lzb"
             ),
         }),
     }

@@ -5,7 +5,8 @@ use super::MultiProblem;
 use crate::law::energy::ENERGY_GAIN_ROUND_OFF;
 use crate::law::{Breakdown, Inconsistency, LawId, Verdict, WorkSplit};
 use crate::math::{Units, Vec3};
-use crate::multi::VELOCITY_ROUND_OFF;
+use crate::multi::outcome::Ending;
+use crate::multi::{LzbPrimary, VELOCITY_ROUND_OFF};
 use crate::spatial::{Detail3, Outcome3, Phase3Kind};
 use nalgebra::{DMatrix, DVector};
 use std::fmt;
@@ -77,6 +78,14 @@ impl ContactResult {
         labels.join(" → ")
     }
 
+    /// Append a phase ending at `ends_at`; extend the last one if it has the same kind.
+    pub(crate) fn push_phase(&mut self, kind: ContactPhaseKind, ends_at: f64) {
+        match self.phases.last_mut() {
+            Some(last) if last.kind == kind => last.ends_at = ends_at,
+            _ => self.phases.push(ContactPhase { kind, ends_at }),
+        }
+    }
+
     /// A contact with nothing yet.
     pub(crate) fn empty() -> Self {
         Self {
@@ -134,6 +143,17 @@ pub enum MultiDetail {
         /// The impacts.
         impacts: Vec<BinaryImpact>,
     },
+    /// `lzb`: the primary contacts in turn and the number of integration steps (as for the
+    /// planar [`crate::multi::MultiDetail::Lzb`]).
+    Lzb {
+        /// The primary contacts in turn: the first at the start of the impact, then each
+        /// contact whose stored energy overtook the primary's, or the one with the most
+        /// energy when the primary separated.
+        primaries: Vec<LzbPrimary>,
+        /// The accepted integration steps (each ending at the end of a step or at an event);
+        /// 0 with one contact (the spatial `energetic` law).
+        steps: usize,
+    },
     /// A one-contact law on a problem with one contact: its own detail.
     OneContact {
         /// The law's detail.
@@ -186,6 +206,7 @@ impl MultiOutcome {
             MultiDetail::Sequential { impacts } => impacts
                 .iter()
                 .all(|b| finite(&b.velocity_before) && b.outcome.is_finite()),
+            MultiDetail::Lzb { primaries, .. } => primaries.iter().all(|x| x.impulse.is_finite()),
             MultiDetail::OneContact { .. } => true,
         };
         detail
@@ -268,9 +289,23 @@ pub(crate) fn velocity_scale(w: &DMatrix<f64>, v: &DVector<f64>, p: &DVector<f64
 pub(crate) fn assemble(
     problem: &MultiProblem,
     law: LawId,
+    contacts: Vec<ContactResult>,
+    detail: MultiDetail,
+    inconsistency: Option<Inconsistency>,
+) -> MultiOutcome {
+    assemble_ending(problem, law, contacts, detail, inconsistency, Ending::Exact)
+}
+
+/// [`assemble`] for a law that reaches its end as `ending` says (an integrated law: a gain
+/// must also exceed the disagreement of `ΔT` and the contacts' works summed, as in the
+/// plane).
+pub(crate) fn assemble_ending(
+    problem: &MultiProblem,
+    law: LawId,
     mut contacts: Vec<ContactResult>,
     mut detail: MultiDetail,
     inconsistency: Option<Inconsistency>,
+    ending: Ending,
 ) -> MultiOutcome {
     let (u, w, v) = problem.canonical();
     let p = flatten(&contacts.iter().map(|c| c.impulse).collect::<Vec<_>>());
@@ -291,7 +326,14 @@ pub(crate) fn assemble(
             normal_velocity: least,
         })
     });
-    let verdict = if energy_gain(w, v, energy_change, &p, &va) {
+    let established = match ending {
+        Ending::Exact => energy_change,
+        Ending::Integrated => {
+            let works: f64 = contacts.iter().map(|c| c.work.total()).sum();
+            energy_change - 2.0 * (energy_change - works).abs()
+        }
+    };
+    let verdict = if energy_gain(w, v, established, &p, &va) {
         Verdict::EnergyGained
     } else if inconsistency.is_some() {
         Verdict::InconsistentAssumption
@@ -322,6 +364,11 @@ pub(crate) fn assemble(
             for b in impacts {
                 b.velocity_before = b.velocity_before.map(|y| u.velocity(y));
                 b.outcome = b.outcome.in_problem_units(u);
+            }
+        }
+        MultiDetail::Lzb { primaries, .. } => {
+            for x in primaries {
+                x.impulse = u.impulse(x.impulse);
             }
         }
         MultiDetail::OneContact { .. } => {}

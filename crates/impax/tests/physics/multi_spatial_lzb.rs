@@ -1,0 +1,597 @@
+//! The multiple-impact law `lzb` in 3D (`impax::multi::spatial::lzb`), checked against
+//! independent derivations:
+//!
+//! * decoupled contacts (block-diagonal `W`): each contact is the one-contact spatial
+//!   `energetic` law (its Darboux–Keller path in `p_n`, integrated with the slip direction
+//!   as an angle and the halt by a series about the ray: an independent integration), to
+//!   1e-9 — the impulses, the velocities after, the slip's halt (where it is located, to
+//!   1e-10 of the normal impulse, and the ray it halts on) and the phases;
+//! * a planar problem embedded in 3D (a second tangent of its own, at rest): the planar
+//!   `lzb`, to 1e-9;
+//! * frictionless problems: the normal impulses of the planar `lzb` on the same normal rows;
+//! * a box landing flat on four corners (`W` of rank 6): without spin it leaves level at
+//!   `e |v_z|`, to 1e-10; spinning, it leaves level and friction takes
+//!   `μ m (1 + e) |v_z| ρ` from `I_z ω_z`, or stops the spin (as `lcp`: the corners slip
+//!   round the vertical until they halt together, then stick), to 1e-10;
+//! * 100,000 random problems (`K = 2 … 4`, `W = J M⁻¹ Jᵀ` of random bodies, singular ones
+//!   included): never an energy gain, the contacts' works sum to `ΔT`, every impulse in its
+//!   cone, no consistent result leaving a contact approaching; the breakdowns counted.
+
+use super::multi_spatial::box_rows;
+use super::support::{contact_space, random_multi};
+use impax::law::Verdict;
+use impax::math::{Mat3, SplitMix64, Vec3};
+use impax::multi::scenarios::BoxFlat;
+use impax::multi::spatial::{self, lzb, ContactPhaseKind, MultiDetail, MultiOutcome, MultiProblem};
+use impax::multi::MultiProblem as Planar;
+use impax::spatial::{ContactProblem3, Detail3, Phase3Kind};
+use impax::LawId;
+use nalgebra::{DMatrix, DVector};
+
+/// A random positive definite 3 × 3 block (some with `W_tn = 0`, isotropic `W_tt`) and an
+/// approaching velocity (some at rest tangentially).
+fn random_block(rng: &mut SplitMix64) -> (DMatrix<f64>, Vec3) {
+    let a = DMatrix::from_fn(3, 3, |_, _| rng.range(-1.0, 1.0));
+    let mut w = &a * a.transpose() + DMatrix::identity(3, 3) * rng.range(0.05, 1.0);
+    if rng.unit() < 0.05 {
+        // No coupling of slip and compression, isotropic: no swirl.
+        let d = rng.range(0.5, 2.0);
+        w = DMatrix::from_diagonal(&DVector::from_vec(vec![d, d, rng.range(0.5, 2.0)]));
+    }
+    let vt = if rng.unit() < 0.05 { 0.0 } else { 1.0 };
+    let v = Vec3::new(
+        vt * rng.range(-1.0, 1.0),
+        vt * rng.range(-1.0, 1.0),
+        -rng.range(0.05, 1.0),
+    );
+    (w, v)
+}
+
+fn steps(o: &MultiOutcome) -> usize {
+    match &o.detail {
+        MultiDetail::Lzb { steps, .. } => *steps,
+        other => panic!("not lzb: {other:?}"),
+    }
+}
+
+/// The angle between two angles, in `[0, π]`.
+fn turn(a: f64, b: f64) -> f64 {
+    (a - b).sin().atan2((a - b).cos()).abs()
+}
+
+// ---------------------------------------------------------------------------------------
+// Decoupled contacts
+
+#[test]
+fn decoupled_contacts_are_their_own_energetic() {
+    let mut rng = SplitMix64(0xdec0_3d1b);
+    let (mut worst, mut worst_halt, mut worst_angle) = (0.0f64, 0.0f64, 0.0f64);
+    let (mut halts, mut contacts, mut total_steps, mut weak, mut passes) = (0, 0, 0, 0, 0);
+    let n = 1500;
+    for trial in 0..n {
+        let k = 2 + trial % 3;
+        let blocks: Vec<(DMatrix<f64>, Vec3)> = (0..k).map(|_| random_block(&mut rng)).collect();
+        let mu: Vec<f64> = (0..k)
+            .map(|_| match rng.next_u64() % 10 {
+                0 => 0.0,
+                _ => rng.range(0.0, 1.5),
+            })
+            .collect();
+        let e: Vec<f64> = (0..k).map(|_| rng.unit()).collect();
+        let mut w = DMatrix::zeros(3 * k, 3 * k);
+        let mut v = Vec::new();
+        for (j, (b, vj)) in blocks.iter().enumerate() {
+            w.view_mut((3 * j, 3 * j), (3, 3)).copy_from(b);
+            v.extend([vj.x, vj.y, vj.z]);
+        }
+        let p = MultiProblem::new(w, &v, &mu, &e).unwrap();
+        let o = lzb::resolve(&p).expect("lzb");
+        total_steps += steps(&o);
+        assert_ne!(o.verdict, Verdict::EnergyGained);
+        for (j, (b, vj)) in blocks.iter().enumerate() {
+            let one =
+                ContactProblem3::new(Mat3::from_fn(|r, c| b[(r, c)]), *vj, mu[j], e[j]).unwrap();
+            let r = impax::spatial::laws::resolve(LawId::Energetic, &one).unwrap();
+            let c = &o.contacts[j];
+            let pscale = r.impulse.norm();
+            let vscale = vj.norm() + r.velocity_after.norm();
+            let d = ((c.impulse - r.impulse).norm() / pscale)
+                .max((c.velocity_after - r.velocity_after).norm() / vscale);
+            worst = worst.max(d);
+            contacts += 1;
+            assert!(
+                d < 1e-9,
+                "trial {trial}, contact {j}: {d:e}\n{:?}\nvs {:?}\n{p:?}",
+                c,
+                r
+            );
+            // The slip's halt: where (on the contact's own normal impulse) and on which ray.
+            if let Detail3::DarbouxKeller {
+                slip_halt: Some(halt),
+                ..
+            } = r.detail
+            {
+                let first = c.phases[0];
+                let dh = (first.ends_at - halt).abs() / r.impulse.z;
+                worst_halt = worst_halt.max(dh);
+                halts += 1;
+                assert!(dh < 1e-10, "trial {trial}, contact {j}: halt off by {dh:e}");
+                // The ray it halts on (where the one-contact law reports one: along a weakly
+                // attracting ray its slip direction is still turning where its integration
+                // stops, e⁻⁴⁰ of the slip on, and it reports that direction).
+                if let (
+                    ContactPhaseKind::Impact(Phase3Kind::Slip { to, .. }),
+                    Phase3Kind::Slip { to: theirs, .. },
+                ) = (first.kind, r.phases.as_slice()[0].kind)
+                {
+                    let rays = impax::spatial::invariant_rays(&one);
+                    let every = rays == impax::spatial::InvariantRays::All;
+                    let on =
+                        |a: f64| every || rays.as_slice().iter().any(|x| turn(x.angle, a) < 1e-9);
+                    assert!(on(to), "trial {trial}, contact {j}: {to} on no ray");
+                    if on(theirs) {
+                        worst_angle = worst_angle.max(turn(to, theirs));
+                        assert!(
+                            turn(to, theirs) < 1e-6,
+                            "trial {trial}, contact {j}: {to} vs {theirs}"
+                        );
+                    } else {
+                        weak += 1;
+                    }
+                }
+            }
+            // The same phases — but where the slip passes within 2 σ_f of zero without
+            // halting (the one-contact law turns through it): lzb halts it there and it
+            // leaves rest at once along the ray the one-contact slip ends on.
+            let theirs = r.phases.as_slice();
+            let kinds: Vec<&str> = c.phases.iter().map(|x| x.kind.label()).collect();
+            let theirs_kinds: Vec<Phase3Kind> = theirs.iter().map(|x| x.kind).collect();
+            if let ([Phase3Kind::Slip { to, .. }], ["slip", "resumed-slip"]) =
+                (&theirs_kinds[..], &kinds[..])
+            {
+                let to = *to;
+                let ContactPhaseKind::Impact(Phase3Kind::Resumed { angle }) = c.phases[1].kind
+                else {
+                    unreachable!()
+                };
+                assert!(turn(angle, to) < 1e-6, "{c:?} vs {r:?}");
+                passes += 1;
+                continue;
+            }
+            assert_eq!(c.phases.len(), theirs.len(), "{c:?} vs {r:?}");
+            for (a, b) in c.phases.iter().zip(theirs) {
+                assert_eq!(a.kind.label(), b.kind.label(), "{c:?} vs {r:?}");
+            }
+        }
+    }
+    println!(
+        "decoupled: {contacts} contacts within {worst:.1e} of energetic; {halts} halts located within {worst_halt:.1e} of p_n, on their rays within {worst_angle:.1e} rad ({weak} on weakly attracting rays not compared); {passes} slips passing within 2 σ_f of zero halted; {} steps per impact",
+        total_steps / n
+    );
+}
+
+// ---------------------------------------------------------------------------------------
+// Planar problems in 3D
+
+/// The planar problem `planar` embedded in 3D: rows `t, n` of each contact → `t1, n`, and a
+/// tangent `t2` of its own (`W_t2t2 = 1`, uncoupled, at rest).
+fn embedded(planar: &Planar) -> Option<MultiProblem> {
+    let k = planar.contacts();
+    let map = |i: usize| 3 * (i / 2) + if i.is_multiple_of(2) { 0 } else { 2 };
+    let mut w = DMatrix::zeros(3 * k, 3 * k);
+    for i in 0..2 * k {
+        for j in 0..2 * k {
+            w[(map(i), map(j))] = planar.w()[(i, j)];
+        }
+    }
+    for c in 0..k {
+        w[(3 * c + 1, 3 * c + 1)] = 1.0;
+    }
+    let mut v = vec![0.0; 3 * k];
+    for i in 0..2 * k {
+        v[map(i)] = planar.velocity()[i];
+    }
+    let mu: Vec<f64> = (0..k).map(|c| planar.friction(c)).collect();
+    let e: Vec<f64> = (0..k).map(|c| planar.restitution(c)).collect();
+    let kappa: Vec<f64> = (0..k).map(|c| planar.stiffness(c)).collect();
+    MultiProblem::new(w, &v, &mu, &e)
+        .ok()?
+        .with_stiffness(&kappa)
+        .ok()?
+        .with_exponent(planar.exponent())
+        .ok()
+}
+
+#[test]
+fn a_planar_problem_in_3d_is_the_planar_lzb() {
+    let mut rng = SplitMix64(0x91a4_3d);
+    let (mut compared, mut worst, mut beyond) = (0, 0.0f64, 0);
+    for trial in 0..1500 {
+        let k = 2 + trial % 3;
+        let mut planar = random_multi(&mut rng, k).problem;
+        if trial % 3 == 1 {
+            let kappa: Vec<f64> = (0..k).map(|_| rng.decades(-1.0, 1.0)).collect();
+            planar = planar
+                .with_stiffness(&kappa)
+                .unwrap()
+                .with_exponent(rng.range(1.0, 2.0))
+                .unwrap();
+        }
+        let Some(p3) = embedded(&planar) else {
+            continue;
+        };
+        let (Ok(a), Ok(b)) = (impax::multi::lzb::resolve(&planar), lzb::resolve(&p3)) else {
+            continue;
+        };
+        let scale = planar.velocity().amax();
+        let mut d = 0.0f64;
+        for c in 0..k {
+            let (va, vb) = (a.contacts[c].velocity_after, b.contacts[c].velocity_after);
+            // (The second tangent is untouched but for the round-off of a ray's angle, which
+            // a slip through zero may pick up.)
+            d = d.max((va.x - vb.x).abs().max((va.y - vb.z).abs()).max(vb.y.abs()) / scale);
+        }
+        // 1e-9 but where an inelastic collapse is cut where it settles (`SETTLED` of the
+        // velocities: the two integrations cut it at steps a hair apart) or contacts
+        // separate within a hair of each other.
+        worst = worst.max(d);
+        beyond += usize::from(d > 1e-9);
+        assert!(d <= 1e-7, "trial {trial}: {d:e}\n{planar:?}");
+        compared += 1;
+    }
+    println!(
+        "planar in 3D: {compared} problems within {worst:.1e} of the planar lzb, {beyond} beyond 1e-9"
+    );
+    assert!(compared > 1400, "{compared}");
+    assert!(
+        beyond * 100 <= compared,
+        "{beyond} of {compared} beyond 1e-9"
+    );
+}
+
+/// Random spatial problems: `W = J M⁻¹ Jᵀ` of random bodies (`3K − 2` degrees of freedom
+/// for 30% of them: `W` singular), `v = J u`, at least one contact approaching.
+fn random_spatial(rng: &mut SplitMix64, k: usize, friction: bool) -> MultiProblem {
+    loop {
+        let dof = if rng.unit() < 0.3 {
+            3 * k - 2
+        } else {
+            3 * k + 2
+        };
+        let j = DMatrix::from_fn(3 * k, dof, |_, _| rng.range(-1.0, 1.0));
+        let masses: Vec<f64> = (0..dof).map(|_| rng.decades(-1.0, 1.0)).collect();
+        let u = DVector::from_fn(dof, |_, _| rng.range(-1.0, 1.0));
+        let (w, v) = contact_space(&j, &masses, &u);
+        if (0..k).all(|c| v[3 * c + 2] >= 0.0) {
+            continue;
+        }
+        let mu: Vec<f64> = (0..k)
+            .map(|_| match (friction, rng.next_u64() % 6) {
+                (false, _) | (_, 0) => 0.0,
+                _ => rng.range(0.0, 1.5),
+            })
+            .collect();
+        let e: Vec<f64> = (0..k)
+            .map(|_| match rng.next_u64() % 10 {
+                0 => 0.0,
+                1 => 1.0,
+                _ => rng.unit(),
+            })
+            .collect();
+        if let Ok(p) = MultiProblem::new(w, v.as_slice(), &mu, &e) {
+            return p;
+        }
+    }
+}
+
+#[test]
+fn frictionless_normal_impulses_are_the_planar_lzbs() {
+    let mut rng = SplitMix64(0xf1c7_3d);
+    let (mut compared, mut worst, mut beyond) = (0, 0.0f64, 0);
+    for trial in 0..600 {
+        let k = 2 + trial % 3;
+        let p = random_spatial(&mut rng, k, false);
+        // The planar problem of the rows t1, n (a principal block of W: positive
+        // semidefinite, v⁻ in its range): without friction the tangents do not matter.
+        let rows: Vec<usize> = (0..k).flat_map(|c| [3 * c, 3 * c + 2]).collect();
+        let w = DMatrix::from_fn(2 * k, 2 * k, |r, c| p.w()[(rows[r], rows[c])]);
+        let v: Vec<f64> = rows.iter().map(|&r| p.velocity()[r]).collect();
+        let e: Vec<f64> = (0..k).map(|c| p.restitution(c)).collect();
+        let Ok(planar) = Planar::new(w, &v, &[0.0], &e) else {
+            continue;
+        };
+        let (Ok(a), Ok(b)) = (impax::multi::lzb::resolve(&planar), lzb::resolve(&p)) else {
+            continue;
+        };
+        let scale = a.contacts.iter().fold(0.0f64, |m, c| m.max(c.impulse.y));
+        let mut d = 0.0f64;
+        for c in 0..k {
+            d = d.max((a.contacts[c].impulse.y - b.contacts[c].impulse.z).abs() / scale);
+            assert_eq!(b.contacts[c].impulse.x, 0.0);
+            assert_eq!(b.contacts[c].impulse.y, 0.0);
+        }
+        // (As for the planar problems in 3D: beyond 1e-9 only where contacts separate within
+        // a hair of each other or a collapse is cut where it settles.)
+        worst = worst.max(d);
+        beyond += usize::from(d > 1e-9);
+        assert!(d <= 1e-7, "trial {trial}: {d:e}\n{p:?}");
+        compared += 1;
+    }
+    println!(
+        "frictionless: {compared} problems, normal impulses within {worst:.1e} of the planar lzb, {beyond} beyond 1e-9"
+    );
+    assert!(compared > 550, "{compared}");
+    assert!(
+        beyond * 100 <= compared,
+        "{beyond} of {compared} beyond 1e-9"
+    );
+}
+
+// ---------------------------------------------------------------------------------------
+// A box landing flat on four corners
+
+#[test]
+fn a_box_landing_flat_leaves_level() {
+    let mut worst = 0.0f64;
+    for (mu, e) in [(0.3, 0.5), (0.0, 1.0), (1.0, 0.0), (0.1, 0.8)] {
+        for eta in [1.5, 1.0] {
+            let bx = BoxFlat {
+                spin: 0.0,
+                ..BoxFlat::default()
+            };
+            let sc = bx.build().unwrap();
+            let p = sc
+                .impact
+                .problem3(&[mu], &[e])
+                .unwrap()
+                .with_exponent(eta)
+                .unwrap();
+            assert_eq!(p.rank(), 6);
+            let r = sc.impact.resolve3(LawId::Lzb, &p).unwrap();
+            let out = r.resolution.as_ref().unwrap();
+            let after = r.velocities_after.unwrap();
+            let expect = [0.0, 0.0, e, 0.0, 0.0, 0.0];
+            for i in 0..6 {
+                worst = worst.max((after[i] - expect[i]).abs());
+                assert!(
+                    (after[i] - expect[i]).abs() < 1e-10,
+                    "μ = {mu}, e = {e}, η = {eta}: u⁺ = {after:?}"
+                );
+            }
+            assert_eq!(out.verdict, Verdict::Consistent);
+            for c in &out.contacts {
+                // A quarter of (1 + e) m |v_z| each; stuck throughout (no friction needed).
+                assert!((c.impulse.z - (1.0 + e) / 4.0).abs() < 1e-10, "{c:?}");
+                assert!(c.impulse.xy().norm() < 1e-12, "{c:?}");
+                if mu > 0.0 {
+                    assert_eq!(c.phase_summary(), "stick", "{c:?}");
+                }
+            }
+        }
+    }
+    println!("box landing flat: u⁺ within {worst:.1e} of (0, 0, e |v_z|, 0, 0, 0)");
+}
+
+#[test]
+fn a_spinning_box_landing_flat() {
+    let mut worst = 0.0f64;
+    for (spin, mu, e, vx) in [
+        (2.0, 0.3, 0.5, 0.0),
+        (5.0, 0.3, 0.5, 0.0),
+        (5.0, 0.1, 1.0, 0.0),
+        (0.5, 1.0, 0.0, 0.0),
+        (-3.0, 0.2, 0.7, 0.0),
+        (2.0, 0.3, 0.5, 0.4),
+        (-1.0, 0.6, 0.3, -0.7),
+    ] {
+        let bx = BoxFlat {
+            spin,
+            velocity: [vx, 0.0, -1.0],
+            ..BoxFlat::default()
+        };
+        let sc = bx.build().unwrap();
+        let p = sc.impact.problem3(&[mu], &[e]).unwrap();
+        let r = sc.impact.resolve3(LawId::Lzb, &p).unwrap();
+        let out = r.resolution.as_ref().unwrap();
+        let after = r.velocities_after.unwrap();
+        // Energy: no gain, ΔT two ways; no contact approaching after.
+        assert_ne!(out.verdict, Verdict::EnergyGained);
+        assert!(out.energy_change < 0.0, "{}", out.energy_change);
+        assert!(
+            (r.energy_change_from_velocities.unwrap() - out.energy_change).abs() < 1e-10,
+            "ΔT two ways"
+        );
+        let works: f64 = out.contacts.iter().map(|c| c.work.total()).sum();
+        assert!((works - out.energy_change).abs() < 1e-9);
+        for c in &out.contacts {
+            assert!(c.velocity_after.z >= -1e-12, "{c:?}");
+            assert!(c.impulse.xy().norm() <= mu * c.impulse.z * (1.0 + 1e-12));
+        }
+        if vx == 0.0 {
+            // Symmetric: level at e |v_z|, the spin slowed by μ m (1 + e) |v_z| ρ / I_z or
+            // stopped.
+            let [a, b, _] = bx.half_extents;
+            let iz = bx.mass * (a * a + b * b) / 3.0;
+            let slowed = spin.abs() - mu * bx.mass * (1.0 + e) * a.hypot(b) / iz;
+            let expect = [0.0, 0.0, e, 0.0, 0.0, slowed.max(0.0) * spin.signum()];
+            for i in 0..6 {
+                worst = worst.max((after[i] - expect[i]).abs());
+                assert!(
+                    (after[i] - expect[i]).abs() < 1e-10,
+                    "ω = {spin}, μ = {mu}, e = {e}: u⁺ = {after:?}, expected {expect:?}"
+                );
+            }
+            let phases = if slowed > 0.0 { 1 } else { 2 };
+            for c in &out.contacts {
+                assert_eq!(c.phases.len(), phases, "{}", c.phase_summary());
+            }
+        } else {
+            println!(
+                "box sliding and spinning (ω = {spin}, v_x = {vx}): u⁺ = {:?}, ΔT = {:.6}",
+                after
+                    .iter()
+                    .map(|x| (x * 1e6).round() / 1e6)
+                    .collect::<Vec<_>>(),
+                out.energy_change
+            );
+        }
+    }
+    println!("spinning box: u⁺ within {worst:.1e} of the symmetric answer");
+}
+
+/// The box's contact rows from the tests' own Jacobian (not the scenario's): the same
+/// problem, the same answer.
+#[test]
+fn the_box_from_its_rows() {
+    let (a, b, c, m) = (0.5, 0.3, 0.2, 2.0);
+    let inertia = [
+        m * (b * b + c * c) / 3.0,
+        m * (a * a + c * c) / 3.0,
+        m * (a * a + b * b) / 3.0,
+    ];
+    let masses = [m, m, m, inertia[0], inertia[1], inertia[2]];
+    let u = DVector::from_vec(vec![0.0, 0.0, -2.0, 0.0, 0.0, 3.0]);
+    let (w, v) = contact_space(&box_rows(a, b, c), &masses, &u);
+    let p = MultiProblem::new(w, v.as_slice(), &[0.2], &[0.6]).unwrap();
+    let o = lzb::resolve(&p).unwrap();
+    for corner in &o.contacts {
+        assert!((corner.impulse.z - m * 1.6 * 2.0 / 4.0).abs() < 1e-10);
+        assert!((corner.velocity_after.z - 1.2).abs() < 1e-10);
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// Random problems
+
+#[test]
+fn never_gains_energy_on_random_problems() {
+    let mut rng = SplitMix64(0x3d_1eb_0e6e);
+    let n = 100_000;
+    let (mut total_steps, mut most) = (0usize, 0usize);
+    let mut breakdowns = std::collections::BTreeMap::<&str, [usize; 2]>::new();
+    let mut verdicts = [0usize; 3];
+    let (mut worst_works, mut largest_gain) = (0.0f64, f64::NEG_INFINITY);
+    for trial in 0..n {
+        let k = 2 + trial % 3;
+        let p = random_spatial(&mut rng, k, true);
+        let p = if trial % 4 == 3 {
+            let kappa: Vec<f64> = (0..k).map(|_| rng.decades(-2.0, 2.0)).collect();
+            p.with_stiffness(&kappa)
+                .unwrap()
+                .with_exponent(rng.range(1.0, 2.5))
+                .unwrap()
+        } else {
+            p
+        };
+        let singular = p.rank() < 3 * k;
+        let o = match lzb::resolve(&p) {
+            Ok(o) => o,
+            Err(b) => {
+                let id = b.reason.id();
+                assert!(id == "too-many-steps" || id == "jammed", "{b} on {p:?}");
+                if id == "jammed" {
+                    // Energy held at rest: only redundant contacts can balance forces.
+                    assert!(singular, "{b} with W positive definite: {p:?}");
+                }
+                breakdowns.entry(id).or_default()[usize::from(singular)] += 1;
+                continue;
+            }
+        };
+        assert!(o.is_finite());
+        let s = steps(&o);
+        total_steps += s;
+        most = most.max(s);
+        verdicts[match o.verdict {
+            Verdict::Consistent => 0,
+            Verdict::EnergyGained => 1,
+            Verdict::InconsistentAssumption => 2,
+        }] += 1;
+        assert_ne!(o.verdict, Verdict::EnergyGained, "{p:?}");
+        let flat = DVector::from_iterator(
+            3 * k,
+            o.contacts
+                .iter()
+                .flat_map(|c| [c.impulse.x, c.impulse.y, c.impulse.z]),
+        );
+        let scale = p.velocity().amax() + (p.w().abs() * flat.abs()).amax();
+        let escale = scale * flat.amax();
+        largest_gain = largest_gain.max(o.energy_change / escale);
+        assert!(
+            o.energy_change <= 1e-9 * escale,
+            "ΔT = {:e} on {p:?}",
+            o.energy_change
+        );
+        let works: f64 = o.contacts.iter().map(|c| c.work.total()).sum();
+        worst_works = worst_works.max((works - o.energy_change).abs() / escale);
+        assert!((works - o.energy_change).abs() <= 1e-8 * escale, "{p:?}");
+        let exact = p.energy_change(&o.impulses());
+        assert!((exact - o.energy_change).abs() <= 1e-10 * escale);
+        for (j, c) in o.contacts.iter().enumerate() {
+            assert!(c.impulse.z >= 0.0);
+            assert!(
+                c.impulse.xy().norm()
+                    <= p.friction(j) * c.impulse.z * (1.0 + 1e-9) + 1e-12 * escale,
+                "cone at {j}: {c:?}"
+            );
+        }
+        if o.verdict == Verdict::Consistent {
+            for c in &o.contacts {
+                assert!(c.velocity_after.z >= -1e-9 * scale, "approaching: {p:?}");
+            }
+        }
+    }
+    let failed: usize = breakdowns.values().map(|x| x[0] + x[1]).sum();
+    println!(
+        "spatial lzb: {n} problems, {} steps per impact (at most {most}), verdicts {verdicts:?}, works within {worst_works:.1e} of ΔT, largest ΔT {largest_gain:.1e} of the energy scale; breakdowns (W positive definite, singular) {breakdowns:?}: {:.2}%",
+        total_steps / (n - failed),
+        100.0 * failed as f64 / n as f64
+    );
+    assert_eq!(verdicts[1], 0);
+    assert!(failed < n / 200, "{breakdowns:?}");
+}
+
+// ---------------------------------------------------------------------------------------
+// The dispatcher
+
+#[test]
+fn the_dispatcher_takes_lzb_at_several_contacts() {
+    let mut rng = SplitMix64(0xd15_3d);
+    let p = random_spatial(&mut rng, 3, true);
+    let a = spatial::resolve(LawId::Lzb, &p).unwrap().unwrap();
+    let b = lzb::resolve(&p).unwrap();
+    assert_eq!(a, b);
+    assert_eq!(a.law, LawId::Lzb);
+    // One contact: energetic, labelled lzb.
+    let q = MultiProblem::from_upper(
+        1,
+        &[3.5, 0.0, 0.0, 3.5, 0.0, 1.0],
+        &[0.5, 0.1, -1.0],
+        &[0.3],
+        &[0.6],
+    )
+    .unwrap();
+    let one = lzb::resolve(&q).unwrap();
+    let en = impax::spatial::laws::resolve(LawId::Energetic, &q.contact(0).unwrap()).unwrap();
+    assert_eq!(one.law, LawId::Lzb);
+    assert_eq!(one.contacts[0].impulse, en.impulse);
+    assert_eq!(steps(&one), 0);
+    assert_eq!(
+        spatial::resolve(LawId::Lzb, &q).unwrap().unwrap().contacts[0].impulse,
+        en.impulse
+    );
+    // Too many contacts: the law named.
+    let k = lzb::MAX_CONTACTS + 1;
+    let mut w = DMatrix::identity(3 * k, 3 * k);
+    w[(2, 5)] = 0.1;
+    w[(5, 2)] = 0.1;
+    let mut v = vec![0.0; 3 * k];
+    v[2] = -1.0;
+    let big = MultiProblem::new(w, &v, &[0.3], &[0.5]).unwrap();
+    let err = spatial::resolve(LawId::Lzb, &big).unwrap_err();
+    assert_eq!(err.field(), "law");
+    assert!(err.to_string().contains("at most 8"), "{err}");
+    assert_eq!(
+        lzb::resolve(&big).unwrap_err().reason.id(),
+        "too-many-contacts"
+    );
+}
