@@ -42,7 +42,7 @@ pub enum Command {
     /// (μ = 0.4, e = 0.7), `rod` (50°, v = (0.5, −1), μ = 0.8, e = 1), `double-pendulum`
     /// (μ = e = 0.5); or a TOML scenario (a body, a mechanism, or a `space = "3d"` body).
     /// The systems struck at several contacts (`rod-flat`, `rocking-block`, `cradle`,
-    /// `ball-ball-wall`): `lcp` and `sequential` against `lzb`.
+    /// `ball-ball-wall`, `box-flat`): `lcp` and `sequential` against `lzb`.
     Audit(AuditArgs),
     /// The interactive explorer in the browser: serve the page (the impax core compiled to
     /// WebAssembly) on 127.0.0.1 and print its URL, or write its static files with --out.

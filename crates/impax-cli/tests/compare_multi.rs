@@ -172,8 +172,24 @@ fn box_flat_from_the_command_line() {
     assert!(fails(&["compare", "box-flat", "--vz", "1"]).contains("vz"));
     assert!(fails(&["compare", "box-flat", "--half-extents", "1,2"]).contains("--half-extents"));
     assert!(fails(&["compare", "box-flat", "--balls", "3"]).contains("--balls"));
-    assert!(fails(&["compare", "box-flat", "--law", "lzb"]).contains("law"));
-    assert!(fails(&["audit", "box-flat"]).contains("box-flat"));
+    assert!(fails(&["compare", "box-flat", "--law", "newton"]).contains("law"));
+    // lzb in 3D: a box landing level without spin leaves level at e |v_z| (symmetric,
+    // equal stiffnesses), and the audit judges lcp by it.
+    let doc = json(&[
+        "compare", "box-flat", "--omega", "0", "--law", "lzb", "--json",
+    ]);
+    let u: Vec<f64> = doc["results"][0]["velocities_after"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(f)
+        .collect();
+    for (i, x) in [0.0, 0.0, 0.5, 0.0, 0.0, 0.0].iter().enumerate() {
+        assert!((u[i] - x).abs() < 1e-10, "{u:?}");
+    }
+    let audit = json(&["audit", "box-flat", "--omega", "0", "--json"]);
+    assert_eq!(audit["reference"], "lzb");
+    assert_eq!(audit["engine_rules"][0]["verdict"]["id"], "matches");
 }
 
 /// `impax resolve --contacts 2` with a 6 × 6 W is spatial: the cradle of point masses.

@@ -167,8 +167,11 @@ impl View {
                     })
                     .collect(),
             ),
-            #[allow(unreachable_patterns)] // further laws' details
-            _ => DetailView::None,
+            multi3::MultiDetail::Lzb { primaries, steps } => DetailView::Lzb(
+                primaries.iter().map(|p| (p.contact + 1, p.impulse)).collect(),
+                *steps,
+            ),
+            multi3::MultiDetail::OneContact { .. } => DetailView::None,
         };
         Self {
             verdict: o.verdict.id(),

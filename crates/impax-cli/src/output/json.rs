@@ -423,6 +423,13 @@ fn multi3_detail(o: &multi3::MultiOutcome) -> Value {
                 "energy_change": num(b.outcome.energy_change),
             })).collect::<Vec<_>>(),
         }),
+        multi3::MultiDetail::Lzb { primaries, steps } => json!({
+            "primaries": primaries.iter().map(|p| json!({
+                "contact": p.contact + 1,
+                "impulse": num(p.impulse),
+            })).collect::<Vec<_>>(),
+            "steps": steps,
+        }),
         multi3::MultiDetail::OneContact { detail, .. } => detail3(detail),
     }
 }

@@ -297,7 +297,7 @@ pub fn resolve_all(
         }
         let k = p.contacts();
         let laws = if law_ids.is_empty() {
-            [LawId::Lcp, LawId::Sequential]
+            [LawId::Lcp, LawId::Sequential, LawId::Lzb]
                 .into_iter()
                 .filter(|l| *l != LawId::Lcp || k <= multi3::lcp::MAX_CONTACTS)
                 .collect()

@@ -11,7 +11,7 @@ use impax::LawId;
 use serde_json::json;
 
 /// The laws that take several spatial contacts.
-const LAWS: [LawId; 2] = [LawId::Lcp, LawId::Sequential];
+const LAWS: [LawId; 3] = [LawId::Lcp, LawId::Sequential, LawId::Lzb];
 
 pub fn run(args: &ResolveArgs, k: usize, out: &mut Vec<u8>) -> CliResult<()> {
     let n = 3 * k;
