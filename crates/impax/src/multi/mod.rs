@@ -125,7 +125,7 @@ impl LawId {
     /// or more, `smith-centre` (it needs a body), `lcp` with more than
     /// [`crate::multi::lcp::MAX_CONTACTS`] contacts, `lzb` with more than
     /// [`crate::multi::lzb::MAX_CONTACTS`]. A law that has no result for these
-    /// numbers gives a [`Breakdown`], as with one contact.
+    /// numbers gives a [`Breakdown`](crate::law::Breakdown), as with one contact.
     ///
     /// [`MultiOutcome::from_outcome`]: crate::multi::MultiOutcome::from_outcome
     ///
