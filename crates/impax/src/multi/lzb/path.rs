@@ -569,8 +569,8 @@ impl<'a> Path<'a> {
 
     /// The primary contact along a step from `(t, y0)` to the fraction `theta` of `h`, where
     /// the state is `y1`: a contact whose stored energy exceeds the primary's by more than
-    /// [`PRIMARY_MARGIN`] takes over, where its energy overtook the primary's (located on the
-    /// dense output, which is built only then).
+    /// [`super::PRIMARY_MARGIN`] takes over, where its energy overtook the primary's (located
+    /// on the dense output, which is built only then).
     fn follow_primary<const N: usize>(
         &mut self,
         theta: f64,

@@ -9,10 +9,10 @@
 //! |---|---|---|
 //! | `lcp` | [`lcp`] | the complementarity impact at every contact at once with the exact circular cone: the contacts' modes enumerated, each slip direction a root of `ŝ × v_t⁺ = 0` |
 //! | `sequential` | [`sequential`] | binary impacts with the spatial `energetic` law, the most approaching contact first |
+//! | `lzb` | [`lzb`] | Liu, Zhao & Brogliato's multiple impacts with Coulomb friction at each contact, the slip directions turning (swirl), integrated to the end |
 //!
 //! With `K = 1` every spatial contact-space law applies (its one-contact outcome carried
-//! over, [`MultiOutcome::from_outcome`]; `lzb` and `sequential` are `energetic`). `lzb` at
-//! several spatial contacts is not available yet.
+//! over, [`MultiOutcome::from_outcome`]; `lzb` and `sequential` are `energetic`).
 //!
 //! ```
 //! use impax::multi::spatial::{resolve, MultiProblem};
@@ -48,9 +48,9 @@ pub use problem::MultiProblem;
 use crate::error::{Error, Result};
 use crate::law::{Breakdown, LawId};
 
-/// Resolve a spatial `problem` with `law`: `lcp` (up to [`lcp::MAX_CONTACTS`] contacts) and
-/// `sequential` for several contacts; with `K = 1` every spatial contact-space law (`lzb` is
-/// then `energetic`). Errors name the field `law`.
+/// Resolve a spatial `problem` with `law`: `lcp` (up to [`lcp::MAX_CONTACTS`] contacts),
+/// `sequential` and `lzb` (up to [`lzb::MAX_CONTACTS`]) for several contacts; with `K = 1`
+/// every spatial contact-space law (`lzb` is then `energetic`). Errors name the field `law`.
 pub fn resolve(law: LawId, problem: &MultiProblem) -> Result<MultiResolution> {
     let k = problem.contacts();
     match law {

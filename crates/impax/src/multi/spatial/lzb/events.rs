@@ -7,14 +7,16 @@
 //! | separation | expansion | `−s_j` (the stored energy back to zero) |
 //! | recompression | expansion | `−v_nj − a` (approaching again while loaded) |
 //! | joining | off | `−v_nj − a`: a contact starts approaching |
-//! | slip nearing rest | slip along `v_t` | `σ_l − |v_tj|`: the slip is compared with the ray it halts on |
+//! | slip at its floor | slip along `v_t` | `σ_l − |v_tj|`: it goes on along a fixed direction (`σ_l = 2 σ_f`) |
 //! | slip halt | slip along a fixed `d` | `−d·v_tj` |
-//! | slip live | slip along a fixed `d` | `|v_tj| − σ_l`: the slip follows its own direction again |
-//! | stick break | stick | `|x_j| − μ_j F_j − ε` (the friction needed leaves the circular cone; `ε` the round-off, [`crate::multi::spatial::lzb::STICK_ROUND_OFF`] of the largest `F_c`) |
+//! | slip live | slip along a fixed `d` | `|v_tj| − σ_l`: it follows its own direction again |
+//! | stick break | stick | `|x_j| − μ_j F_j − ε`: the friction needed leaves the circular cone |
 //!
 //! (`a` is the approach round-off, [`crate::multi::lzb::APPROACH_ROUND_OFF`] of the largest
-//! `|v⁻_i|`; `σ_l` the contact's limit, [`Modes::limit`].) As in the planar law, a velocity that starts a regime is zero
-//! only to the round-off of the event located there: each function is offset by its value
+//! `|v⁻_i|`; `σ_l` the contact's limit, [`Modes::limit`]; `ε` the stick's round-off,
+//! [`super::STICK_ROUND_OFF`] of the force scale.) As in the planar law, a velocity that
+//! starts a regime is zero only to the round-off of the event located there: each function
+//! is offset by its value
 //! where the regime starts when that is above zero, and a velocity event that starts within
 //! `a` of zero by `a` more, so that every function starts below zero and its crossing is
 //! seen.

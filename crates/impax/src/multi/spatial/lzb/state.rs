@@ -58,8 +58,8 @@ pub(super) struct Setup {
     /// The impact has settled when no velocity exceeds this
     /// ([`crate::multi::lzb::SETTLED`] times `max_i |v⁻_i|`).
     pub settled: f64,
-    /// The bound on a slip times its direction's angle from the ray it halts on, below
-    /// which it goes on along the ray ([`FREEZE`] times `max_i |v⁻_i|`).
+    /// `σ_f`: the bound on a slip times its direction's angle from the ray it halts on,
+    /// below which it goes on along the ray ([`FREEZE`] times `max_i |v⁻_i|`).
     pub freeze: f64,
     /// The slip below which a slip is near rest ([`NEAR`] times `max_i |v⁻_i|`).
     pub near: f64,
@@ -200,9 +200,10 @@ pub(super) struct Modes {
     pub tangent: [Tangent; MAXK],
     /// The sticking contacts.
     pub stick: StickSet,
-    /// The slip at which each slip's regime is next looked at: a slip along its own
-    /// direction once it falls below it, a slip along a fixed direction once it grows past
-    /// it.
+    /// The slip at which each slip's regime changes: a slip along its own direction goes
+    /// on along a fixed one below it (`2 σ_f`), a slip along a fixed direction follows its
+    /// own above it ([`Setup::near`] leaving rest, twice its slip where it was fixed
+    /// halting).
     pub limit: [f64; MAXK],
 }
 

@@ -20,8 +20,10 @@
 //!   invariant ray of the contact's slip field as a power of `σ_j`
 //!   (`φ − φ* ∝ σ^λ`, the spatial Darboux–Keller law's `log_sigma.rs`), so in `τ` the path
 //!   has a branch point at the halt, while in `x` it is smooth: the steps in `x` are
-//!   e-folds of the slip. The variable ends at the contact's limit exactly
-//!   ([`Modes::limit`]), where the slip is compared with the ray it halts on (`mod.rs`).
+//!   e-folds of the slip (back to `τ` also when they fall below a sixteenth of one: the
+//!   others set the steps, the halt recedes). The slip is compared with the ray it halts
+//!   on at the end of each step (`record.rs`) and goes on along it when close; the variable
+//!   ends at the latest at the contact's limit `2 σ_f` exactly ([`Modes::limit`]).
 //!
 //! The power `m` is the force law's ([`crate::multi::lzb::common::ForceLaw`]). Any event
 //! returns the path to `τ`.
