@@ -55,32 +55,34 @@ struct Path<'a> {
     primary: Primary,
 }
 
-/// Integrate the impact to its end (module docs of [`super`]); `N = 4K`.
-pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason> {
-    debug_assert_eq!(N, PER * setup.k);
-    let k = setup.k;
-    let mut y = [0.0; N];
-    let mut path = Path::start(setup, &y);
-    // The shortest time a contact alone would compress in.
+/// The start: the variable, its first step, and the shortest time a contact alone would
+/// compress in. In `u = τ^(1/m)` for a quarter of that time, or in `τ` for an integer
+/// exponent; the first step a tenth of the way.
+fn start(setup: &Setup) -> (Var, f64, f64) {
     let mut shortest = f64::INFINITY;
-    for j in 0..k {
+    for j in 0..setup.k {
         let vn = setup.v0[2 * j + 1];
         if vn < 0.0 {
             let wnn = setup.w[2 * j + 1][2 * j + 1];
             shortest = shortest.min(setup.law.compression_time(setup.kappa[j], wnn, vn));
         }
     }
-    // The start in u = τ^(1/m) (a quarter of that time), or in τ for an integer exponent; the
-    // first step a tenth of the way.
-    let (mut var, mut x, mut h) = if setup.law.m == 1 {
-        (Var::Time, 0.0, 0.01 * shortest)
+    if setup.law.m == 1 {
+        (Var::Time, 0.01 * shortest, shortest)
     } else {
-        (
-            Var::Root,
-            0.0,
-            0.1 * (0.25 * shortest).powf(1.0 / f64::from(setup.law.m)),
-        )
-    };
+        let h = 0.1 * (0.25 * shortest).powf(1.0 / f64::from(setup.law.m));
+        (Var::Root, h, shortest)
+    }
+}
+
+/// Integrate the impact to its end (module docs of [`super`]); `N = 4K`.
+pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason> {
+    debug_assert_eq!(N, PER * setup.k);
+    let k = setup.k;
+    let mut y = [0.0; N];
+    let mut path = Path::start(setup, &y);
+    let (mut var, mut h, shortest) = start(setup);
+    let mut x = 0.0;
     let root_end = 0.25 * shortest;
     let (mut attempts, mut steps) = (0usize, 0usize);
     let mut modes = path.modes;
