@@ -239,7 +239,7 @@ def resolve(w, v, friction, restitution, law="energetic", *, contacts=None, stif
     once — ``w`` the ``2K × 2K`` W (planar) or ``3K × 3K`` (spatial), positive
     semidefinite, or its upper triangle; ``v`` ``dK`` numbers or ``K`` rows of ``d``;
     ``friction`` and ``restitution`` one number or ``K``; laws ``lcp``, ``sequential`` and
-    ``lzb`` (``MULTI_CONTACT_LAWS``; in 3D ``lcp`` and ``sequential``); for ``lzb``
+    ``lzb`` (``MULTI_CONTACT_LAWS``, planar and spatial); for ``lzb``
     ``stiffness`` (one number or ``K``) and ``exponent``; returns a :class:`MultiOutcome`.
     """
 
