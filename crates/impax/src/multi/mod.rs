@@ -64,6 +64,7 @@ pub use system::{MultiImpact, SystemOutcome};
 
 use crate::error::{Error, Result};
 use crate::law::LawId;
+use crate::law::{Breakdown, BreakdownReason};
 
 /// Resolve `problem` with `law` ([`LawId::resolve_multi`]): `lcp`, `sequential` and `lzb`
 /// for several contacts (`lcp` up to [`lcp::MAX_CONTACTS`], `lzb` up to
@@ -150,5 +151,32 @@ impl LawId {
         problem: &crate::multi::MultiProblem,
     ) -> Result<crate::multi::MultiResolution> {
         crate::multi::resolve(self, problem)
+    }
+}
+
+/// `Err(too-many-contacts)` when a law that takes at most `limit` contacts is given `k`.
+pub(crate) fn within(law: LawId, k: usize, limit: usize) -> std::result::Result<(), Breakdown> {
+    if k > limit {
+        return Err(Breakdown {
+            law,
+            reason: BreakdownReason::TooManyContacts { contacts: k, limit },
+        });
+    }
+    Ok(())
+}
+
+/// The outcome, or the breakdown `overflow` when one of its numbers is not finite.
+pub(crate) fn finite_or_overflow<T>(
+    law: LawId,
+    out: T,
+    finite: bool,
+) -> std::result::Result<T, Breakdown> {
+    if finite {
+        Ok(out)
+    } else {
+        Err(Breakdown {
+            law,
+            reason: BreakdownReason::Overflow,
+        })
     }
 }

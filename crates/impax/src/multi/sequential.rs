@@ -149,14 +149,8 @@ pub fn resolve(problem: &MultiProblem) -> MultiResolution {
         MultiDetail::Sequential { impacts },
         inconsistency,
     );
-    if out.is_finite() {
-        Ok(out)
-    } else {
-        Err(Breakdown {
-            law,
-            reason: BreakdownReason::Overflow,
-        })
-    }
+    let finite = out.is_finite();
+    crate::multi::finite_or_overflow(law, out, finite)
 }
 
 /// `sequential` with one contact, as a one-contact law: [`Energetic`], its outcome and

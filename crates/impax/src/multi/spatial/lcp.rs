@@ -106,15 +106,7 @@ struct Candidate {
 pub fn resolve(problem: &MultiProblem) -> MultiResolution {
     let law = LawId::Lcp;
     let k = problem.contacts();
-    if k > MAX_CONTACTS {
-        return Err(Breakdown {
-            law,
-            reason: BreakdownReason::TooManyContacts {
-                contacts: k,
-                limit: MAX_CONTACTS,
-            },
-        });
-    }
+    crate::multi::within(law, k, MAX_CONTACTS)?;
     let (_, w, v) = problem.canonical();
     let s = Setup {
         k,
@@ -162,14 +154,8 @@ pub fn resolve(problem: &MultiProblem) -> MultiResolution {
         MultiDetail::Lcp { solutions: all },
         inconsistency,
     );
-    if out.is_finite() {
-        Ok(out)
-    } else {
-        Err(Breakdown {
-            law,
-            reason: BreakdownReason::Overflow,
-        })
-    }
+    let finite = out.is_finite();
+    crate::multi::finite_or_overflow(law, out, finite)
 }
 
 /// The work of one contact along the straight path `s p`, `0 ≤ s ≤ 1` (as the planar law).

@@ -169,15 +169,7 @@ const RTOL: f64 = 1e-12;
 pub fn resolve(problem: &MultiProblem) -> MultiResolution {
     let law = LawId::Lzb;
     let k = problem.contacts();
-    if k > MAX_CONTACTS {
-        return Err(Breakdown {
-            law,
-            reason: BreakdownReason::TooManyContacts {
-                contacts: k,
-                limit: MAX_CONTACTS,
-            },
-        });
-    }
+    crate::multi::within(law, k, MAX_CONTACTS)?;
     if k == 1 {
         return one_contact(problem);
     }
@@ -203,14 +195,8 @@ pub fn resolve(problem: &MultiProblem) -> MultiResolution {
         None,
         Ending::Integrated,
     );
-    if out.is_finite() {
-        Ok(out)
-    } else {
-        Err(Breakdown {
-            law,
-            reason: BreakdownReason::Overflow,
-        })
-    }
+    let finite = out.is_finite();
+    crate::multi::finite_or_overflow(law, out, finite)
 }
 
 /// One contact: the spatial `energetic` law on the contact's block (module docs).
