@@ -259,22 +259,39 @@ fn setup(problem: &MultiProblem) -> Setup {
     s
 }
 
-/// Solve every combination of modes; keep the distinct solutions, in enumeration order.
+/// Solve every combination of modes that may satisfy the conditions (those the elimination
+/// tree of [`Tree`] does not rule out); keep the distinct solutions, in enumeration order.
 fn enumerate(s: &Setup) -> Vec<Candidate> {
+    match s.k {
+        1 => Tree::<2>::run(s),
+        2 => Tree::<4>::run(s),
+        3 => Tree::<6>::run(s),
+        4 => Tree::<8>::run(s),
+        5 => Tree::<10>::run(s),
+        _ => Tree::<12>::run(s),
+    }
+}
+
+/// The modes contact `j` can be in.
+fn choices(s: &Setup, j: usize) -> &'static [Mode] {
+    if s.mu[j] > 0.0 {
+        &WITH_FRICTION
+    } else {
+        &FRICTIONLESS
+    }
+}
+
+/// Solve every combination of modes (contact 0 fastest); keep the distinct solutions, in
+/// enumeration order: the definition that [`enumerate`] reproduces.
+#[cfg(test)]
+fn enumerate_all(s: &Setup) -> Vec<Candidate> {
     let k = s.k;
-    let choices = |j: usize| -> &'static [Mode] {
-        if s.mu[j] > 0.0 {
-            &WITH_FRICTION
-        } else {
-            &FRICTIONLESS
-        }
-    };
     let mut digits = [0usize; MAX_CONTACTS];
     let mut modes = [Mode::Off; MAX_CONTACTS];
     let mut found: Vec<Candidate> = Vec::new();
     loop {
         for j in 0..k {
-            modes[j] = choices(j)[digits[j]];
+            modes[j] = choices(s, j)[digits[j]];
         }
         // Every contact off leaves an approaching contact approaching: never a solution.
         if modes[..k].iter().any(|m| *m != Mode::Off) {
@@ -289,7 +306,7 @@ fn enumerate(s: &Setup) -> Vec<Candidate> {
                 return found;
             }
             digits[j] += 1;
-            if digits[j] < choices(j).len() {
+            if digits[j] < choices(s, j).len() {
                 break;
             }
             digits[j] = 0;
@@ -311,6 +328,364 @@ fn merge(found: &mut Vec<Candidate>, c: Candidate) {
         }
     }
     found.push(c);
+}
+
+/// A mode is ruled out by the elimination tree only when one of its conditions fails by more
+/// than this fraction of an upper bound of the scale its check is relative to (a thousand
+/// times [`VELOCITY_ROUND_OFF`], the tolerance of the check itself).
+const RULED_OUT: f64 = 1e-6;
+
+/// Pivots of the elimination tree below this fraction of the largest diagonal entry of `W`
+/// (for a `2 × 2` block: its determinant below this fraction of its largest entry squared)
+/// hand the combinations below them to the exact solve unfiltered.
+const TREE_PIVOT: f64 = 1e-6;
+
+/// Multipliers of the elimination tree above this hand the combinations below them to the
+/// exact solve unfiltered.
+const TREE_GROWTH: f64 = 1e4;
+
+/// One contact's step of the elimination: its mode and what its back-substitution reads.
+#[derive(Debug, Clone, Copy)]
+struct Node {
+    mode: Mode,
+    /// Where the Schur complement the contact is eliminated from is kept.
+    slot: usize,
+    /// Stick: the inverse of the pivot block; slip or frictionless: `[[1/pivot, 0], [0, 0]]`.
+    inv: [[f64; 2]; 2],
+    /// Slip or frictionless: `p_t = ratio p_n`.
+    ratio: f64,
+    /// The largest impulse of the whole combination is at most `a + b |p_{0…c}|`.
+    a: f64,
+    b: f64,
+}
+
+/// The elimination tree: the contacts are eliminated in the order `K − 1, …, 0`, each in
+/// each of its modes, by block Gaussian elimination of the equations of that mode (the Schur
+/// complement `S` of what is eliminated stays the matrix of the contacts left, whatever
+/// their modes), so that each combination of modes is a leaf, reached in enumeration order
+/// (contact 0 fastest). At a leaf the impulses come out by back-substitution, contact 0
+/// first, each contact's conditions checked as soon as its impulse is known; a combination
+/// is ruled out only when a condition fails by [`RULED_OUT`] of an upper bound of its scale.
+/// The combinations not ruled out are solved exactly ([`solve_mode`]), so the solutions are
+/// those of the enumeration of every combination, to the last bit.
+struct Tree<'a, const N: usize> {
+    s: &'a Setup,
+    /// The largest diagonal entry of `W`.
+    wscale: f64,
+    /// `max_i |v⁻_i|` and `max_i Σ_j |W_ij|`: the velocity scale is at most
+    /// `vmax + wrow max |p|`.
+    vmax: f64,
+    wrow: f64,
+    digits: [usize; MAX_CONTACTS],
+    path: [Node; MAX_CONTACTS],
+    /// The Schur complements (slot `c`: the one computed when contact `c + 1` was
+    /// eliminated; slot `K − 1`: `W`) and their right-hand sides.
+    mats: [[[f64; N]; N]; MAX_CONTACTS],
+    rhs: [[f64; N]; MAX_CONTACTS],
+    found: Vec<Candidate>,
+}
+
+impl<'a, const N: usize> Tree<'a, N> {
+    /// The distinct solutions of the problem `s` (`2K = N`), in enumeration order.
+    fn run(s: &'a Setup) -> Vec<Candidate> {
+        let k = s.k;
+        debug_assert_eq!(2 * k, N);
+        let mut tree = Tree {
+            s,
+            wscale: 0.0,
+            vmax: 0.0,
+            wrow: 0.0,
+            digits: [0; MAX_CONTACTS],
+            path: [Node {
+                mode: Mode::Off,
+                slot: 0,
+                inv: [[0.0; 2]; 2],
+                ratio: 0.0,
+                a: 0.0,
+                b: 1.0,
+            }; MAX_CONTACTS],
+            mats: [[[0.0; N]; N]; MAX_CONTACTS],
+            rhs: [[0.0; N]; MAX_CONTACTS],
+            found: Vec::new(),
+        };
+        for i in 0..N {
+            tree.mats[k - 1][i].copy_from_slice(&s.w[i][..N]);
+            let target = if i % 2 == 0 { 0.0 } else { s.b[i / 2] };
+            tree.rhs[k - 1][i] = target - s.v[i];
+            tree.wscale = tree.wscale.max(s.w[i][i].abs());
+            tree.vmax = tree.vmax.max(s.v[i].abs());
+            tree.wrow = tree.wrow.max(s.w[i][..N].iter().map(|x| x.abs()).sum());
+        }
+        tree.branch(k - 1, k - 1, 0.0, 1.0, 0);
+        tree.found
+    }
+
+    /// Eliminate contact `c ≥ 1` in each of its modes from the Schur complement in `slot`
+    /// (the contacts `0 … c` left), the largest impulse bounded by `a + b |p_{0…c}|`,
+    /// `active` the contacts above `c` with an impulse.
+    #[allow(clippy::needless_range_loop)] // rows and columns of S indexed alike
+    fn branch(&mut self, c: usize, slot: usize, a: f64, b: f64, active: usize) {
+        if c == 0 {
+            return self.last(slot, a, b, active);
+        }
+        let (t, n) = (2 * c, 2 * c + 1);
+        let (s, wscale) = (self.s, self.wscale);
+        for (d, &mode) in choices(s, c).iter().enumerate() {
+            self.digits[c] = d;
+            let node = &mut self.path[c];
+            node.mode = mode;
+            node.slot = slot;
+            node.a = a;
+            node.b = b;
+            if mode == Mode::Off {
+                self.branch(c - 1, slot, a, b, active);
+                continue;
+            }
+            // Below the slot: the child's Schur complement (slot c − 1 < c ≤ slot is free).
+            let (lo, hi) = self.mats.split_at_mut(c);
+            let (sm, child) = (&hi[slot - c], &mut lo[c - 1]);
+            let (rlo, rhi) = self.rhs.split_at_mut(c);
+            let (rhs, r2) = (&rhi[slot - c], &mut rlo[c - 1]);
+            // |p_c| ≤ ac + bc |p_{0…c−1}|, and the multipliers' bound.
+            let (ac, bc);
+            let mut growth = 0.0f64;
+            if mode == Mode::Stick {
+                let (b00, b01, b10, b11) = (sm[t][t], sm[t][n], sm[n][t], sm[n][n]);
+                let m = b00.abs().max(b01.abs()).max(b10.abs()).max(b11.abs());
+                let det = b00 * b11 - b01 * b10;
+                if !(m > TREE_PIVOT * wscale && det.abs() > TREE_PIVOT * m * m) {
+                    self.unfiltered(c, active + 1);
+                    continue;
+                }
+                let inv = [[b11 / det, -b01 / det], [-b10 / det, b00 / det]];
+                node.inv = inv;
+                let ninv =
+                    (inv[0][0].abs() + inv[0][1].abs()).max(inv[1][0].abs() + inv[1][1].abs());
+                let (mut rt, mut rn) = (0.0, 0.0);
+                for i in 0..t {
+                    let l0 = sm[i][t] * inv[0][0] + sm[i][n] * inv[1][0];
+                    let l1 = sm[i][t] * inv[0][1] + sm[i][n] * inv[1][1];
+                    growth = growth.max(l0.abs()).max(l1.abs());
+                    for j in 0..t {
+                        child[i][j] = sm[i][j] - l0 * sm[t][j] - l1 * sm[n][j];
+                    }
+                    r2[i] = rhs[i] - l0 * rhs[t] - l1 * rhs[n];
+                    rt += sm[t][i].abs();
+                    rn += sm[n][i].abs();
+                }
+                ac = ninv * rhs[t].abs().max(rhs[n].abs());
+                bc = ninv * rt.max(rn);
+            } else {
+                let ratio = match mode {
+                    Mode::SlipPos => -s.mu[c],
+                    Mode::SlipNeg => s.mu[c],
+                    _ => 0.0,
+                };
+                let pivot = sm[n][t] * ratio + sm[n][n];
+                if !(pivot.abs() > TREE_PIVOT * wscale) {
+                    self.unfiltered(c, active + 1);
+                    continue;
+                }
+                let ip = 1.0 / pivot;
+                node.ratio = ratio;
+                node.inv[0][0] = ip;
+                let mut rn = 0.0;
+                for i in 0..t {
+                    let l = (sm[i][t] * ratio + sm[i][n]) * ip;
+                    growth = growth.max(l.abs());
+                    for j in 0..t {
+                        child[i][j] = sm[i][j] - l * sm[n][j];
+                    }
+                    r2[i] = rhs[i] - l * rhs[n];
+                    rn += sm[n][i].abs();
+                }
+                let f = ratio.abs().max(1.0) * ip.abs();
+                ac = f * rhs[n].abs();
+                bc = f * rn;
+            }
+            if !(growth <= TREE_GROWTH) {
+                self.unfiltered(c, active + 1);
+                continue;
+            }
+            self.branch(c - 1, c - 1, a + b * ac, b * bc.max(1.0), active + 1);
+        }
+    }
+
+    /// Contact 0 in each of its modes, from the `2 × 2` Schur complement in `slot`: its
+    /// impulse, its conditions, then the back-substitution of the others ([`Tree::rest`]).
+    fn last(&mut self, slot: usize, a: f64, b: f64, active: usize) {
+        let (s, wscale) = (self.s, self.wscale);
+        let sm = &self.mats[slot];
+        let (b00, b01, b10, b11) = (sm[0][0], sm[0][1], sm[1][0], sm[1][1]);
+        let (rt, rn) = (self.rhs[slot][0], self.rhs[slot][1]);
+        for (d, &mode) in choices(s, 0).iter().enumerate() {
+            self.digits[0] = d;
+            self.path[0].mode = mode;
+            let (pt, pn) = match mode {
+                Mode::Off => {
+                    // No impulse: v_n⁺ ≥ b needed (every contact off is no solution).
+                    if active == 0 || -rn < -RULED_OUT * (self.vmax + self.wrow * a) {
+                        continue;
+                    }
+                    (0.0, 0.0)
+                }
+                Mode::Stick => {
+                    let m = b00.abs().max(b01.abs()).max(b10.abs()).max(b11.abs());
+                    let det = b00 * b11 - b01 * b10;
+                    if !(m > TREE_PIVOT * wscale && det.abs() > TREE_PIVOT * m * m) {
+                        self.unfiltered(0, active + 1);
+                        continue;
+                    }
+                    let (pt, pn) = ((b11 * rt - b01 * rn) / det, (b00 * rn - b10 * rt) / det);
+                    let tolp = RULED_OUT * (a + b * pt.abs().max(pn.abs()));
+                    if -pn > tolp || pt.abs() - s.mu[0] * pn > tolp {
+                        continue;
+                    }
+                    (pt, pn)
+                }
+                _ => {
+                    let ratio = match mode {
+                        Mode::SlipPos => -s.mu[0],
+                        Mode::SlipNeg => s.mu[0],
+                        _ => 0.0,
+                    };
+                    let pivot = b10 * ratio + b11;
+                    if !(pivot.abs() > TREE_PIVOT * wscale) {
+                        self.unfiltered(0, active + 1);
+                        continue;
+                    }
+                    let pn = rn / pivot;
+                    let pt = ratio * pn;
+                    let pbound = a + b * pt.abs().max(pn.abs());
+                    if -pn > RULED_OUT * pbound {
+                        continue;
+                    }
+                    if mode != Mode::Free {
+                        let vt = b00 * pt + b01 * pn - rt;
+                        let tolv = RULED_OUT * (self.vmax + self.wrow * pbound);
+                        if (mode == Mode::SlipPos && vt < -tolv)
+                            || (mode == Mode::SlipNeg && vt > tolv)
+                        {
+                            continue;
+                        }
+                    }
+                    (pt, pn)
+                }
+            };
+            if self.rest(pt, pn) {
+                let mut modes = [Mode::Off; MAX_CONTACTS];
+                for j in 0..s.k {
+                    modes[j] = self.path[j].mode;
+                }
+                self.exact(&modes);
+            }
+        }
+    }
+
+    /// The back-substitution of the contacts `1 … K − 1` after contact 0's impulse, each
+    /// contact's conditions checked with the tolerance [`RULED_OUT`] of the bound of its
+    /// scale: whether none fails.
+    fn rest(&self, pt0: f64, pn0: f64) -> bool {
+        let s = self.s;
+        let mut p = [0.0; N];
+        p[0] = pt0;
+        p[1] = pn0;
+        let mut known = pt0.abs().max(pn0.abs());
+        for c in 1..s.k {
+            let nd = &self.path[c];
+            let (t, n) = (2 * c, 2 * c + 1);
+            let (sm, rhs) = (&self.mats[nd.slot], &self.rhs[nd.slot]);
+            let (mut xt, mut xn) = (0.0, 0.0);
+            for i in 0..t {
+                xt += sm[t][i] * p[i];
+                xn += sm[n][i] * p[i];
+            }
+            let (pt, pn) = match nd.mode {
+                Mode::Off => {
+                    let tolv = RULED_OUT * (self.vmax + self.wrow * (nd.a + nd.b * known));
+                    if xn - rhs[n] < -tolv {
+                        return false;
+                    }
+                    continue;
+                }
+                Mode::Stick => {
+                    let (ut, un) = (rhs[t] - xt, rhs[n] - xn);
+                    (
+                        nd.inv[0][0] * ut + nd.inv[0][1] * un,
+                        nd.inv[1][0] * ut + nd.inv[1][1] * un,
+                    )
+                }
+                _ => {
+                    let y = (rhs[n] - xn) * nd.inv[0][0];
+                    (nd.ratio * y, y)
+                }
+            };
+            p[t] = pt;
+            p[n] = pn;
+            known = known.max(pt.abs()).max(pn.abs());
+            let pbound = nd.a + nd.b * known;
+            let tolp = RULED_OUT * pbound;
+            if -pn > tolp {
+                return false;
+            }
+            let out = match nd.mode {
+                Mode::Stick => pt.abs() - s.mu[c] * pn > tolp,
+                Mode::SlipPos | Mode::SlipNeg => {
+                    let vt = xt + sm[t][t] * pt + sm[t][n] * pn - rhs[t];
+                    let tolv = RULED_OUT * (self.vmax + self.wrow * pbound);
+                    if nd.mode == Mode::SlipPos {
+                        vt < -tolv
+                    } else {
+                        vt > tolv
+                    }
+                }
+                _ => false,
+            };
+            if out {
+                return false;
+            }
+        }
+        true
+    }
+
+    /// Every combination below the current one at contact `c` (the contacts `0 … c − 1` in
+    /// each of their modes) to the exact solve, unfiltered; `active` the contacts `c …` with
+    /// an impulse.
+    fn unfiltered(&mut self, c: usize, active: usize) {
+        let s = self.s;
+        let mut modes = [Mode::Off; MAX_CONTACTS];
+        for j in c..s.k {
+            modes[j] = choices(s, j)[self.digits[j]];
+        }
+        let mut digits = [0usize; MAX_CONTACTS];
+        loop {
+            for j in 0..c {
+                modes[j] = choices(s, j)[digits[j]];
+            }
+            if active > 0 || modes[..c].iter().any(|m| *m != Mode::Off) {
+                self.exact(&modes);
+            }
+            let mut j = 0;
+            loop {
+                if j == c {
+                    return;
+                }
+                digits[j] += 1;
+                if digits[j] < choices(s, j).len() {
+                    break;
+                }
+                digits[j] = 0;
+                j += 1;
+            }
+        }
+    }
+
+    /// The exact solve of one combination, merged into the solutions if it is one.
+    fn exact(&mut self, modes: &[Mode; MAX_CONTACTS]) {
+        if let Some(cand) = solve_mode(self.s, modes) {
+            merge(&mut self.found, cand);
+        }
+    }
 }
 
 /// Solve the equations of one combination of modes; the candidate if it satisfies every
@@ -632,6 +1007,82 @@ mod tests {
             (y[0] - 1.0).abs() < 1e-15 && (y[1] - 1.0).abs() < 1e-15,
             "{y:?}"
         );
+    }
+
+    /// Random problems as the physics tests draw them: `W = J M⁻¹ Jᵀ` of random bodies
+    /// (singular when the contacts outnumber the degrees of freedom), `v = J u`, some
+    /// contacts frictionless, some plastic or elastic.
+    fn random_problem(rng: &mut crate::math::SplitMix64, k: usize) -> MultiProblem {
+        use nalgebra::{DMatrix, DVector};
+        loop {
+            let dof = match rng.next_u64() % 10 {
+                0..=2 => (k + 1 + (rng.next_u64() as usize) % (k - 1).max(1))
+                    .min(2 * k - 1)
+                    .max(2),
+                3 => 2 * k,
+                _ => 2 * k + (rng.next_u64() as usize) % 4,
+            };
+            let j = DMatrix::from_fn(2 * k, dof, |_, _| rng.range(-1.0, 1.0));
+            let minv =
+                DMatrix::from_diagonal(&DVector::from_fn(dof, |_, _| 1.0 / rng.decades(-1.5, 1.5)));
+            let u = DVector::from_fn(dof, |_, _| rng.range(-1.0, 1.0));
+            let w = &j * minv * j.transpose();
+            let v: Vec<f64> = (&j * u).iter().copied().collect();
+            let mu: Vec<f64> = (0..k)
+                .map(|_| match rng.next_u64() % 6 {
+                    0 => 0.0,
+                    1 => rng.range(1.0, 4.0),
+                    _ => rng.range(0.0, 1.5),
+                })
+                .collect();
+            let e: Vec<f64> = (0..k)
+                .map(|_| match rng.next_u64() % 10 {
+                    0 => 0.0,
+                    1 => 1.0,
+                    _ => rng.unit(),
+                })
+                .collect();
+            if let Ok(p) = MultiProblem::new(w, &v, &mu, &e) {
+                return p;
+            }
+        }
+    }
+
+    /// The elimination tree finds, to the last bit and in the same order, the solutions of
+    /// the enumeration of every combination of modes.
+    #[test]
+    fn tree_finds_what_the_full_enumeration_finds() {
+        let mut rng = crate::math::SplitMix64(0x7e11);
+        let mut several = 0;
+        for trial in 0..40_000 {
+            let k = match trial % 20 {
+                0 => 1,
+                1..=7 => 2,
+                8..=13 => 3,
+                14..=17 => 4,
+                18 => 5,
+                _ if trial % 100 == 19 => 6,
+                _ => 3,
+            };
+            let p = random_problem(&mut rng, k);
+            let s = setup(&p);
+            let (fast, all) = (enumerate(&s), enumerate_all(&s));
+            several += usize::from(all.len() > 1);
+            let same = fast.len() == all.len()
+                && fast.iter().zip(&all).all(|(a, b)| {
+                    a.modes == b.modes
+                        && a.p
+                            .iter()
+                            .zip(&b.p)
+                            .all(|(x, y)| x.to_bits() == y.to_bits())
+                        && a.v
+                            .iter()
+                            .zip(&b.v)
+                            .all(|(x, y)| x.to_bits() == y.to_bits())
+                });
+            assert!(same, "trial {trial}: {fast:?}\nvs {all:?}\non {p:?}");
+        }
+        assert!(several > 100, "{several}");
     }
 
     /// A full-rank system is solved exactly (a 3 × 3 with a known solution).
