@@ -263,12 +263,12 @@ fn setup(problem: &MultiProblem) -> Setup {
 /// tree of [`Tree`] does not rule out); keep the distinct solutions, in enumeration order.
 fn enumerate(s: &Setup) -> Vec<Candidate> {
     match s.k {
-        1 => Tree::<2>::run(s),
-        2 => Tree::<4>::run(s),
-        3 => Tree::<6>::run(s),
-        4 => Tree::<8>::run(s),
-        5 => Tree::<10>::run(s),
-        _ => Tree::<12>::run(s),
+        1 => Tree::<2, 2>::run(s),
+        2 => Tree::<4, 6>::run(s),
+        3 => Tree::<6, 12>::run(s),
+        4 => Tree::<8, 20>::run(s),
+        5 => Tree::<10, 30>::run(s),
+        _ => Tree::<12, 42>::run(s),
     }
 }
 
@@ -344,21 +344,6 @@ const TREE_PIVOT: f64 = 1e-6;
 /// exact solve unfiltered.
 const TREE_GROWTH: f64 = 1e4;
 
-/// One contact's step of the elimination: its mode and what its back-substitution reads.
-#[derive(Debug, Clone, Copy)]
-struct Node {
-    mode: Mode,
-    /// Where the Schur complement the contact is eliminated from is kept.
-    slot: usize,
-    /// Stick: the inverse of the pivot block; slip or frictionless: `[[1/pivot, 0], [0, 0]]`.
-    inv: [[f64; 2]; 2],
-    /// Slip or frictionless: `p_t = ratio p_n`.
-    ratio: f64,
-    /// The largest impulse of the whole combination is at most `a + b |p_{0…c}|`.
-    a: f64,
-    b: f64,
-}
-
 /// The elimination tree: the contacts are eliminated in the order `K − 1, …, 0`, each in
 /// each of its modes, by block Gaussian elimination of the equations of that mode (the Schur
 /// complement `S` of what is eliminated stays the matrix of the contacts left, whatever
@@ -368,7 +353,10 @@ struct Node {
 /// is ruled out only when a condition fails by [`RULED_OUT`] of an upper bound of its scale.
 /// The combinations not ruled out are solved exactly ([`solve_mode`]), so the solutions are
 /// those of the enumeration of every combination, to the last bit.
-struct Tree<'a, const N: usize> {
+///
+/// `N = 2K`; the Schur complements are kept in `R = K (K + 1)` rows: the one contact `c` is
+/// eliminated from (`2c + 2` rows and columns) in the slot at row `c (c + 1)`.
+struct Tree<'a, const N: usize, const R: usize> {
     s: &'a Setup,
     /// The largest diagonal entry of `W`.
     wscale: f64,
@@ -376,48 +364,79 @@ struct Tree<'a, const N: usize> {
     /// `vmax + wrow max |p|`.
     vmax: f64,
     wrow: f64,
-    digits: [usize; MAX_CONTACTS],
-    path: [Node; MAX_CONTACTS],
-    /// The Schur complements (slot `c`: the one computed when contact `c + 1` was
-    /// eliminated; slot `K − 1`: `W`) and their right-hand sides.
-    mats: [[[f64; N]; N]; MAX_CONTACTS],
+    /// Per contact: its mode, the slot of the Schur
+    /// complement it is eliminated from, its pivot's inverse (stick: the `2 × 2` block's;
+    /// slip or frictionless: `1/pivot` in `[0][0]`), `p_t = ratio p_n` in slip, and the
+    /// bound `a + b |p_{0…c}|` of the combination's largest impulse.
+    mode: [Mode; MAX_CONTACTS],
+    slot: [usize; MAX_CONTACTS],
+    inv: [[[f64; 2]; 2]; MAX_CONTACTS],
+    ratio: [f64; MAX_CONTACTS],
+    bound: [(f64, f64); MAX_CONTACTS],
+    /// The Schur complements and their right-hand sides (slot `K − 1`: `W`).
+    mats: [[f64; N]; R],
     rhs: [[f64; N]; MAX_CONTACTS],
     found: Vec<Candidate>,
 }
 
-impl<'a, const N: usize> Tree<'a, N> {
+/// `|x|` of a `2 × 2` matrix's rows, the larger (the ∞-norm).
+#[inline(always)]
+fn norm2(m: &[[f64; 2]; 2]) -> f64 {
+    larger(m[0][0].abs() + m[0][1].abs(), m[1][0].abs() + m[1][1].abs())
+}
+
+/// The larger of two numbers (`b` if either is NaN: every use below errs on the side of
+/// keeping a combination, whose exact solve then decides).
+#[inline(always)]
+fn larger(a: f64, b: f64) -> f64 {
+    if a > b {
+        a
+    } else {
+        b
+    }
+}
+
+impl<'a, const N: usize, const R: usize> Tree<'a, N, R> {
     /// The distinct solutions of the problem `s` (`2K = N`), in enumeration order.
     fn run(s: &'a Setup) -> Vec<Candidate> {
         let k = s.k;
-        debug_assert_eq!(2 * k, N);
+        debug_assert!(2 * k == N && k * (k + 1) == R);
         let mut tree = Tree {
             s,
             wscale: 0.0,
             vmax: 0.0,
             wrow: 0.0,
-            digits: [0; MAX_CONTACTS],
-            path: [Node {
-                mode: Mode::Off,
-                slot: 0,
-                inv: [[0.0; 2]; 2],
-                ratio: 0.0,
-                a: 0.0,
-                b: 1.0,
-            }; MAX_CONTACTS],
-            mats: [[[0.0; N]; N]; MAX_CONTACTS],
+            mode: [Mode::Off; MAX_CONTACTS],
+            slot: [0; MAX_CONTACTS],
+            inv: [[[0.0; 2]; 2]; MAX_CONTACTS],
+            ratio: [0.0; MAX_CONTACTS],
+            bound: [(0.0, 1.0); MAX_CONTACTS],
+            mats: [[0.0; N]; R],
             rhs: [[0.0; N]; MAX_CONTACTS],
             found: Vec::new(),
         };
+        let top = (k - 1) * k;
         for i in 0..N {
-            tree.mats[k - 1][i].copy_from_slice(&s.w[i][..N]);
+            tree.mats[top + i].copy_from_slice(&s.w[i][..N]);
             let target = if i % 2 == 0 { 0.0 } else { s.b[i / 2] };
             tree.rhs[k - 1][i] = target - s.v[i];
-            tree.wscale = tree.wscale.max(s.w[i][i].abs());
-            tree.vmax = tree.vmax.max(s.v[i].abs());
-            tree.wrow = tree.wrow.max(s.w[i][..N].iter().map(|x| x.abs()).sum());
+            tree.wscale = larger(tree.wscale, s.w[i][i].abs());
+            tree.vmax = larger(tree.vmax, s.v[i].abs());
+            tree.wrow = larger(tree.wrow, s.w[i][..N].iter().map(|x| x.abs()).sum());
         }
         tree.branch(k - 1, k - 1, 0.0, 1.0, 0);
         tree.found
+    }
+
+    /// Whether a `2 × 2` pivot block is usable: its largest entry above [`TREE_PIVOT`] of
+    /// `W`'s, its determinant above [`TREE_PIVOT`] of that entry squared.
+    #[inline(always)]
+    fn usable(&self, b: [f64; 4], det: f64) -> bool {
+        let m = larger(
+            larger(b[0].abs(), b[1].abs()),
+            larger(b[2].abs(), b[3].abs()),
+        );
+        m > TREE_PIVOT * self.wscale && det.abs() > TREE_PIVOT * m * m
     }
 
     /// Eliminate contact `c ≥ 1` in each of its modes from the Schur complement in `slot`
@@ -429,43 +448,39 @@ impl<'a, const N: usize> Tree<'a, N> {
             return self.last(slot, a, b, active);
         }
         let (t, n) = (2 * c, 2 * c + 1);
-        let (s, wscale) = (self.s, self.wscale);
-        for (d, &mode) in choices(s, c).iter().enumerate() {
-            self.digits[c] = d;
-            let node = &mut self.path[c];
-            node.mode = mode;
-            node.slot = slot;
-            node.a = a;
-            node.b = b;
+        let s = self.s;
+        // The parent in rows from `top`, the child in rows from `below` (< top).
+        let (top, below) = (slot * (slot + 1), (c - 1) * c);
+        for &mode in choices(s, c) {
+            self.mode[c] = mode;
+            self.slot[c] = slot;
+            self.bound[c] = (a, b);
             if mode == Mode::Off {
                 self.branch(c - 1, slot, a, b, active);
                 continue;
             }
-            // Below the slot: the child's Schur complement (slot c − 1 < c ≤ slot is free).
-            let (lo, hi) = self.mats.split_at_mut(c);
-            let (sm, child) = (&hi[slot - c], &mut lo[c - 1]);
+            let (lo, hi) = self.mats.split_at_mut(top);
+            let (sm, child) = (&hi[..n + 1], &mut lo[below..below + t]);
             let (rlo, rhi) = self.rhs.split_at_mut(c);
             let (rhs, r2) = (&rhi[slot - c], &mut rlo[c - 1]);
-            // |p_c| ≤ ac + bc |p_{0…c−1}|, and the multipliers' bound.
+            // |p_c| ≤ ac + bc |p_{0…c−1}|; the multipliers within TREE_GROWTH.
             let (ac, bc);
-            let mut growth = 0.0f64;
+            let mut fine = true;
             if mode == Mode::Stick {
                 let (b00, b01, b10, b11) = (sm[t][t], sm[t][n], sm[n][t], sm[n][n]);
-                let m = b00.abs().max(b01.abs()).max(b10.abs()).max(b11.abs());
                 let det = b00 * b11 - b01 * b10;
-                if !(m > TREE_PIVOT * wscale && det.abs() > TREE_PIVOT * m * m) {
+                let m = larger(larger(b00.abs(), b01.abs()), larger(b10.abs(), b11.abs()));
+                if !(m > TREE_PIVOT * self.wscale && det.abs() > TREE_PIVOT * m * m) {
                     self.unfiltered(c, active + 1);
                     continue;
                 }
                 let inv = [[b11 / det, -b01 / det], [-b10 / det, b00 / det]];
-                node.inv = inv;
-                let ninv =
-                    (inv[0][0].abs() + inv[0][1].abs()).max(inv[1][0].abs() + inv[1][1].abs());
+                self.inv[c] = inv;
                 let (mut rt, mut rn) = (0.0, 0.0);
                 for i in 0..t {
                     let l0 = sm[i][t] * inv[0][0] + sm[i][n] * inv[1][0];
                     let l1 = sm[i][t] * inv[0][1] + sm[i][n] * inv[1][1];
-                    growth = growth.max(l0.abs()).max(l1.abs());
+                    fine &= l0.abs() <= TREE_GROWTH && l1.abs() <= TREE_GROWTH;
                     for j in 0..t {
                         child[i][j] = sm[i][j] - l0 * sm[t][j] - l1 * sm[n][j];
                     }
@@ -473,8 +488,9 @@ impl<'a, const N: usize> Tree<'a, N> {
                     rt += sm[t][i].abs();
                     rn += sm[n][i].abs();
                 }
-                ac = ninv * rhs[t].abs().max(rhs[n].abs());
-                bc = ninv * rt.max(rn);
+                let ninv = norm2(&inv);
+                ac = ninv * larger(rhs[t].abs(), rhs[n].abs());
+                bc = ninv * larger(rt, rn);
             } else {
                 let ratio = match mode {
                     Mode::SlipPos => -s.mu[c],
@@ -482,81 +498,81 @@ impl<'a, const N: usize> Tree<'a, N> {
                     _ => 0.0,
                 };
                 let pivot = sm[n][t] * ratio + sm[n][n];
-                if !(pivot.abs() > TREE_PIVOT * wscale) {
+                if !(pivot.abs() > TREE_PIVOT * self.wscale) {
                     self.unfiltered(c, active + 1);
                     continue;
                 }
                 let ip = 1.0 / pivot;
-                node.ratio = ratio;
-                node.inv[0][0] = ip;
+                self.ratio[c] = ratio;
+                self.inv[c][0][0] = ip;
                 let mut rn = 0.0;
                 for i in 0..t {
                     let l = (sm[i][t] * ratio + sm[i][n]) * ip;
-                    growth = growth.max(l.abs());
+                    fine &= l.abs() <= TREE_GROWTH;
                     for j in 0..t {
                         child[i][j] = sm[i][j] - l * sm[n][j];
                     }
                     r2[i] = rhs[i] - l * rhs[n];
                     rn += sm[n][i].abs();
                 }
-                let f = ratio.abs().max(1.0) * ip.abs();
+                let f = larger(ratio.abs(), 1.0) * ip.abs();
                 ac = f * rhs[n].abs();
                 bc = f * rn;
             }
-            if !(growth <= TREE_GROWTH) {
+            if !fine {
                 self.unfiltered(c, active + 1);
                 continue;
             }
-            self.branch(c - 1, c - 1, a + b * ac, b * bc.max(1.0), active + 1);
+            self.branch(c - 1, c - 1, a + b * ac, b * larger(bc, 1.0), active + 1);
         }
     }
 
     /// Contact 0 in each of its modes, from the `2 × 2` Schur complement in `slot`: its
     /// impulse, its conditions, then the back-substitution of the others ([`Tree::rest`]).
     fn last(&mut self, slot: usize, a: f64, b: f64, active: usize) {
-        let (s, wscale) = (self.s, self.wscale);
-        let sm = &self.mats[slot];
-        let (b00, b01, b10, b11) = (sm[0][0], sm[0][1], sm[1][0], sm[1][1]);
+        let s = self.s;
+        let top = slot * (slot + 1);
+        let (b00, b01) = (self.mats[top][0], self.mats[top][1]);
+        let (b10, b11) = (self.mats[top + 1][0], self.mats[top + 1][1]);
         let (rt, rn) = (self.rhs[slot][0], self.rhs[slot][1]);
-        for (d, &mode) in choices(s, 0).iter().enumerate() {
-            self.digits[0] = d;
-            self.path[0].mode = mode;
+        let mu = s.mu[0];
+        for &mode in choices(s, 0) {
+            self.mode[0] = mode;
             let (pt, pn) = match mode {
                 Mode::Off => {
                     // No impulse: v_n⁺ ≥ b needed (every contact off is no solution).
-                    if active == 0 || -rn < -RULED_OUT * (self.vmax + self.wrow * a) {
+                    if active == 0 || rn > RULED_OUT * (self.vmax + self.wrow * a) {
                         continue;
                     }
                     (0.0, 0.0)
                 }
                 Mode::Stick => {
-                    let m = b00.abs().max(b01.abs()).max(b10.abs()).max(b11.abs());
                     let det = b00 * b11 - b01 * b10;
-                    if !(m > TREE_PIVOT * wscale && det.abs() > TREE_PIVOT * m * m) {
+                    if !self.usable([b00, b01, b10, b11], det) {
                         self.unfiltered(0, active + 1);
                         continue;
                     }
                     let (pt, pn) = ((b11 * rt - b01 * rn) / det, (b00 * rn - b10 * rt) / det);
-                    let tolp = RULED_OUT * (a + b * pt.abs().max(pn.abs()));
-                    if -pn > tolp || pt.abs() - s.mu[0] * pn > tolp {
+                    let tolp = RULED_OUT * (a + b * larger(pt.abs(), pn.abs()));
+                    if -pn > tolp || pt.abs() - mu * pn > tolp {
                         continue;
                     }
                     (pt, pn)
                 }
                 _ => {
                     let ratio = match mode {
-                        Mode::SlipPos => -s.mu[0],
-                        Mode::SlipNeg => s.mu[0],
+                        Mode::SlipPos => -mu,
+                        Mode::SlipNeg => mu,
                         _ => 0.0,
                     };
                     let pivot = b10 * ratio + b11;
-                    if !(pivot.abs() > TREE_PIVOT * wscale) {
+                    if !(pivot.abs() > TREE_PIVOT * self.wscale) {
                         self.unfiltered(0, active + 1);
                         continue;
                     }
                     let pn = rn / pivot;
                     let pt = ratio * pn;
-                    let pbound = a + b * pt.abs().max(pn.abs());
+                    let pbound = a + b * larger(pt.abs(), pn.abs());
                     if -pn > RULED_OUT * pbound {
                         continue;
                     }
@@ -573,10 +589,7 @@ impl<'a, const N: usize> Tree<'a, N> {
                 }
             };
             if self.rest(pt, pn) {
-                let mut modes = [Mode::Off; MAX_CONTACTS];
-                for j in 0..s.k {
-                    modes[j] = self.path[j].mode;
-                }
+                let modes = self.mode;
                 self.exact(&modes);
             }
         }
@@ -590,50 +603,54 @@ impl<'a, const N: usize> Tree<'a, N> {
         let mut p = [0.0; N];
         p[0] = pt0;
         p[1] = pn0;
-        let mut known = pt0.abs().max(pn0.abs());
+        let mut known = larger(pt0.abs(), pn0.abs());
         for c in 1..s.k {
-            let nd = &self.path[c];
             let (t, n) = (2 * c, 2 * c + 1);
-            let (sm, rhs) = (&self.mats[nd.slot], &self.rhs[nd.slot]);
+            let slot = self.slot[c];
+            let top = slot * (slot + 1);
+            let (row_t, row_n) = (&self.mats[top + t], &self.mats[top + n]);
+            let rhs = &self.rhs[slot];
             let (mut xt, mut xn) = (0.0, 0.0);
             for i in 0..t {
-                xt += sm[t][i] * p[i];
-                xn += sm[n][i] * p[i];
+                xt += row_t[i] * p[i];
+                xn += row_n[i] * p[i];
             }
-            let (pt, pn) = match nd.mode {
+            let (a, b) = self.bound[c];
+            let mode = self.mode[c];
+            let (pt, pn) = match mode {
                 Mode::Off => {
-                    let tolv = RULED_OUT * (self.vmax + self.wrow * (nd.a + nd.b * known));
-                    if xn - rhs[n] < -tolv {
+                    if xn - rhs[n] < -RULED_OUT * (self.vmax + self.wrow * (a + b * known)) {
                         return false;
                     }
                     continue;
                 }
                 Mode::Stick => {
+                    let inv = &self.inv[c];
                     let (ut, un) = (rhs[t] - xt, rhs[n] - xn);
                     (
-                        nd.inv[0][0] * ut + nd.inv[0][1] * un,
-                        nd.inv[1][0] * ut + nd.inv[1][1] * un,
+                        inv[0][0] * ut + inv[0][1] * un,
+                        inv[1][0] * ut + inv[1][1] * un,
                     )
                 }
                 _ => {
-                    let y = (rhs[n] - xn) * nd.inv[0][0];
-                    (nd.ratio * y, y)
+                    let y = (rhs[n] - xn) * self.inv[c][0][0];
+                    (self.ratio[c] * y, y)
                 }
             };
             p[t] = pt;
             p[n] = pn;
-            known = known.max(pt.abs()).max(pn.abs());
-            let pbound = nd.a + nd.b * known;
+            known = larger(known, larger(pt.abs(), pn.abs()));
+            let pbound = a + b * known;
             let tolp = RULED_OUT * pbound;
             if -pn > tolp {
                 return false;
             }
-            let out = match nd.mode {
+            let out = match mode {
                 Mode::Stick => pt.abs() - s.mu[c] * pn > tolp,
                 Mode::SlipPos | Mode::SlipNeg => {
-                    let vt = xt + sm[t][t] * pt + sm[t][n] * pn - rhs[t];
+                    let vt = xt + row_t[t] * pt + row_t[n] * pn - rhs[t];
                     let tolv = RULED_OUT * (self.vmax + self.wrow * pbound);
-                    if nd.mode == Mode::SlipPos {
+                    if mode == Mode::SlipPos {
                         vt < -tolv
                     } else {
                         vt > tolv
@@ -653,10 +670,7 @@ impl<'a, const N: usize> Tree<'a, N> {
     /// an impulse.
     fn unfiltered(&mut self, c: usize, active: usize) {
         let s = self.s;
-        let mut modes = [Mode::Off; MAX_CONTACTS];
-        for j in c..s.k {
-            modes[j] = choices(s, j)[self.digits[j]];
-        }
+        let mut modes = self.mode;
         let mut digits = [0usize; MAX_CONTACTS];
         loop {
             for j in 0..c {
