@@ -295,7 +295,7 @@ fn enumerate_all(s: &Setup) -> Vec<Candidate> {
         }
         // Every contact off leaves an approaching contact approaching: never a solution.
         if modes[..k].iter().any(|m| *m != Mode::Off) {
-            if let Some(c) = solve_mode(s, &modes) {
+            if let Some(c) = solve_mode::<DIM>(s, &modes) {
                 merge(&mut found, c);
             }
         }
@@ -696,7 +696,7 @@ impl<'a, const N: usize, const R: usize> Tree<'a, N, R> {
 
     /// The exact solve of one combination, merged into the solutions if it is one.
     fn exact(&mut self, modes: &[Mode; MAX_CONTACTS]) {
-        if let Some(cand) = solve_mode(self.s, modes) {
+        if let Some(cand) = solve_mode::<N>(self.s, modes) {
             merge(&mut self.found, cand);
         }
     }
@@ -705,14 +705,14 @@ impl<'a, const N: usize, const R: usize> Tree<'a, N, R> {
 /// Solve the equations of one combination of modes; the candidate if it satisfies every
 /// condition to round-off.
 #[allow(clippy::needless_range_loop)] // j and i index the contacts and the rows of W alike
-fn solve_mode(s: &Setup, modes: &[Mode; MAX_CONTACTS]) -> Option<Candidate> {
+fn solve_mode<const N: usize>(s: &Setup, modes: &[Mode; MAX_CONTACTS]) -> Option<Candidate> {
     let k = s.k;
     // Unknowns: a stick contact has (p_t, p_n), a slip (or frictionless) contact p_n with
     // p_t = ratio p_n, written as y (ratio, 1)/|(ratio, 1)| so that |y| is |p_j|.
-    let mut contact = [0usize; DIM];
-    let mut ct = [0.0; DIM];
-    let mut cn = [0.0; DIM];
-    let mut rows = [0usize; DIM];
+    let mut contact = [0usize; N];
+    let mut ct = [0.0; N];
+    let mut cn = [0.0; N];
+    let mut rows = [0usize; N];
     let mut n = 0;
     let mut m = 0;
     for j in 0..k {
@@ -744,8 +744,8 @@ fn solve_mode(s: &Setup, modes: &[Mode; MAX_CONTACTS]) -> Option<Candidate> {
         m += 1;
     }
     debug_assert_eq!(n, m);
-    let mut a = [[0.0; DIM]; DIM];
-    let mut r = [0.0; DIM];
+    let mut a = [[0.0; N]; N];
+    let mut r = [0.0; N];
     for (row, &i) in rows.iter().enumerate().take(n) {
         for c in 0..n {
             let j = contact[c];
@@ -754,8 +754,8 @@ fn solve_mode(s: &Setup, modes: &[Mode; MAX_CONTACTS]) -> Option<Candidate> {
         let target = if i.is_multiple_of(2) { 0.0 } else { s.b[i / 2] };
         r[row] = target - s.v[i];
     }
-    let mut y = [0.0; DIM];
-    least_norm(&mut a, &mut r, n, &mut y);
+    let mut y = [0.0; N];
+    least_norm_n(&mut a, &mut r, n, &mut y);
     let mut p = [0.0; DIM];
     for c in 0..n {
         let j = contact[c];
@@ -875,14 +875,25 @@ fn tidy(s: &Setup, c: &Candidate) -> LcpSolution {
 /// `ρ < n`), and the `n − ρ` free unknowns are chosen to minimise `|y|` (with
 /// `y₁ = U₁₁⁻¹ (c₁ − U₁₂ y₂)`: `(GᵀG + I) y₂ = Gᵀ a₀`, `G = U₁₁⁻¹ U₁₂`, `a₀ = U₁₁⁻¹ c₁`). The
 /// equations left out are checked by the caller (through the velocities after).
-#[allow(clippy::needless_range_loop)] // the indices of the triangular factors, as written
 pub(crate) fn least_norm(
     a: &mut [[f64; DIM]; DIM],
     r: &mut [f64; DIM],
     n: usize,
     y: &mut [f64; DIM],
 ) {
-    let mut col = [0usize; DIM];
+    least_norm_n(a, r, n, y);
+}
+
+/// [`least_norm`] on arrays of any size `D ≥ n` (the same operations in the same order:
+/// the same numbers).
+#[allow(clippy::needless_range_loop)] // the indices of the triangular factors, as written
+fn least_norm_n<const D: usize>(
+    a: &mut [[f64; D]; D],
+    r: &mut [f64; D],
+    n: usize,
+    y: &mut [f64; D],
+) {
+    let mut col = [0usize; D];
     for (i, c) in col.iter_mut().enumerate() {
         *c = i;
     }
@@ -930,7 +941,7 @@ pub(crate) fn least_norm(
         rank += 1;
     }
     // Back substitution with U₁₁ (rank × rank) for a right-hand side.
-    let back = |rhs: &mut [f64; DIM], a: &[[f64; DIM]; DIM]| {
+    let back = |rhs: &mut [f64; D], a: &[[f64; D]; D]| {
         for i in (0..rank).rev() {
             let mut x = rhs[i];
             for j in i + 1..rank {
@@ -939,7 +950,7 @@ pub(crate) fn least_norm(
             rhs[i] = x / a[i][i];
         }
     };
-    let mut yp = [0.0; DIM];
+    let mut yp = [0.0; D];
     let mut a0 = *r;
     back(&mut a0, a);
     if rank == n {
@@ -947,9 +958,9 @@ pub(crate) fn least_norm(
     } else {
         let d = n - rank;
         // G = U₁₁⁻¹ U₁₂, one column per free unknown.
-        let mut g = [[0.0; DIM]; DIM];
+        let mut g = [[0.0; D]; D];
         for c in 0..d {
-            let mut col_c = [0.0; DIM];
+            let mut col_c = [0.0; D];
             for i in 0..rank {
                 col_c[i] = a[i][rank + c];
             }
@@ -959,8 +970,8 @@ pub(crate) fn least_norm(
             }
         }
         // (GᵀG + I) z = Gᵀ a₀ by Cholesky (the matrix is ≥ I).
-        let mut m = [[0.0; DIM]; DIM];
-        let mut h = [0.0; DIM];
+        let mut m = [[0.0; D]; D];
+        let mut h = [0.0; D];
         for p in 0..d {
             for q in 0..=p {
                 let mut x: f64 = (0..rank).map(|i| g[i][p] * g[i][q]).sum();
@@ -981,7 +992,7 @@ pub(crate) fn least_norm(
                 h[p] -= x * h[q];
             }
         }
-        let mut z = [0.0; DIM];
+        let mut z = [0.0; D];
         for p in (0..d).rev() {
             let mut x = h[p];
             for q in p + 1..d {

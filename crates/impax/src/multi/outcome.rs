@@ -265,38 +265,44 @@ pub fn is_energy_gain(
     v_after: &[Vec2],
 ) -> bool {
     let (u, w, v, _) = problem.canonical();
-    let scaled =
-        |x: &[Vec2], f: &dyn Fn(f64) -> f64| -> Vec<Vec2> { x.iter().map(|y| y.map(f)).collect() };
-    let p = scaled(p, &|x| x * u.a / u.b);
-    let va = scaled(v_after, &|x| x * u.a);
-    energy_gain(w, v, energy_change * u.a * u.a / u.b, &p, &va)
+    energy_gain(
+        w,
+        v,
+        energy_change * u.a * u.a / u.b,
+        |j| p[j].map(|x| x * u.a / u.b),
+        |j| v_after[j].map(|x| x * u.a),
+    )
 }
 
-/// [`is_energy_gain`] in the canonical units.
+/// [`is_energy_gain`] in the canonical units, with contact `j`'s impulse `p(j)` and velocity
+/// after `v_after(j)`.
 fn energy_gain(
     w: &DMatrix<f64>,
     v: &DVector<f64>,
     energy_change: f64,
-    p: &[Vec2],
-    v_after: &[Vec2],
+    p: impl Fn(usize) -> Vec2,
+    v_after: impl Fn(usize) -> Vec2,
 ) -> bool {
     if energy_change <= 0.0 {
         return false;
     }
     let n = v.len();
-    let flat = |i: usize, x: &[Vec2]| {
-        if i.is_multiple_of(2) {
-            x[i / 2].x
-        } else {
-            x[i / 2].y
-        }
-    };
     let mut scale = 0.0;
     for i in 0..n {
-        let wp: f64 = (0..n).map(|k| w[(i, k)].abs() * flat(k, p).abs()).sum();
-        scale += (v[i].abs() + flat(i, v_after).abs() + wp) * flat(i, p).abs();
+        let wp: f64 = (0..n).map(|k| w[(i, k)].abs() * flat(k, &p).abs()).sum();
+        scale += (v[i].abs() + flat(i, &v_after).abs() + wp) * flat(i, &p).abs();
     }
     energy_change > ENERGY_GAIN_ROUND_OFF * scale
+}
+
+/// Component `i` of the contact-major vector whose contact `j` is `x(j)`.
+#[inline(always)]
+fn flat(i: usize, x: &impl Fn(usize) -> Vec2) -> f64 {
+    if i.is_multiple_of(2) {
+        x(i / 2).x
+    } else {
+        x(i / 2).y
+    }
 }
 
 /// The relative round-off below which a negative normal velocity after is not "approaching"
@@ -304,15 +310,22 @@ fn energy_gain(
 /// conditions of [`super::lcp`].
 pub const VELOCITY_ROUND_OFF: f64 = 1e-9;
 
-/// `max_i (|v⁻_i| + (|W| |p|)_i)`: the scale of the velocities of an impact.
-pub(crate) fn velocity_scale(w: &DMatrix<f64>, v: &DVector<f64>, p: &[Vec2]) -> f64 {
+/// `max_i (|v⁻_i| + (|W| |p|)_i)`: the scale of the velocities of an impact (`p(j)` contact
+/// `j`'s impulse, `k` contacts).
+pub(crate) fn velocity_scale(
+    w: &DMatrix<f64>,
+    v: &DVector<f64>,
+    k: usize,
+    p: impl Fn(usize) -> Vec2,
+) -> f64 {
     let n = v.len();
     (0..n)
         .map(|i| {
             v[i].abs()
-                + (0..p.len())
+                + (0..k)
                     .map(|j| {
-                        w[(i, 2 * j)].abs() * p[j].x.abs() + w[(i, 2 * j + 1)].abs() * p[j].y.abs()
+                        let pj = p(j);
+                        w[(i, 2 * j)].abs() * pj.x.abs() + w[(i, 2 * j + 1)].abs() * pj.y.abs()
                     })
                     .sum::<f64>()
         })
@@ -363,11 +376,14 @@ pub(crate) fn assemble_ending(
                 + (v[2 * j + 1] + c.velocity_after.y) * c.impulse.y)
         })
         .sum();
-    let p: Vec<Vec2> = contacts.iter().map(|c| c.impulse).collect();
-    let va: Vec<Vec2> = contacts.iter().map(|c| c.velocity_after).collect();
+    let p = |j: usize| contacts[j].impulse;
+    let va = |j: usize| contacts[j].velocity_after;
     let inconsistency = inconsistency.or_else(|| {
-        let tol = VELOCITY_ROUND_OFF * velocity_scale(w, v, &p);
-        let least = va.iter().map(|x| x.y).fold(f64::INFINITY, f64::min);
+        let tol = VELOCITY_ROUND_OFF * velocity_scale(w, v, contacts.len(), p);
+        let least = contacts
+            .iter()
+            .map(|c| c.velocity_after.y)
+            .fold(f64::INFINITY, f64::min);
         (least < -tol).then_some(Inconsistency::StillApproaching {
             normal_velocity: least,
         })
@@ -379,7 +395,7 @@ pub(crate) fn assemble_ending(
             energy_change - 2.0 * (energy_change - works).abs()
         }
     };
-    let verdict = if energy_gain(w, v, established, &p, &va) {
+    let verdict = if energy_gain(w, v, established, p, va) {
         Verdict::EnergyGained
     } else if inconsistency.is_some() {
         Verdict::InconsistentAssumption
