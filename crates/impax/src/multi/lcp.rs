@@ -78,7 +78,7 @@
 
 use super::outcome::{
     assemble, ContactPhaseKind, ContactResult, LcpSolution, MultiDetail, MultiResolution,
-    VELOCITY_ROUND_OFF,
+    PerContact, VELOCITY_ROUND_OFF,
 };
 use super::MultiProblem;
 use crate::law::{Breakdown, BreakdownReason, Inconsistency, LawId, WorkSplit};
@@ -122,6 +122,62 @@ struct Candidate {
     v: [f64; DIM],
     vscale: f64,
     norm: f64,
+}
+
+/// The distinct solutions found so far, in order: the first [`Found::INLINE`] on the stack.
+struct Found {
+    n: usize,
+    first: [Candidate; Found::INLINE],
+    more: Vec<Candidate>,
+}
+
+impl Found {
+    /// How many are kept on the stack.
+    const INLINE: usize = 4;
+
+    fn new() -> Self {
+        let empty = Candidate {
+            modes: [Mode::Off; MAX_CONTACTS],
+            p: [0.0; DIM],
+            v: [0.0; DIM],
+            vscale: 0.0,
+            norm: 0.0,
+        };
+        Found {
+            n: 0,
+            first: [empty; Found::INLINE],
+            more: Vec::new(),
+        }
+    }
+
+    fn len(&self) -> usize {
+        self.n
+    }
+
+    fn is_empty(&self) -> bool {
+        self.n == 0
+    }
+
+    fn iter(&self) -> impl Iterator<Item = &Candidate> {
+        self.first[..self.n.min(Found::INLINE)]
+            .iter()
+            .chain(&self.more)
+    }
+
+    fn iter_mut(&mut self) -> impl Iterator<Item = &mut Candidate> {
+        self.first[..self.n.min(Found::INLINE)]
+            .iter_mut()
+            .chain(&mut self.more)
+    }
+
+    fn push(&mut self, c: Candidate) {
+        if self.n < Found::INLINE {
+            self.first[self.n] = c;
+        } else {
+            self.more.push(c);
+        }
+        self.n += 1;
+    }
 }
 
 /// The problem in the canonical units, on the stack.
@@ -177,7 +233,8 @@ pub fn resolve(problem: &MultiProblem) -> MultiResolution {
             reason: BreakdownReason::NoSolution,
         });
     }
-    let mut all: Vec<LcpSolution> = found.iter().map(|c| tidy(&setup, c)).collect();
+    let mut all: Vec<LcpSolution> = Vec::with_capacity(found.len());
+    all.extend(found.iter().map(|c| tidy(&setup, c)));
     // Least kinetic energy after first (stable: ties keep the enumeration's order).
     all.sort_by(|a, b| a.energy_change.total_cmp(&b.energy_change));
     let best = &all[0];
@@ -261,7 +318,7 @@ fn setup(problem: &MultiProblem) -> Setup {
 
 /// Solve every combination of modes that may satisfy the conditions (those the elimination
 /// tree of [`Tree`] does not rule out); keep the distinct solutions, in enumeration order.
-fn enumerate(s: &Setup) -> Vec<Candidate> {
+fn enumerate(s: &Setup) -> Found {
     match s.k {
         1 => Tree::<2, 2>::run(s),
         2 => Tree::<4, 6>::run(s),
@@ -284,11 +341,11 @@ fn choices(s: &Setup, j: usize) -> &'static [Mode] {
 /// Solve every combination of modes (contact 0 fastest); keep the distinct solutions, in
 /// enumeration order: the definition that [`enumerate`] reproduces.
 #[cfg(test)]
-fn enumerate_all(s: &Setup) -> Vec<Candidate> {
+fn enumerate_all(s: &Setup) -> Found {
     let k = s.k;
     let mut digits = [0usize; MAX_CONTACTS];
     let mut modes = [Mode::Off; MAX_CONTACTS];
-    let mut found: Vec<Candidate> = Vec::new();
+    let mut found = Found::new();
     loop {
         for j in 0..k {
             modes[j] = choices(s, j)[digits[j]];
@@ -317,7 +374,7 @@ fn enumerate_all(s: &Setup) -> Vec<Candidate> {
 
 /// Add `c` to the distinct solutions: if one has the same velocities, keep the one of smaller
 /// impulse norm (the earlier on a tie).
-fn merge(found: &mut Vec<Candidate>, c: Candidate) {
+fn merge(found: &mut Found, c: Candidate) {
     for e in found.iter_mut() {
         let tol = SAME * e.vscale.max(c.vscale);
         if e.v.iter().zip(&c.v).all(|(a, b)| (a - b).abs() <= tol) {
@@ -376,7 +433,7 @@ struct Tree<'a, const N: usize, const R: usize> {
     /// The Schur complements and their right-hand sides (slot `K − 1`: `W`).
     mats: [[f64; N]; R],
     rhs: [[f64; N]; MAX_CONTACTS],
-    found: Vec<Candidate>,
+    found: Found,
 }
 
 /// `|x|` of a `2 × 2` matrix's rows, the larger (the ∞-norm).
@@ -398,7 +455,7 @@ fn larger(a: f64, b: f64) -> f64 {
 
 impl<'a, const N: usize, const R: usize> Tree<'a, N, R> {
     /// The distinct solutions of the problem `s` (`2K = N`), in enumeration order.
-    fn run(s: &'a Setup) -> Vec<Candidate> {
+    fn run(s: &'a Setup) -> Found {
         let k = s.k;
         debug_assert!(2 * k == N && k * (k + 1) == R);
         let mut tree = Tree {
@@ -413,7 +470,7 @@ impl<'a, const N: usize, const R: usize> Tree<'a, N, R> {
             bound: [(0.0, 1.0); MAX_CONTACTS],
             mats: [[0.0; N]; R],
             rhs: [[0.0; N]; MAX_CONTACTS],
-            found: Vec::new(),
+            found: Found::new(),
         };
         let top = (k - 1) * k;
         for i in 0..N {
@@ -824,9 +881,9 @@ fn solve_mode<const N: usize>(s: &Setup, modes: &[Mode; MAX_CONTACTS]) -> Option
 /// (`v_n⁺ = b` with an impulse, `v_t⁺ = 0` in stick), and `ΔT`.
 fn tidy(s: &Setup, c: &Candidate) -> LcpSolution {
     let k = s.k;
-    let mut regimes = Vec::with_capacity(k);
-    let mut impulses = Vec::with_capacity(k);
-    let mut velocities = Vec::with_capacity(k);
+    let mut regimes = PerContact::filled(k, ContactPhaseKind::Off);
+    let mut impulses = PerContact::filled(k, Vec2::zeros());
+    let mut velocities = PerContact::filled(k, Vec2::zeros());
     let mut energy = 0.0;
     for j in 0..k {
         let mu = s.mu[j];
@@ -858,9 +915,9 @@ fn tidy(s: &Setup, c: &Candidate) -> LcpSolution {
             }
         };
         energy += 0.5 * ((s.v[2 * j] + vt) * pt + (s.v[2 * j + 1] + vn) * pn);
-        regimes.push(regime);
-        impulses.push(Vec2::new(pt, pn));
-        velocities.push(Vec2::new(vt, vn));
+        regimes[j] = regime;
+        impulses[j] = Vec2::new(pt, pn);
+        velocities[j] = Vec2::new(vt, vn);
     }
     LcpSolution {
         regimes,
@@ -1094,7 +1151,7 @@ mod tests {
             let (fast, all) = (enumerate(&s), enumerate_all(&s));
             several += usize::from(all.len() > 1);
             let same = fast.len() == all.len()
-                && fast.iter().zip(&all).all(|(a, b)| {
+                && fast.iter().zip(all.iter()).all(|(a, b)| {
                     a.modes == b.modes
                         && a.p
                             .iter()
@@ -1105,6 +1162,7 @@ mod tests {
                             .zip(&b.v)
                             .all(|(x, y)| x.to_bits() == y.to_bits())
                 });
+            let (fast, all): (Vec<_>, Vec<_>) = (fast.iter().collect(), all.iter().collect());
             assert!(same, "trial {trial}: {fast:?}\nvs {all:?}\non {p:?}");
         }
         assert!(several > 100, "{several}");

@@ -98,14 +98,83 @@ impl ContactResult {
 pub struct LcpSolution {
     /// Each contact's regime: `off`, `stick`, `slip+` or `slip-` (`slip±`/`no-slip` by the
     /// slip after at a frictionless contact).
-    pub regimes: Vec<ContactPhaseKind>,
+    pub regimes: PerContact<ContactPhaseKind>,
     /// The impulses, one per contact (module docs of [`super::lcp`] for the choice when `W` is
     /// singular).
-    pub impulses: Vec<Vec2>,
+    pub impulses: PerContact<Vec2>,
     /// The contact velocities after, one per contact.
-    pub velocities_after: Vec<Vec2>,
+    pub velocities_after: PerContact<Vec2>,
     /// `ΔT = ½ Σ_j (v_j⁻ + v_j⁺)·p_j`.
     pub energy_change: f64,
+}
+
+/// One value per contact of an [`LcpSolution`], held in place (no allocation; at most
+/// [`super::lcp::MAX_CONTACTS`] contacts): a slice, by dereference.
+///
+/// ```
+/// use impax::multi::{lcp, MultiProblem};
+/// let p = MultiProblem::from_upper(1, &[3.5, 0.0, 1.0], &[0.5, -0.866], &[0.4], &[0.7]).unwrap();
+/// let s = &lcp::solutions(&p)[0];
+/// assert_eq!(s.impulses.len(), 1);
+/// let all: &[impax::math::Vec2] = &s.impulses;
+/// assert_eq!(all[0], s.impulses[0]);
+/// ```
+#[derive(Clone, Copy)]
+pub struct PerContact<T: Copy> {
+    len: usize,
+    items: [T; super::lcp::MAX_CONTACTS],
+}
+
+impl<T: Copy> PerContact<T> {
+    /// `len` copies of `value` (`len ≤` [`super::lcp::MAX_CONTACTS`]).
+    pub(crate) fn filled(len: usize, value: T) -> Self {
+        assert!(len <= super::lcp::MAX_CONTACTS);
+        Self {
+            len,
+            items: [value; super::lcp::MAX_CONTACTS],
+        }
+    }
+}
+
+impl<T: Copy> std::ops::Deref for PerContact<T> {
+    type Target = [T];
+    fn deref(&self) -> &[T] {
+        &self.items[..self.len]
+    }
+}
+
+impl<T: Copy> std::ops::DerefMut for PerContact<T> {
+    fn deref_mut(&mut self) -> &mut [T] {
+        &mut self.items[..self.len]
+    }
+}
+
+impl<'a, T: Copy> IntoIterator for &'a PerContact<T> {
+    type Item = &'a T;
+    type IntoIter = std::slice::Iter<'a, T>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.iter()
+    }
+}
+
+impl<'a, T: Copy> IntoIterator for &'a mut PerContact<T> {
+    type Item = &'a mut T;
+    type IntoIter = std::slice::IterMut<'a, T>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.iter_mut()
+    }
+}
+
+impl<T: Copy + fmt::Debug> fmt::Debug for PerContact<T> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_list().entries(self.iter()).finish()
+    }
+}
+
+impl<T: Copy + PartialEq> PartialEq for PerContact<T> {
+    fn eq(&self, other: &Self) -> bool {
+        **self == **other
+    }
 }
 
 /// One binary impact of [`super::sequential`]: a contact resolved alone by `energetic`.
