@@ -499,156 +499,178 @@ impl<'a, const N: usize, const R: usize> Tree<'a, N, R> {
     /// Eliminate contact `c ≥ 1` in each of its modes from the Schur complement in `slot`
     /// (the contacts `0 … c` left), the largest impulse bounded by `a + b |p_{0…c}|`,
     /// `active` the contacts above `c` with an impulse.
-    #[allow(clippy::needless_range_loop)] // rows and columns of S indexed alike
     fn branch(&mut self, c: usize, slot: usize, a: f64, b: f64, active: usize) {
         if c == 0 {
             return self.last(slot, a, b, active);
         }
-        let (t, n) = (2 * c, 2 * c + 1);
-        let s = self.s;
-        // The parent in rows from `top`, the child in rows from `below` (< top).
-        let (top, below) = (slot * (slot + 1), (c - 1) * c);
-        for &mode in choices(s, c) {
+        self.slot[c] = slot;
+        self.bound[c] = (a, b);
+        self.mode[c] = Mode::Off;
+        self.branch(c - 1, slot, a, b, active);
+        let mu = self.s.mu[c];
+        let modes: &[(Mode, f64)] = if mu > 0.0 {
+            &[
+                (Mode::Stick, 0.0),
+                (Mode::SlipPos, -1.0),
+                (Mode::SlipNeg, 1.0),
+            ]
+        } else {
+            &[(Mode::Free, 0.0)]
+        };
+        for &(mode, sign) in modes {
             self.mode[c] = mode;
-            self.slot[c] = slot;
-            self.bound[c] = (a, b);
-            if mode == Mode::Off {
-                self.branch(c - 1, slot, a, b, active);
-                continue;
-            }
-            let (lo, hi) = self.mats.split_at_mut(top);
-            let (sm, child) = (&hi[..n + 1], &mut lo[below..below + t]);
-            let (rlo, rhi) = self.rhs.split_at_mut(c);
-            let (rhs, r2) = (&rhi[slot - c], &mut rlo[c - 1]);
-            // |p_c| ≤ ac + bc |p_{0…c−1}|; the multipliers within TREE_GROWTH.
-            let (ac, bc);
-            let mut fine = true;
-            if mode == Mode::Stick {
-                let (b00, b01, b10, b11) = (sm[t][t], sm[t][n], sm[n][t], sm[n][n]);
-                let det = b00 * b11 - b01 * b10;
-                let m = larger(larger(b00.abs(), b01.abs()), larger(b10.abs(), b11.abs()));
-                if !(m > TREE_PIVOT * self.wscale && det.abs() > TREE_PIVOT * m * m) {
-                    self.unfiltered(c, active + 1);
-                    continue;
-                }
-                let inv = [[b11 / det, -b01 / det], [-b10 / det, b00 / det]];
-                self.inv[c] = inv;
-                let (mut rt, mut rn) = (0.0, 0.0);
-                for i in 0..t {
-                    let l0 = sm[i][t] * inv[0][0] + sm[i][n] * inv[1][0];
-                    let l1 = sm[i][t] * inv[0][1] + sm[i][n] * inv[1][1];
-                    fine &= l0.abs() <= TREE_GROWTH && l1.abs() <= TREE_GROWTH;
-                    for j in 0..t {
-                        child[i][j] = sm[i][j] - l0 * sm[t][j] - l1 * sm[n][j];
-                    }
-                    r2[i] = rhs[i] - l0 * rhs[t] - l1 * rhs[n];
-                    rt += sm[t][i].abs();
-                    rn += sm[n][i].abs();
-                }
-                let ninv = norm2(&inv);
-                ac = ninv * larger(rhs[t].abs(), rhs[n].abs());
-                bc = ninv * larger(rt, rn);
+            let bounds = if mode == Mode::Stick {
+                self.eliminate_stick(c, slot)
             } else {
-                let ratio = match mode {
-                    Mode::SlipPos => -s.mu[c],
-                    Mode::SlipNeg => s.mu[c],
-                    _ => 0.0,
-                };
-                let pivot = sm[n][t] * ratio + sm[n][n];
-                if !(pivot.abs() > TREE_PIVOT * self.wscale) {
-                    self.unfiltered(c, active + 1);
-                    continue;
+                self.eliminate_slip(c, slot, sign * mu)
+            };
+            match bounds {
+                Some((ac, bc)) => {
+                    self.branch(c - 1, c - 1, a + b * ac, b * larger(bc, 1.0), active + 1)
                 }
-                let ip = 1.0 / pivot;
-                self.ratio[c] = ratio;
-                self.inv[c][0][0] = ip;
-                let mut rn = 0.0;
-                for i in 0..t {
-                    let l = (sm[i][t] * ratio + sm[i][n]) * ip;
-                    fine &= l.abs() <= TREE_GROWTH;
-                    for j in 0..t {
-                        child[i][j] = sm[i][j] - l * sm[n][j];
-                    }
-                    r2[i] = rhs[i] - l * rhs[n];
-                    rn += sm[n][i].abs();
-                }
-                let f = larger(ratio.abs(), 1.0) * ip.abs();
-                ac = f * rhs[n].abs();
-                bc = f * rn;
+                None => self.unfiltered(c, active + 1),
             }
-            if !fine {
-                self.unfiltered(c, active + 1);
-                continue;
-            }
-            self.branch(c - 1, c - 1, a + b * ac, b * larger(bc, 1.0), active + 1);
         }
+    }
+
+    /// Contact `c ≥ 1` sticking: the Schur complement of its two equations from the one in
+    /// `slot` into slot `c − 1`, and `(ac, bc)` with `|p_c| ≤ ac + bc |p_{0…c−1}|`; `None`
+    /// if the pivot block or the multipliers are out of bounds.
+    #[allow(clippy::needless_range_loop)] // rows and columns of S indexed alike
+    fn eliminate_stick(&mut self, c: usize, slot: usize) -> Option<(f64, f64)> {
+        let (t, n) = (2 * c, 2 * c + 1);
+        let (top, below) = (slot * (slot + 1), (c - 1) * c);
+        let (lo, hi) = self.mats.split_at_mut(top);
+        let (sm, child) = (&hi[..n + 1], &mut lo[below..below + t]);
+        let (rlo, rhi) = self.rhs.split_at_mut(c);
+        let (rhs, r2) = (&rhi[slot - c], &mut rlo[c - 1]);
+        let (b00, b01, b10, b11) = (sm[t][t], sm[t][n], sm[n][t], sm[n][n]);
+        let det = b00 * b11 - b01 * b10;
+        let m = larger(larger(b00.abs(), b01.abs()), larger(b10.abs(), b11.abs()));
+        if !(m > TREE_PIVOT * self.wscale && det.abs() > TREE_PIVOT * m * m) {
+            return None;
+        }
+        let inv = [[b11 / det, -b01 / det], [-b10 / det, b00 / det]];
+        self.inv[c] = inv;
+        let (mut rt, mut rn) = (0.0, 0.0);
+        let mut fine = true;
+        for i in 0..t {
+            let l0 = sm[i][t] * inv[0][0] + sm[i][n] * inv[1][0];
+            let l1 = sm[i][t] * inv[0][1] + sm[i][n] * inv[1][1];
+            fine &= l0.abs() <= TREE_GROWTH && l1.abs() <= TREE_GROWTH;
+            for j in 0..t {
+                child[i][j] = sm[i][j] - l0 * sm[t][j] - l1 * sm[n][j];
+            }
+            r2[i] = rhs[i] - l0 * rhs[t] - l1 * rhs[n];
+            rt += sm[t][i].abs();
+            rn += sm[n][i].abs();
+        }
+        let ninv = norm2(&inv);
+        fine.then(|| {
+            (
+                ninv * larger(rhs[t].abs(), rhs[n].abs()),
+                ninv * larger(rt, rn),
+            )
+        })
+    }
+
+    /// Contact `c ≥ 1` slipping with `p_t = ratio p_n` (frictionless: `ratio = 0`): as
+    /// [`Tree::eliminate_stick`] for its normal equation.
+    #[allow(clippy::needless_range_loop)] // rows and columns of S indexed alike
+    fn eliminate_slip(&mut self, c: usize, slot: usize, ratio: f64) -> Option<(f64, f64)> {
+        let (t, n) = (2 * c, 2 * c + 1);
+        let (top, below) = (slot * (slot + 1), (c - 1) * c);
+        let (lo, hi) = self.mats.split_at_mut(top);
+        let (sm, child) = (&hi[..n + 1], &mut lo[below..below + t]);
+        let (rlo, rhi) = self.rhs.split_at_mut(c);
+        let (rhs, r2) = (&rhi[slot - c], &mut rlo[c - 1]);
+        let pivot = sm[n][t] * ratio + sm[n][n];
+        if !(pivot.abs() > TREE_PIVOT * self.wscale) {
+            return None;
+        }
+        let ip = 1.0 / pivot;
+        self.ratio[c] = ratio;
+        self.inv[c][0][0] = ip;
+        let mut rn = 0.0;
+        let mut fine = true;
+        for i in 0..t {
+            let l = (sm[i][t] * ratio + sm[i][n]) * ip;
+            fine &= l.abs() <= TREE_GROWTH;
+            for j in 0..t {
+                child[i][j] = sm[i][j] - l * sm[n][j];
+            }
+            r2[i] = rhs[i] - l * rhs[n];
+            rn += sm[n][i].abs();
+        }
+        let f = larger(ratio.abs(), 1.0) * ip.abs();
+        fine.then(|| (f * rhs[n].abs(), f * rn))
     }
 
     /// Contact 0 in each of its modes, from the `2 × 2` Schur complement in `slot`: its
     /// impulse, its conditions, then the back-substitution of the others ([`Tree::rest`]).
     fn last(&mut self, slot: usize, a: f64, b: f64, active: usize) {
-        let s = self.s;
         let top = slot * (slot + 1);
         let (b00, b01) = (self.mats[top][0], self.mats[top][1]);
         let (b10, b11) = (self.mats[top + 1][0], self.mats[top + 1][1]);
         let (rt, rn) = (self.rhs[slot][0], self.rhs[slot][1]);
-        let mu = s.mu[0];
-        for &mode in choices(s, 0) {
-            self.mode[0] = mode;
-            let (pt, pn) = match mode {
-                Mode::Off => {
-                    // No impulse: v_n⁺ ≥ b needed (every contact off is no solution).
-                    if active == 0 || rn > RULED_OUT * (self.vmax + self.wrow * a) {
-                        continue;
-                    }
-                    (0.0, 0.0)
+        let mu = self.s.mu[0];
+        // Off: no impulse, v_n⁺ ≥ b needed (every contact off is no solution).
+        if active > 0 && !(rn > RULED_OUT * (self.vmax + self.wrow * a)) {
+            self.leaf(Mode::Off, 0.0, 0.0);
+        }
+        let wscale = self.wscale;
+        if mu > 0.0 {
+            // Stick.
+            let det = b00 * b11 - b01 * b10;
+            if !self.usable([b00, b01, b10, b11], det) {
+                self.mode[0] = Mode::Stick;
+                self.unfiltered(0, active + 1);
+            } else {
+                let (pt, pn) = ((b11 * rt - b01 * rn) / det, (b00 * rn - b10 * rt) / det);
+                let tolp = RULED_OUT * (a + b * larger(pt.abs(), pn.abs()));
+                if !(-pn > tolp || pt.abs() - mu * pn > tolp) {
+                    self.leaf(Mode::Stick, pt, pn);
                 }
-                Mode::Stick => {
-                    let det = b00 * b11 - b01 * b10;
-                    if !self.usable([b00, b01, b10, b11], det) {
-                        self.unfiltered(0, active + 1);
-                        continue;
-                    }
-                    let (pt, pn) = ((b11 * rt - b01 * rn) / det, (b00 * rn - b10 * rt) / det);
-                    let tolp = RULED_OUT * (a + b * larger(pt.abs(), pn.abs()));
-                    if -pn > tolp || pt.abs() - mu * pn > tolp {
-                        continue;
-                    }
-                    (pt, pn)
-                }
-                _ => {
-                    let ratio = match mode {
-                        Mode::SlipPos => -mu,
-                        Mode::SlipNeg => mu,
-                        _ => 0.0,
-                    };
-                    let pivot = b10 * ratio + b11;
-                    if !(pivot.abs() > TREE_PIVOT * self.wscale) {
-                        self.unfiltered(0, active + 1);
-                        continue;
-                    }
-                    let pn = rn / pivot;
-                    let pt = ratio * pn;
-                    let pbound = a + b * larger(pt.abs(), pn.abs());
-                    if -pn > RULED_OUT * pbound {
-                        continue;
-                    }
-                    if mode != Mode::Free {
-                        let vt = b00 * pt + b01 * pn - rt;
-                        let tolv = RULED_OUT * (self.vmax + self.wrow * pbound);
-                        if (mode == Mode::SlipPos && vt < -tolv)
-                            || (mode == Mode::SlipNeg && vt > tolv)
-                        {
-                            continue;
-                        }
-                    }
-                    (pt, pn)
-                }
-            };
-            if self.rest(pt, pn) {
-                let modes = self.mode;
-                self.exact(&modes);
             }
+        }
+        // Slip (frictionless: no friction).
+        let slips: &[(Mode, f64)] = if mu > 0.0 {
+            &[(Mode::SlipPos, -1.0), (Mode::SlipNeg, 1.0)]
+        } else {
+            &[(Mode::Free, 0.0)]
+        };
+        for &(mode, sign) in slips {
+            let ratio = sign * mu;
+            let pivot = b10 * ratio + b11;
+            if !(pivot.abs() > TREE_PIVOT * wscale) {
+                self.mode[0] = mode;
+                self.unfiltered(0, active + 1);
+                continue;
+            }
+            let pn = rn / pivot;
+            let pt = ratio * pn;
+            let pbound = a + b * larger(pt.abs(), pn.abs());
+            if -pn > RULED_OUT * pbound {
+                continue;
+            }
+            if mode != Mode::Free {
+                let vt = b00 * pt + b01 * pn - rt;
+                let tolv = RULED_OUT * (self.vmax + self.wrow * pbound);
+                if sign * vt > tolv {
+                    continue;
+                }
+            }
+            self.leaf(mode, pt, pn);
+        }
+    }
+
+    /// Contact 0 in `mode` with the impulse `(pt, pn)`, its own conditions met: the exact
+    /// solve if the back-substitution rules nothing out.
+    fn leaf(&mut self, mode: Mode, pt: f64, pn: f64) {
+        self.mode[0] = mode;
+        if self.rest(pt, pn) {
+            let modes = self.mode;
+            self.exact(&modes);
         }
     }
 
