@@ -78,7 +78,7 @@
 
 use super::outcome::{
     assemble, ContactPhaseKind, ContactResult, LcpSolution, MultiDetail, MultiResolution,
-    PerContact, VELOCITY_ROUND_OFF,
+    PerContact, Phases, VELOCITY_ROUND_OFF,
 };
 use super::MultiProblem;
 use crate::law::{Breakdown, BreakdownReason, Inconsistency, LawId, WorkSplit};
@@ -245,10 +245,10 @@ pub fn resolve(problem: &MultiProblem) -> MultiResolution {
             ContactResult {
                 impulse: p,
                 velocity_after: va,
-                phases: vec![super::ContactPhase {
+                phases: Phases::one(super::ContactPhase {
                     kind: best.regimes[j],
                     ends_at: p.y,
-                }],
+                }),
                 work: straight_work(vb, va, p),
             }
         })

@@ -54,7 +54,7 @@ mod system;
 
 pub use outcome::{
     is_energy_gain, BinaryImpact, ContactPhase, ContactPhaseKind, ContactResult, LcpSolution,
-    LzbPrimary, MultiDetail, MultiOutcome, MultiResolution, PerContact, VELOCITY_ROUND_OFF,
+    LzbPrimary, MultiDetail, MultiOutcome, MultiResolution, PerContact, Phases, VELOCITY_ROUND_OFF,
 };
 pub use problem::{MultiProblem, HERTZ_EXPONENT, RANGE_TOL, RANK_TOL};
 pub use scenarios::MultiScenario;

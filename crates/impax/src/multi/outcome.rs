@@ -68,13 +68,125 @@ pub struct ContactResult {
     /// The regimes in order (`lcp`: one; `sequential`: those of every binary impact at this
     /// contact, one `off` if it had none; `lzb`: the tangential regimes while the contact
     /// carries a force, `off` between two engagements, one `off` if it never engaged).
-    pub phases: Vec<ContactPhase>,
+    pub phases: Phases,
     /// The work done at this contact, `∫ v_n dp_n` split at the end of its compression, and
     /// `∫ v_t dp_t`, along the law's path (`lcp`: the straight path `s p`, `0 ≤ s ≤ 1`, of all
     /// the impulses together; `sequential`: the binary impacts'; `lzb`: its integrated path,
     /// the normal work split by the sign of `v_n`). The contacts' works sum to `ΔT` (`lzb`: to
     /// the integration's tolerance).
     pub work: WorkSplit,
+}
+
+/// The phases of one contact ([`ContactResult::phases`]), in order: a slice, by
+/// dereference; the first two held in place (no allocation), more on the heap.
+///
+/// ```
+/// use impax::multi::{lcp, MultiProblem};
+/// let p = MultiProblem::from_upper(1, &[3.5, 0.0, 1.0], &[0.5, -0.866], &[0.4], &[0.7]).unwrap();
+/// let out = lcp::resolve(&p).unwrap();
+/// let phases = &out.contacts[0].phases;
+/// assert_eq!(phases.len(), 1);
+/// for ph in phases {
+///     assert!(ph.ends_at > 0.0);
+/// }
+/// ```
+#[derive(Clone)]
+pub struct Phases {
+    /// How many are in `first` (while `more` is empty).
+    len: usize,
+    first: [ContactPhase; 2],
+    /// Every phase, once there are more than two.
+    more: Vec<ContactPhase>,
+}
+
+impl Phases {
+    /// No phase.
+    pub fn new() -> Self {
+        let none = ContactPhase {
+            kind: ContactPhaseKind::Off,
+            ends_at: 0.0,
+        };
+        Phases {
+            len: 0,
+            first: [none; 2],
+            more: Vec::new(),
+        }
+    }
+
+    /// One phase.
+    pub fn one(phase: ContactPhase) -> Self {
+        let mut out = Phases::new();
+        out.push(phase);
+        out
+    }
+
+    /// Append a phase.
+    pub fn push(&mut self, phase: ContactPhase) {
+        if self.more.is_empty() {
+            if self.len < self.first.len() {
+                self.first[self.len] = phase;
+                self.len += 1;
+                return;
+            }
+            self.more.extend_from_slice(&self.first[..self.len]);
+        }
+        self.more.push(phase);
+    }
+}
+
+impl Default for Phases {
+    fn default() -> Self {
+        Phases::new()
+    }
+}
+
+impl std::ops::Deref for Phases {
+    type Target = [ContactPhase];
+    fn deref(&self) -> &[ContactPhase] {
+        if self.more.is_empty() {
+            &self.first[..self.len]
+        } else {
+            &self.more
+        }
+    }
+}
+
+impl std::ops::DerefMut for Phases {
+    fn deref_mut(&mut self) -> &mut [ContactPhase] {
+        if self.more.is_empty() {
+            &mut self.first[..self.len]
+        } else {
+            &mut self.more
+        }
+    }
+}
+
+impl<'a> IntoIterator for &'a Phases {
+    type Item = &'a ContactPhase;
+    type IntoIter = std::slice::Iter<'a, ContactPhase>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.iter()
+    }
+}
+
+impl<'a> IntoIterator for &'a mut Phases {
+    type Item = &'a mut ContactPhase;
+    type IntoIter = std::slice::IterMut<'a, ContactPhase>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.iter_mut()
+    }
+}
+
+impl fmt::Debug for Phases {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_list().entries(self.iter()).finish()
+    }
+}
+
+impl PartialEq for Phases {
+    fn eq(&self, other: &Self) -> bool {
+        **self == **other
+    }
 }
 
 impl ContactResult {
@@ -271,7 +383,7 @@ impl MultiOutcome {
 
     /// Whether every number of the outcome, its detail included, is finite.
     pub fn is_finite(&self) -> bool {
-        let finite = |v: &Vec2| v.iter().all(|x| x.is_finite());
+        let finite = |v: &Vec2| v.x.is_finite() && v.y.is_finite();
         let detail = match &self.detail {
             MultiDetail::Lcp { solutions } => solutions.iter().all(|s| {
                 s.energy_change.is_finite()
@@ -300,7 +412,7 @@ impl MultiOutcome {
         let mut contact = ContactResult {
             impulse: o.impulse,
             velocity_after: o.velocity_after,
-            phases: Vec::new(),
+            phases: Phases::new(),
             work: o.work,
         };
         for p in o.phases.as_slice() {
@@ -448,14 +560,15 @@ pub(crate) fn assemble_ending(
     let p = |j: usize| contacts[j].impulse;
     let va = |j: usize| contacts[j].velocity_after;
     let inconsistency = inconsistency.or_else(|| {
-        let tol = VELOCITY_ROUND_OFF * velocity_scale(w, v, contacts.len(), p);
         let least = contacts
             .iter()
             .map(|c| c.velocity_after.y)
             .fold(f64::INFINITY, f64::min);
-        (least < -tol).then_some(Inconsistency::StillApproaching {
-            normal_velocity: least,
-        })
+        // (The scale only when a contact approaches at all: a tolerance is never negative.)
+        (least < 0.0 && least < -VELOCITY_ROUND_OFF * velocity_scale(w, v, contacts.len(), p))
+            .then_some(Inconsistency::StillApproaching {
+                normal_velocity: least,
+            })
     });
     let established = match ending {
         Ending::Exact => energy_change,

@@ -328,7 +328,7 @@ impl<'a> Path<'a> {
                 result: ContactResult {
                     impulse: Vec2::zeros(),
                     velocity_after: Vec2::zeros(),
-                    phases: Vec::new(),
+                    phases: crate::multi::Phases::new(),
                     work: WorkSplit::default(),
                 },
                 engaged: modes.active(j),
