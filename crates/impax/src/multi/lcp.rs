@@ -116,36 +116,36 @@ const FRICTIONLESS: [Mode; 2] = [Mode::Off, Mode::Free];
 
 /// An accepted solution of one combination of modes, in the canonical units.
 #[derive(Debug, Clone, Copy)]
-struct Candidate {
+struct Candidate<const N: usize> {
     modes: [Mode; MAX_CONTACTS],
-    p: [f64; DIM],
-    v: [f64; DIM],
+    p: [f64; N],
+    v: [f64; N],
     vscale: f64,
     norm: f64,
 }
 
-/// The distinct solutions found so far, in order: the first [`Found::INLINE`] on the stack.
-struct Found {
+/// The distinct solutions found so far, in order: the first [`INLINE`] on the stack.
+struct Found<const N: usize> {
     n: usize,
-    first: [Candidate; Found::INLINE],
-    more: Vec<Candidate>,
+    first: [Candidate<N>; INLINE],
+    more: Vec<Candidate<N>>,
 }
 
-impl Found {
-    /// How many are kept on the stack.
-    const INLINE: usize = 4;
+/// How many solutions [`Found`] keeps on the stack.
+const INLINE: usize = 4;
 
+impl<const N: usize> Found<N> {
     fn new() -> Self {
         let empty = Candidate {
             modes: [Mode::Off; MAX_CONTACTS],
-            p: [0.0; DIM],
-            v: [0.0; DIM],
+            p: [0.0; N],
+            v: [0.0; N],
             vscale: 0.0,
             norm: 0.0,
         };
         Found {
             n: 0,
-            first: [empty; Found::INLINE],
+            first: [empty; INLINE],
             more: Vec::new(),
         }
     }
@@ -158,20 +158,18 @@ impl Found {
         self.n == 0
     }
 
-    fn iter(&self) -> impl Iterator<Item = &Candidate> {
-        self.first[..self.n.min(Found::INLINE)]
-            .iter()
-            .chain(&self.more)
+    fn iter(&self) -> impl Iterator<Item = &Candidate<N>> {
+        self.first[..self.n.min(INLINE)].iter().chain(&self.more)
     }
 
-    fn iter_mut(&mut self) -> impl Iterator<Item = &mut Candidate> {
-        self.first[..self.n.min(Found::INLINE)]
+    fn iter_mut(&mut self) -> impl Iterator<Item = &mut Candidate<N>> {
+        self.first[..self.n.min(INLINE)]
             .iter_mut()
             .chain(&mut self.more)
     }
 
-    fn push(&mut self, c: Candidate) {
-        if self.n < Found::INLINE {
+    fn push(&mut self, c: Candidate<N>) {
+        if self.n < INLINE {
             self.first[self.n] = c;
         } else {
             self.more.push(c);
@@ -180,11 +178,11 @@ impl Found {
     }
 }
 
-/// The problem in the canonical units, on the stack.
-struct Setup {
+/// The problem in the canonical units, on the stack (`N ≥ 2K`).
+struct Setup<const N: usize> {
     k: usize,
-    w: [[f64; DIM]; DIM],
-    v: [f64; DIM],
+    w: [[f64; N]; N],
+    v: [f64; N],
     b: [f64; MAX_CONTACTS],
     mu: [f64; MAX_CONTACTS],
 }
@@ -225,8 +223,23 @@ pub fn resolve(problem: &MultiProblem) -> MultiResolution {
             },
         });
     }
-    let setup = setup(problem);
-    let found = enumerate(&setup);
+    match k {
+        1 => solve::<2, 2>(problem),
+        2 => solve::<4, 6>(problem),
+        3 => solve::<6, 12>(problem),
+        4 => solve::<8, 20>(problem),
+        5 => solve::<10, 30>(problem),
+        _ => solve::<12, 42>(problem),
+    }
+}
+
+/// [`resolve`] with `N = 2K` and `R = K (K + 1)` ([`Tree`]).
+fn solve<const N: usize, const R: usize>(problem: &MultiProblem) -> MultiResolution {
+    let law = LawId::Lcp;
+    let k = problem.contacts();
+    let setup = setup::<N>(problem);
+    let mut found = Found::new();
+    Tree::<N, R>::run(&setup, &mut found);
     if found.is_empty() {
         return Err(Breakdown {
             law,
@@ -293,13 +306,13 @@ fn straight_work(before: Vec2, after: Vec2, p: Vec2) -> WorkSplit {
 }
 
 /// The problem's canonical numbers on the stack, with Newton's targets.
-fn setup(problem: &MultiProblem) -> Setup {
+fn setup<const N: usize>(problem: &MultiProblem) -> Setup<N> {
     let (_, w, v, _) = problem.canonical();
     let k = problem.contacts();
     let mut s = Setup {
         k,
-        w: [[0.0; DIM]; DIM],
-        v: [0.0; DIM],
+        w: [[0.0; N]; N],
+        v: [0.0; N],
         b: [0.0; MAX_CONTACTS],
         mu: [0.0; MAX_CONTACTS],
     };
@@ -316,21 +329,8 @@ fn setup(problem: &MultiProblem) -> Setup {
     s
 }
 
-/// Solve every combination of modes that may satisfy the conditions (those the elimination
-/// tree of [`Tree`] does not rule out); keep the distinct solutions, in enumeration order.
-fn enumerate(s: &Setup) -> Found {
-    match s.k {
-        1 => Tree::<2, 2>::run(s),
-        2 => Tree::<4, 6>::run(s),
-        3 => Tree::<6, 12>::run(s),
-        4 => Tree::<8, 20>::run(s),
-        5 => Tree::<10, 30>::run(s),
-        _ => Tree::<12, 42>::run(s),
-    }
-}
-
 /// The modes contact `j` can be in.
-fn choices(s: &Setup, j: usize) -> &'static [Mode] {
+fn choices<const N: usize>(s: &Setup<N>, j: usize) -> &'static [Mode] {
     if s.mu[j] > 0.0 {
         &WITH_FRICTION
     } else {
@@ -339,9 +339,9 @@ fn choices(s: &Setup, j: usize) -> &'static [Mode] {
 }
 
 /// Solve every combination of modes (contact 0 fastest); keep the distinct solutions, in
-/// enumeration order: the definition that [`enumerate`] reproduces.
+/// enumeration order: the definition that [`Tree`] reproduces.
 #[cfg(test)]
-fn enumerate_all(s: &Setup) -> Found {
+fn enumerate_all<const N: usize>(s: &Setup<N>) -> Found<N> {
     let k = s.k;
     let mut digits = [0usize; MAX_CONTACTS];
     let mut modes = [Mode::Off; MAX_CONTACTS];
@@ -352,7 +352,7 @@ fn enumerate_all(s: &Setup) -> Found {
         }
         // Every contact off leaves an approaching contact approaching: never a solution.
         if modes[..k].iter().any(|m| *m != Mode::Off) {
-            if let Some(c) = solve_mode::<DIM>(s, &modes) {
+            if let Some(c) = solve_mode(s, &modes) {
                 merge(&mut found, c);
             }
         }
@@ -374,7 +374,7 @@ fn enumerate_all(s: &Setup) -> Found {
 
 /// Add `c` to the distinct solutions: if one has the same velocities, keep the one of smaller
 /// impulse norm (the earlier on a tie).
-fn merge(found: &mut Found, c: Candidate) {
+fn merge<const N: usize>(found: &mut Found<N>, c: Candidate<N>) {
     for e in found.iter_mut() {
         let tol = SAME * e.vscale.max(c.vscale);
         if e.v.iter().zip(&c.v).all(|(a, b)| (a - b).abs() <= tol) {
@@ -414,7 +414,7 @@ const TREE_GROWTH: f64 = 1e4;
 /// `N = 2K`; the Schur complements are kept in `R = K (K + 1)` rows: the one contact `c` is
 /// eliminated from (`2c + 2` rows and columns) in the slot at row `c (c + 1)`.
 struct Tree<'a, const N: usize, const R: usize> {
-    s: &'a Setup,
+    s: &'a Setup<N>,
     /// The largest diagonal entry of `W`.
     wscale: f64,
     /// `max_i |v⁻_i|` and `max_i Σ_j |W_ij|`: the velocity scale is at most
@@ -433,7 +433,7 @@ struct Tree<'a, const N: usize, const R: usize> {
     /// The Schur complements and their right-hand sides (slot `K − 1`: `W`).
     mats: [[f64; N]; R],
     rhs: [[f64; N]; MAX_CONTACTS],
-    found: Found,
+    found: &'a mut Found<N>,
 }
 
 /// `|x|` of a `2 × 2` matrix's rows, the larger (the ∞-norm).
@@ -455,7 +455,7 @@ fn larger(a: f64, b: f64) -> f64 {
 
 impl<'a, const N: usize, const R: usize> Tree<'a, N, R> {
     /// The distinct solutions of the problem `s` (`2K = N`), in enumeration order.
-    fn run(s: &'a Setup) -> Found {
+    fn run(s: &'a Setup<N>, found: &'a mut Found<N>) {
         let k = s.k;
         debug_assert!(2 * k == N && k * (k + 1) == R);
         let mut tree = Tree {
@@ -470,7 +470,7 @@ impl<'a, const N: usize, const R: usize> Tree<'a, N, R> {
             bound: [(0.0, 1.0); MAX_CONTACTS],
             mats: [[0.0; N]; R],
             rhs: [[0.0; N]; MAX_CONTACTS],
-            found: Found::new(),
+            found,
         };
         let top = (k - 1) * k;
         for i in 0..N {
@@ -482,7 +482,6 @@ impl<'a, const N: usize, const R: usize> Tree<'a, N, R> {
             tree.wrow = larger(tree.wrow, s.w[i][..N].iter().map(|x| x.abs()).sum());
         }
         tree.branch(k - 1, k - 1, 0.0, 1.0, 0);
-        tree.found
     }
 
     /// Whether a `2 × 2` pivot block is usable: its largest entry above [`TREE_PIVOT`] of
@@ -775,8 +774,8 @@ impl<'a, const N: usize, const R: usize> Tree<'a, N, R> {
 
     /// The exact solve of one combination, merged into the solutions if it is one.
     fn exact(&mut self, modes: &[Mode; MAX_CONTACTS]) {
-        if let Some(cand) = solve_mode::<N>(self.s, modes) {
-            merge(&mut self.found, cand);
+        if let Some(cand) = solve_mode(self.s, modes) {
+            merge(self.found, cand);
         }
     }
 }
@@ -784,7 +783,7 @@ impl<'a, const N: usize, const R: usize> Tree<'a, N, R> {
 /// Solve the equations of one combination of modes; the candidate if it satisfies every
 /// condition to round-off.
 #[allow(clippy::needless_range_loop)] // j and i index the contacts and the rows of W alike
-fn solve_mode<const N: usize>(s: &Setup, modes: &[Mode; MAX_CONTACTS]) -> Option<Candidate> {
+fn solve_mode<const N: usize>(s: &Setup<N>, modes: &[Mode; MAX_CONTACTS]) -> Option<Candidate<N>> {
     let k = s.k;
     // Unknowns: a stick contact has (p_t, p_n), a slip (or frictionless) contact p_n with
     // p_t = ratio p_n, written as y (ratio, 1)/|(ratio, 1)| so that |y| is |p_j|.
@@ -835,7 +834,7 @@ fn solve_mode<const N: usize>(s: &Setup, modes: &[Mode; MAX_CONTACTS]) -> Option
     }
     let mut y = [0.0; N];
     least_norm_n(&mut a, &mut r, n, &mut y);
-    let mut p = [0.0; DIM];
+    let mut p = [0.0; N];
     for c in 0..n {
         let j = contact[c];
         p[2 * j] += ct[c] * y[c];
@@ -861,7 +860,7 @@ fn solve_mode<const N: usize>(s: &Setup, modes: &[Mode; MAX_CONTACTS]) -> Option
         }
     }
     // Velocities after and their scale.
-    let mut v = [0.0; DIM];
+    let mut v = [0.0; N];
     let mut vscale = 0.0f64;
     for i in 0..2 * k {
         let (mut x, mut size) = (s.v[i], s.v[i].abs());
@@ -901,7 +900,7 @@ fn solve_mode<const N: usize>(s: &Setup, modes: &[Mode; MAX_CONTACTS]) -> Option
 /// The solution as reported: impulses inside their cones (`p_n ≥ 0`, `|p_t| ≤ μ p_n`,
 /// `p_t = ∓μ p_n` in slip: removing round-off), velocities as the conditions give them
 /// (`v_n⁺ = b` with an impulse, `v_t⁺ = 0` in stick), and `ΔT`.
-fn tidy(s: &Setup, c: &Candidate) -> LcpSolution {
+fn tidy<const N: usize>(s: &Setup<N>, c: &Candidate<N>) -> LcpSolution {
     let k = s.k;
     let mut regimes = PerContact::filled(k, ContactPhaseKind::Off);
     let mut impulses = PerContact::filled(k, Vec2::zeros());
@@ -1152,6 +1151,28 @@ mod tests {
         }
     }
 
+    /// A solution's modes and the bits of its impulses and velocities.
+    type Bits = ([Mode; MAX_CONTACTS], Vec<u64>, Vec<u64>);
+
+    /// The solutions of the elimination tree (`N = 2K`) and of the enumeration of every
+    /// combination on arrays of the largest size.
+    fn compare<const N: usize, const R: usize>(p: &MultiProblem) -> (Vec<Bits>, Vec<Bits>) {
+        let n = 2 * p.contacts();
+        let bits = |x: &[f64]| x[..n].iter().map(|y| y.to_bits()).collect::<Vec<u64>>();
+        let s = setup::<N>(p);
+        let mut fast = Found::new();
+        Tree::<N, R>::run(&s, &mut fast);
+        let all = enumerate_all(&setup::<DIM>(p));
+        (
+            fast.iter()
+                .map(|c| (c.modes, bits(&c.p), bits(&c.v)))
+                .collect(),
+            all.iter()
+                .map(|c| (c.modes, bits(&c.p), bits(&c.v)))
+                .collect(),
+        )
+    }
+
     /// The elimination tree finds, to the last bit and in the same order, the solutions of
     /// the enumeration of every combination of modes.
     #[test]
@@ -1169,23 +1190,16 @@ mod tests {
                 _ => 3,
             };
             let p = random_problem(&mut rng, k);
-            let s = setup(&p);
-            let (fast, all) = (enumerate(&s), enumerate_all(&s));
+            let (fast, all) = match k {
+                1 => compare::<2, 2>(&p),
+                2 => compare::<4, 6>(&p),
+                3 => compare::<6, 12>(&p),
+                4 => compare::<8, 20>(&p),
+                5 => compare::<10, 30>(&p),
+                _ => compare::<12, 42>(&p),
+            };
             several += usize::from(all.len() > 1);
-            let same = fast.len() == all.len()
-                && fast.iter().zip(all.iter()).all(|(a, b)| {
-                    a.modes == b.modes
-                        && a.p
-                            .iter()
-                            .zip(&b.p)
-                            .all(|(x, y)| x.to_bits() == y.to_bits())
-                        && a.v
-                            .iter()
-                            .zip(&b.v)
-                            .all(|(x, y)| x.to_bits() == y.to_bits())
-                });
-            let (fast, all): (Vec<_>, Vec<_>) = (fast.iter().collect(), all.iter().collect());
-            assert!(same, "trial {trial}: {fast:?}\nvs {all:?}\non {p:?}");
+            assert!(fast == all, "trial {trial}: {fast:?}\nvs {all:?}\non {p:?}");
         }
         assert!(several > 100, "{several}");
     }
