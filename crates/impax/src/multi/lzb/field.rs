@@ -25,11 +25,38 @@ pub(super) struct Eval {
     pub pt: [f64; MAXK],
 }
 
+/// Call `$f::<N>` with `N = 4K` the state's size for the problem's `K` (the loops over the
+/// contacts then have their lengths at compile time).
+macro_rules! by_size {
+    ($k:expr, $f:ident ( $($arg:expr),* )) => {
+        match $k {
+            1 => $f::<4>($($arg),*),
+            2 => $f::<8>($($arg),*),
+            3 => $f::<12>($($arg),*),
+            4 => $f::<16>($($arg),*),
+            5 => $f::<20>($($arg),*),
+            6 => $f::<24>($($arg),*),
+            7 => $f::<28>($($arg),*),
+            _ => $f::<32>($($arg),*),
+        }
+    };
+}
+
 /// The tangential impulse rates given the normal forces `f`: slip `−μ σ F`, stick by the
 /// stick set's least-norm solve.
-#[inline(always)]
 pub(super) fn tangential_rates(setup: &Setup, modes: &Modes, f: &[f64; MAXK]) -> [f64; MAXK] {
-    let k = setup.k;
+    by_size!(setup.k, tangential_rates_n(setup, modes, f))
+}
+
+/// [`tangential_rates`] for the state's size `N = 4K`.
+#[inline(always)]
+pub(super) fn tangential_rates_n<const N: usize>(
+    setup: &Setup,
+    modes: &Modes,
+    f: &[f64; MAXK],
+) -> [f64; MAXK] {
+    debug_assert_eq!(N, PER * setup.k);
+    let k = N / PER;
     let mut pt = [0.0; MAXK];
     for j in 0..k {
         if let (true, Tangent::Slip(sigma)) = (modes.active(j), modes.tangent[j]) {
@@ -63,9 +90,15 @@ fn dot(a: &[f64], b: &[f64]) -> f64 {
 }
 
 /// The velocities, forces and tangential rates at the state `y`.
-#[inline(always)]
 pub(super) fn eval(setup: &Setup, modes: &Modes, y: &[f64]) -> Eval {
-    let k = setup.k;
+    by_size!(setup.k, eval_n(setup, modes, y))
+}
+
+/// [`eval`] for the state's size `N = 4K`.
+#[inline(always)]
+pub(super) fn eval_n<const N: usize>(setup: &Setup, modes: &Modes, y: &[f64]) -> Eval {
+    debug_assert_eq!(N, PER * setup.k);
+    let k = N / PER;
     let n = 2 * k;
     let mut p = [0.0; 2 * MAXK];
     for c in 0..k {
@@ -82,7 +115,7 @@ pub(super) fn eval(setup: &Setup, modes: &Modes, y: &[f64]) -> Eval {
             *fj = setup.force(j, y[PER * j + S]);
         }
     }
-    let pt = tangential_rates(setup, modes, &f);
+    let pt = tangential_rates_n::<N>(setup, modes, &f);
     Eval { v, f, pt }
 }
 
@@ -93,9 +126,9 @@ pub(super) fn rates<const N: usize>(
     modes: &Modes,
     y: &[f64; N],
 ) -> ([f64; N], Eval) {
-    let ev = eval(setup, modes, y);
+    let ev = eval_n::<N>(setup, modes, y);
     let mut dy = [0.0; N];
-    for j in 0..setup.k {
+    for j in 0..N / PER {
         let vn = ev.v[2 * j + 1];
         let o = PER * j;
         dy[o + PT] = ev.pt[j];
