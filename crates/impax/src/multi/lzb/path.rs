@@ -11,7 +11,7 @@
 //! the same: `events.rs`).
 
 use super::events::{self, Event};
-use super::field::{eval, tangential_acceleration, tangential_rates, Eval};
+use super::field::{eval, tangential_acceleration, tangential_rates, Eval, Field};
 use super::friction::{choose, rebuild, Allowed};
 use super::state::{Modes, Normal, Setup, StickSet, Tangent, MAXK, PER, PN, PT, S, WT};
 use super::variable::Var;
@@ -89,8 +89,9 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
     let root_end = 0.25 * shortest;
     let (mut attempts, mut steps) = (0usize, 0usize);
     let mut modes = path.modes;
-    let mut k1 = var.rhs::<N>(setup, &modes, x, &y);
-    let ev0 = eval(setup, &modes, &y);
+    let mut field = Field::new(setup, &modes);
+    let mut k1 = var.rhs::<N>(setup, &field, x, &y);
+    let ev0 = field.eval::<N>(setup, &y);
     let mut watch = events::watch(setup, &modes, &y, &ev0);
     let mut g_a = events::values(setup, &modes, &watch, &y, &ev0);
     while (0..k).any(|j| modes.active(j)) {
@@ -103,7 +104,7 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
         if lands {
             h = -x;
         }
-        let f = |xx: f64, yy: &[f64; N]| var.rhs::<N>(setup, &modes, xx, yy);
+        let f = |xx: f64, yy: &[f64; N]| var.rhs::<N>(setup, &field, xx, yy);
         let st = dop853_step(&f, x, &y, &k1, h);
         let en = error_measure(&st, |i| {
             setup.atol[i] + RTOL * y[i].abs().max(st.y[i].abs())
@@ -114,7 +115,7 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
             continue;
         }
         let y1 = st.y;
-        let (k_end, ev_b) = var.rhs_eval::<N>(setup, &modes, x + h, &y1);
+        let (k_end, ev_b) = var.rhs_eval::<N>(setup, &field, x + h, &y1);
         let g_b = events::values(setup, &modes, &watch, &y1, &ev_b);
         // (In the separation variable its own separation is the end of the range.)
         let own = var.separating();
@@ -145,11 +146,12 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
                     break;
                 }
                 modes = path.modes;
-                let ev = eval(setup, &modes, &y);
+                field = Field::new(setup, &modes);
+                let ev = field.eval::<N>(setup, &y);
                 h = guard(var.to_time(setup, x, h, &ev_b.v), shortest);
                 var = Var::Time.next(setup, &modes, 0.0, h, &y, &ev.v, root_end);
                 (x, h) = var.start_from_time(setup, &y, h);
-                k1 = var.rhs::<N>(setup, &modes, x, &y);
+                k1 = var.rhs::<N>(setup, &field, x, &y);
                 watch = events::watch(setup, &modes, &y, &ev);
                 g_a = events::values(setup, &modes, &watch, &y, &ev);
                 continue;
@@ -164,7 +166,7 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
                 h = guard(var.to_time(setup, x, h, &ev_b.v), shortest);
                 (x, h) = next.start_from_time(setup, &y, h);
                 var = next;
-                k1 = var.rhs::<N>(setup, &modes, x, &y);
+                k1 = var.rhs::<N>(setup, &field, x, &y);
             }
             continue;
         }
@@ -177,7 +179,7 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
             } else {
                 let g = |th: f64| {
                     let z = dense.at(th);
-                    events::value(setup, &modes, &watch, i, &z, &eval(setup, &modes, &z))
+                    events::value(setup, &modes, &watch, i, &z, &field.eval::<N>(setup, &z))
                 };
                 illinois(g, 0.0, g_a[i], 1.0, g_b[i])
             };
@@ -204,11 +206,12 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
         // On from the event (its regimes may have changed): in time, or in a separation's
         // variable if one is near.
         modes = path.modes;
-        let ev = eval(setup, &modes, &y);
+        field = Field::new(setup, &modes);
+        let ev = field.eval::<N>(setup, &y);
         h = guard(var.to_time(setup, x, h, &ev.v), shortest);
         var = Var::Time.next(setup, &modes, 0.0, h, &y, &ev.v, root_end);
         (x, h) = var.start_from_time(setup, &y, h);
-        k1 = var.rhs::<N>(setup, &modes, x, &y);
+        k1 = var.rhs::<N>(setup, &field, x, &y);
         watch = events::watch(setup, &modes, &y, &ev);
         g_a = events::values(setup, &modes, &watch, &y, &ev);
     }

@@ -21,7 +21,7 @@
 //! `v_nj = 0` with `s_j ∝ (τ − τ_j)²`, so its force `∝ (τ − τ_j)^(2η)` is analytic for
 //! `η = 3/2`. Any event returns the path to `τ`.
 
-use super::field::{rates, Eval};
+use super::field::{Eval, Field};
 use super::state::{Modes, Normal, Setup, MAXK, PER, S};
 
 /// The variable the path is integrated in.
@@ -55,11 +55,11 @@ impl Var {
     pub(super) fn rhs<const N: usize>(
         self,
         setup: &Setup,
-        modes: &Modes,
+        field: &Field,
         x: f64,
         y: &[f64; N],
     ) -> [f64; N] {
-        self.rhs_eval(setup, modes, x, y).0
+        self.rhs_eval(setup, field, x, y).0
     }
 
     /// `dy/dx` at `(x, y)` and the point's quantities.
@@ -67,11 +67,11 @@ impl Var {
     pub(super) fn rhs_eval<const N: usize>(
         self,
         setup: &Setup,
-        modes: &Modes,
+        field: &Field,
         x: f64,
         y: &[f64; N],
     ) -> ([f64; N], Eval) {
-        let (mut dy, ev) = rates::<N>(setup, modes, y);
+        let (mut dy, ev) = field.rates::<N>(setup, y);
         if self != Var::Time {
             let c = self.dtau(setup, x, &ev.v);
             for d in dy.iter_mut() {
