@@ -65,6 +65,9 @@ pub(super) struct Setup {
     pub e: [f64; MAXK],
     /// Stiffness ratios, the largest scaled to 1.
     pub kappa: [f64; MAXK],
+    /// `κ_j^(1/(η+1))`, the factor of the primary's ordering quantity
+    /// ([`Setup::energy_order`]).
+    pub order: [f64; MAXK],
     /// The exponent `η`.
     pub eta: f64,
     /// `s^η`.
@@ -101,6 +104,7 @@ impl Setup {
             mu: [0.0; MAXK],
             e: [0.0; MAXK],
             kappa: [0.0; MAXK],
+            order: [0.0; MAXK],
             eta: problem.exponent(),
             power: Power::General(problem.exponent()),
             m: 1,
@@ -136,6 +140,7 @@ impl Setup {
             // (A ratio below the smallest normal number would make the forces vanish: kept
             // representable, the contact is then as soft as arithmetic allows.)
             s.kappa[j] = (problem.stiffnesses()[j] / kmax).max(f64::MIN_POSITIVE);
+            s.order[j] = s.kappa[j].powf(1.0 / (s.eta + 1.0));
         }
         let vmax = s.v0[..2 * k].iter().fold(0.0f64, |m, x| m.max(x.abs()));
         s.approach = super::APPROACH_ROUND_OFF * vmax;
@@ -175,7 +180,7 @@ impl Setup {
     /// The primary's ordering quantity `κ_j^(1/(η+1)) s_j`, increasing with `Ê_j`.
     #[inline]
     pub(super) fn energy_order(&self, j: usize, s: f64) -> f64 {
-        self.kappa[j].powf(1.0 / (self.eta + 1.0)) * s.max(0.0)
+        self.order[j] * s.max(0.0)
     }
 }
 
