@@ -231,6 +231,58 @@ impl Field {
         Eval { v, f, pt }
     }
 
+    /// `dy/dτ` at the state `y` (`N = 4K`): [`Field::rates`] without the point's other
+    /// quantities (the same operations).
+    #[inline(always)]
+    pub(super) fn dy<const N: usize>(&self, setup: &Setup, y: &[f64; N]) -> [f64; N] {
+        debug_assert_eq!(N, PER * setup.k);
+        let k = N / PER;
+        let n = 2 * k;
+        let mut p = [0.0; 2 * MAXK];
+        let mut f = [0.0; MAXK];
+        for c in 0..k {
+            p[2 * c] = y[PER * c + PT];
+            p[2 * c + 1] = y[PER * c + PN];
+            if self.active[c] {
+                f[c] = setup.force(c, y[PER * c + S]);
+            }
+        }
+        let mut dy = [0.0; N];
+        for j in 0..k {
+            let vt = setup.v0[2 * j] + dot(&setup.w[2 * j][..n], &p[..n]);
+            let pt = dot(&self.map[j][..k], &f[..k]);
+            let o = PER * j;
+            dy[o + PT] = pt;
+            dy[o + PN] = f[j];
+            dy[o + S] = if self.active[j] {
+                -(setup.v0[2 * j + 1] + dot(&setup.w[2 * j + 1][..n], &p[..n])) / self.div[j]
+            } else {
+                0.0
+            };
+            dy[o + WT] = vt * pt;
+        }
+        dy
+    }
+
+    /// Contact `j`'s normal velocity at the state `y` (`N = 4K`), as [`Field::eval`] gives
+    /// it.
+    #[inline(always)]
+    pub(super) fn normal_velocity<const N: usize>(
+        &self,
+        setup: &Setup,
+        y: &[f64; N],
+        j: usize,
+    ) -> f64 {
+        let k = N / PER;
+        let n = 2 * k;
+        let mut p = [0.0; 2 * MAXK];
+        for c in 0..k {
+            p[2 * c] = y[PER * c + PT];
+            p[2 * c + 1] = y[PER * c + PN];
+        }
+        setup.v0[2 * j + 1] + dot(&setup.w[2 * j + 1][..n], &p[..n])
+    }
+
     /// `dy/dτ` at the state `y` (`N = 4K`) and the quantities of the point.
     #[inline(always)]
     pub(super) fn rates<const N: usize>(&self, setup: &Setup, y: &[f64; N]) -> ([f64; N], Eval) {

@@ -150,7 +150,7 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
                 let ev = field.eval::<N>(setup, &y);
                 h = guard(var.to_time(setup, x, h, &ev_b.v), shortest);
                 var = Var::Time.next(setup, &modes, 0.0, h, &y, &ev.v, root_end);
-                (x, h) = var.start_from_time(setup, &y, h);
+                (x, h) = var.start_from_time(setup, &y, h, &ev.v);
                 k1 = var.rhs::<N>(setup, &field, x, &y);
                 watch = events::watch(setup, &modes, &y, &ev);
                 g_a = events::values(setup, &modes, &watch, &y, &ev);
@@ -164,7 +164,7 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
             let next = var.next(setup, &modes, x, h, &y1, &ev_b.v, root_end);
             if next != var {
                 h = guard(var.to_time(setup, x, h, &ev_b.v), shortest);
-                (x, h) = next.start_from_time(setup, &y, h);
+                (x, h) = next.start_from_time(setup, &y, h, &ev_b.v);
                 var = next;
                 k1 = var.rhs::<N>(setup, &field, x, &y);
             }
@@ -209,8 +209,14 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
         field = Field::new(setup, &modes);
         let ev = field.eval::<N>(setup, &y);
         h = guard(var.to_time(setup, x, h, &ev.v), shortest);
+        if let Event::CompressionEnd(j) = event {
+            // The contact now expands 1/e² times faster (ds/dτ = −v_n/e²): a shorter step.
+            if setup.e[j] > 0.0 {
+                h *= setup.e[j];
+            }
+        }
         var = Var::Time.next(setup, &modes, 0.0, h, &y, &ev.v, root_end);
-        (x, h) = var.start_from_time(setup, &y, h);
+        (x, h) = var.start_from_time(setup, &y, h, &ev.v);
         k1 = var.rhs::<N>(setup, &field, x, &y);
         watch = events::watch(setup, &modes, &y, &ev);
         g_a = events::values(setup, &modes, &watch, &y, &ev);

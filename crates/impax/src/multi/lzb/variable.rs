@@ -24,6 +24,16 @@
 use super::field::{Eval, Field};
 use super::state::{Modes, Normal, Setup, MAXK, PER, S};
 
+/// `x^(m−1)` (`x` itself for the common `m = 2`, as `powi` gives it).
+#[inline(always)]
+fn power_m1(setup: &Setup, x: f64) -> f64 {
+    if setup.m == 2 {
+        x
+    } else {
+        x.powi(setup.m - 1)
+    }
+}
+
 /// The variable the path is integrated in.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(super) enum Var {
@@ -43,9 +53,9 @@ impl Var {
         let m = setup.m;
         match self {
             Var::Time => 1.0,
-            Var::Root => f64::from(m) * x.powi(m - 1),
+            Var::Root => f64::from(m) * power_m1(setup, x),
             Var::Separation { contact: j, .. } => {
-                -f64::from(m) * x.powi(m - 1) * setup.e[j] * setup.e[j] / v[2 * j + 1]
+                -f64::from(m) * power_m1(setup, x) * setup.e[j] * setup.e[j] / v[2 * j + 1]
             }
         }
     }
@@ -59,7 +69,24 @@ impl Var {
         x: f64,
         y: &[f64; N],
     ) -> [f64; N] {
-        self.rhs_eval(setup, field, x, y).0
+        let mut dy = field.dy::<N>(setup, y);
+        let m = f64::from(setup.m);
+        let c = match self {
+            Var::Time => return dy,
+            Var::Root => m * power_m1(setup, x),
+            Var::Separation { contact: j, .. } => {
+                let vn = field.normal_velocity::<N>(setup, y, j);
+                -m * power_m1(setup, x) * setup.e[j] * setup.e[j] / vn
+            }
+        };
+        for d in dy.iter_mut() {
+            *d *= c;
+        }
+        if let Var::Separation { contact: j, .. } = self {
+            // s_j = σ^m exactly.
+            dy[PER * j + S] = m * power_m1(setup, x);
+        }
+        dy
     }
 
     /// `dy/dx` at `(x, y)` and the point's quantities.
@@ -79,7 +106,7 @@ impl Var {
             }
             if let Var::Separation { contact: j, .. } = self {
                 // s_j = σ^m exactly.
-                dy[PER * j + S] = f64::from(setup.m) * x.powi(setup.m - 1);
+                dy[PER * j + S] = f64::from(setup.m) * power_m1(setup, x);
             }
         }
         (dy, ev)
@@ -151,13 +178,26 @@ impl Var {
     }
 
     /// Where this variable starts at the state `y` and its first step, from a step `h` of `τ`.
-    pub(super) fn start_from_time(self, setup: &Setup, y: &[f64], h: f64) -> (f64, f64) {
+    pub(super) fn start_from_time(
+        self,
+        setup: &Setup,
+        y: &[f64],
+        h: f64,
+        v: &[f64; 2 * MAXK],
+    ) -> (f64, f64) {
         match self {
             Var::Time | Var::Root => (0.0, h),
             Var::Separation { contact: j, .. } => {
-                // The whole way to the separation at once (the error test shortens it).
                 let sigma = y[PER * j + S].max(0.0).powf(1.0 / f64::from(setup.m));
-                (sigma, -sigma)
+                // The step of τ as a step of σ (dτ/dσ = −m σ^(m−1) e²/v_n), at most the whole
+                // way to the separation.
+                let dtau = self.dtau(setup, sigma, v).abs();
+                let step = if dtau > 0.0 && (h / dtau).is_finite() {
+                    (h / dtau).min(sigma)
+                } else {
+                    sigma
+                };
+                (sigma, -step)
             }
         }
     }
