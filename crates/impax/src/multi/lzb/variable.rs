@@ -24,13 +24,22 @@
 use super::field::{Eval, Field};
 use super::state::{Modes, Normal, Setup, MAXK, PER, S};
 
-/// `x^(m−1)` (`x` itself for the common `m = 2`, as `powi` gives it).
+/// `x^(m−1)` by repeated squaring, as `f64::powi` computes it (`x` itself for the common
+/// `m = 2`), without the call `powi` makes (which the compiler would also make where the
+/// result is not needed).
 #[inline(always)]
 fn power_m1(setup: &Setup, x: f64) -> f64 {
-    if setup.m == 2 {
-        x
-    } else {
-        x.powi(setup.m - 1)
+    let (mut base, mut n, mut out) = (x, setup.m - 1, 1.0);
+    debug_assert!(n >= 0);
+    loop {
+        if n & 1 != 0 {
+            out *= base;
+        }
+        n >>= 1;
+        if n == 0 {
+            return out;
+        }
+        base *= base;
     }
 }
 
