@@ -442,6 +442,13 @@ fn norm2(m: &[[f64; 2]; 2]) -> f64 {
     larger(m[0][0].abs() + m[0][1].abs(), m[1][0].abs() + m[1][1].abs())
 }
 
+/// Whether `x > bound` (not when either is NaN: a NaN pivot or condition keeps the
+/// combination, whose exact solve then decides).
+#[inline(always)]
+fn exceeds(x: f64, bound: f64) -> bool {
+    x > bound
+}
+
 /// The larger of two numbers (`b` if either is NaN: every use below errs on the side of
 /// keeping a combination, whose exact solve then decides).
 #[inline(always)]
@@ -584,7 +591,7 @@ impl<'a, const N: usize, const R: usize> Tree<'a, N, R> {
         let (rlo, rhi) = self.rhs.split_at_mut(c);
         let (rhs, r2) = (&rhi[slot - c], &mut rlo[c - 1]);
         let pivot = sm[n][t] * ratio + sm[n][n];
-        if !(pivot.abs() > TREE_PIVOT * self.wscale) {
+        if !exceeds(pivot.abs(), TREE_PIVOT * self.wscale) {
             return None;
         }
         let ip = 1.0 / pivot;
@@ -614,7 +621,7 @@ impl<'a, const N: usize, const R: usize> Tree<'a, N, R> {
         let (rt, rn) = (self.rhs[slot][0], self.rhs[slot][1]);
         let mu = self.s.mu[0];
         // Off: no impulse, v_n⁺ ≥ b needed (every contact off is no solution).
-        if active > 0 && !(rn > RULED_OUT * (self.vmax + self.wrow * a)) {
+        if active > 0 && !exceeds(rn, RULED_OUT * (self.vmax + self.wrow * a)) {
             self.leaf(Mode::Off, 0.0, 0.0);
         }
         let wscale = self.wscale;
@@ -641,7 +648,7 @@ impl<'a, const N: usize, const R: usize> Tree<'a, N, R> {
         for &(mode, sign) in slips {
             let ratio = sign * mu;
             let pivot = b10 * ratio + b11;
-            if !(pivot.abs() > TREE_PIVOT * wscale) {
+            if !exceeds(pivot.abs(), TREE_PIVOT * wscale) {
                 self.mode[0] = mode;
                 self.unfiltered(0, active + 1);
                 continue;

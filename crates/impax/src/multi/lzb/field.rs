@@ -162,6 +162,7 @@ pub(super) struct Field {
 
 impl Field {
     /// The field of the regimes `modes`.
+    #[allow(clippy::needless_range_loop)] // j and c index the contacts' arrays alike
     pub(super) fn new(setup: &Setup, modes: &Modes) -> Field {
         let k = setup.k;
         let mut field = Field {
