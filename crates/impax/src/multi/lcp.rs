@@ -526,9 +526,17 @@ impl<'a, const N: usize, const R: usize> Tree<'a, N, R> {
         for &(mode, sign) in modes {
             self.mode[c] = mode;
             let bounds = if mode == Mode::Stick {
-                self.eliminate_stick(c, slot)
+                // (The last but one contact, most often eliminated, with its size known: the
+                // loops unrolled.)
+                if c == 1 {
+                    self.eliminate_stick(1, slot, 2)
+                } else {
+                    self.eliminate_stick(c, slot, 2 * c)
+                }
+            } else if c == 1 {
+                self.eliminate_slip(1, slot, sign * mu, 2)
             } else {
-                self.eliminate_slip(c, slot, sign * mu)
+                self.eliminate_slip(c, slot, sign * mu, 2 * c)
             };
             match bounds {
                 Some((ac, bc)) => {
@@ -539,12 +547,14 @@ impl<'a, const N: usize, const R: usize> Tree<'a, N, R> {
         }
     }
 
-    /// Contact `c ≥ 1` sticking: the Schur complement of its two equations from the one in
-    /// `slot` into slot `c − 1`, and `(ac, bc)` with `|p_c| ≤ ac + bc |p_{0…c−1}|`; `None`
-    /// if the pivot block or the multipliers are out of bounds.
+    /// Contact `c ≥ 1` sticking (`t = 2c`): the Schur complement of its two equations from
+    /// the one in `slot` into slot `c − 1`, and `(ac, bc)` with `|p_c| ≤ ac + bc |p_{0…c−1}|`;
+    /// `None` if the pivot block or the multipliers are out of bounds.
     #[allow(clippy::needless_range_loop)] // rows and columns of S indexed alike
-    fn eliminate_stick(&mut self, c: usize, slot: usize) -> Option<(f64, f64)> {
-        let (t, n) = (2 * c, 2 * c + 1);
+    #[inline(always)]
+    fn eliminate_stick(&mut self, c: usize, slot: usize, t: usize) -> Option<(f64, f64)> {
+        debug_assert_eq!(t, 2 * c);
+        let n = t + 1;
         let (top, below) = (slot * (slot + 1), (c - 1) * c);
         let (lo, hi) = self.mats.split_at_mut(top);
         let (sm, child) = (&hi[..n + 1], &mut lo[below..below + t]);
@@ -583,8 +593,16 @@ impl<'a, const N: usize, const R: usize> Tree<'a, N, R> {
     /// Contact `c ≥ 1` slipping with `p_t = ratio p_n` (frictionless: `ratio = 0`): as
     /// [`Tree::eliminate_stick`] for its normal equation.
     #[allow(clippy::needless_range_loop)] // rows and columns of S indexed alike
-    fn eliminate_slip(&mut self, c: usize, slot: usize, ratio: f64) -> Option<(f64, f64)> {
-        let (t, n) = (2 * c, 2 * c + 1);
+    #[inline(always)]
+    fn eliminate_slip(
+        &mut self,
+        c: usize,
+        slot: usize,
+        ratio: f64,
+        t: usize,
+    ) -> Option<(f64, f64)> {
+        debug_assert_eq!(t, 2 * c);
+        let n = t + 1;
         let (top, below) = (slot * (slot + 1), (c - 1) * c);
         let (lo, hi) = self.mats.split_at_mut(top);
         let (sm, child) = (&hi[..n + 1], &mut lo[below..below + t]);
@@ -632,7 +650,8 @@ impl<'a, const N: usize, const R: usize> Tree<'a, N, R> {
                 self.mode[0] = Mode::Stick;
                 self.unfiltered(0, active + 1);
             } else {
-                let (pt, pn) = ((b11 * rt - b01 * rn) / det, (b00 * rn - b10 * rt) / det);
+                let idet = 1.0 / det;
+                let (pt, pn) = ((b11 * rt - b01 * rn) * idet, (b00 * rn - b10 * rt) * idet);
                 let tolp = RULED_OUT * (a + b * larger(pt.abs(), pn.abs()));
                 if !(-pn > tolp || pt.abs() - mu * pn > tolp) {
                     self.leaf(Mode::Stick, pt, pn);
@@ -689,7 +708,7 @@ impl<'a, const N: usize, const R: usize> Tree<'a, N, R> {
         p[0] = pt0;
         p[1] = pn0;
         let mut known = larger(pt0.abs(), pn0.abs());
-        for c in 1..s.k {
+        for c in 1..N / 2 {
             let (t, n) = (2 * c, 2 * c + 1);
             let slot = self.slot[c];
             let top = slot * (slot + 1);
