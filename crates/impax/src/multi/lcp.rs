@@ -810,7 +810,9 @@ impl<'a, const N: usize, const R: usize> Tree<'a, N, R> {
 /// condition to round-off.
 #[allow(clippy::needless_range_loop)] // j and i index the contacts and the rows of W alike
 fn solve_mode<const N: usize>(s: &Setup<N>, modes: &[Mode; MAX_CONTACTS]) -> Option<Candidate<N>> {
-    let k = s.k;
+    // (N = 2K: the loops over the contacts of known length.)
+    let k = N / 2;
+    debug_assert_eq!(k, s.k);
     // Unknowns: a stick contact has (p_t, p_n), a slip (or frictionless) contact p_n with
     // p_t = ratio p_n, written as y (ratio, 1)/|(ratio, 1)| so that |y| is |p_j|.
     let mut contact = [0usize; N];
@@ -1180,15 +1182,15 @@ mod tests {
     /// A solution's modes and the bits of its impulses and velocities.
     type Bits = ([Mode; MAX_CONTACTS], Vec<u64>, Vec<u64>);
 
-    /// The solutions of the elimination tree (`N = 2K`) and of the enumeration of every
-    /// combination on arrays of the largest size.
+    /// The solutions of the elimination tree and of the enumeration of every combination
+    /// (`N = 2K`).
     fn compare<const N: usize, const R: usize>(p: &MultiProblem) -> (Vec<Bits>, Vec<Bits>) {
         let n = 2 * p.contacts();
         let bits = |x: &[f64]| x[..n].iter().map(|y| y.to_bits()).collect::<Vec<u64>>();
         let s = setup::<N>(p);
         let mut fast = Found::new();
         Tree::<N, R>::run(&s, &mut fast);
-        let all = enumerate_all(&setup::<DIM>(p));
+        let all = enumerate_all(&s);
         (
             fast.iter()
                 .map(|c| (c.modes, bits(&c.p), bits(&c.v)))

@@ -383,28 +383,49 @@ impl MultiOutcome {
 
     /// Whether every number of the outcome, its detail included, is finite.
     pub fn is_finite(&self) -> bool {
-        let finite = |v: &Vec2| v.x.is_finite() && v.y.is_finite();
-        let detail = match &self.detail {
-            MultiDetail::Lcp { solutions } => solutions.iter().all(|s| {
-                s.energy_change.is_finite()
-                    && s.impulses.iter().chain(&s.velocities_after).all(finite)
-            }),
-            MultiDetail::Sequential { impacts } => impacts
-                .iter()
-                .all(|b| finite(&b.velocity_before) && b.outcome.is_finite()),
-            MultiDetail::Lzb { primaries, .. } => primaries.iter().all(|p| p.impulse.is_finite()),
-            MultiDetail::OneContact { .. } => true,
-        };
-        detail
-            && self.energy_change.is_finite()
-            && self.contacts.iter().all(|c| {
-                finite(&c.impulse)
-                    && finite(&c.velocity_after)
-                    && [c.work.compression, c.work.restitution, c.work.friction]
-                        .iter()
-                        .all(|x| x.is_finite())
-                    && c.phases.iter().all(|p| p.ends_at.is_finite())
-            })
+        // `x · 0` is ±0 for a finite `x` and NaN otherwise: one sum of them tells whether every
+        // number is finite, without a branch per number.
+        let mut zero = 0.0 * self.energy_change;
+        let mut add = |x: f64| zero += x * 0.0;
+        for c in &self.contacts {
+            add(c.impulse.x);
+            add(c.impulse.y);
+            add(c.velocity_after.x);
+            add(c.velocity_after.y);
+            add(c.work.compression);
+            add(c.work.restitution);
+            add(c.work.friction);
+            for p in &c.phases {
+                add(p.ends_at);
+            }
+        }
+        match &self.detail {
+            MultiDetail::Lcp { solutions } => {
+                for s in solutions {
+                    add(s.energy_change);
+                    for x in s.impulses.iter().chain(&s.velocities_after) {
+                        add(x.x);
+                        add(x.y);
+                    }
+                }
+            }
+            MultiDetail::Sequential { impacts } => {
+                for b in impacts {
+                    add(b.velocity_before.x);
+                    add(b.velocity_before.y);
+                    if !b.outcome.is_finite() {
+                        return false;
+                    }
+                }
+            }
+            MultiDetail::Lzb { primaries, .. } => {
+                for p in primaries {
+                    add(p.impulse);
+                }
+            }
+            MultiDetail::OneContact { .. } => {}
+        }
+        zero == 0.0
     }
 
     /// A one-contact outcome as the outcome of a problem with one contact.

@@ -118,18 +118,18 @@ impl<'a, const N: usize> Stepper<'a, N> {
         }
     }
 
-    /// On from the point `y` in the regimes `modes` (changed by an event) with the step `h`
-    /// of `τ`: in time, or in a separation's variable if one is near.
-    fn restart(&mut self, modes: Modes, y: &[f64; N], h: f64) {
+    /// On from the point `y` in the regimes `modes` (changed by an event; `field` theirs,
+    /// `ev` the point's quantities in it) with the step `h` of `τ`: in time, or in a
+    /// separation's variable if one is near.
+    fn restart(&mut self, modes: Modes, field: Field, ev: &Eval, y: &[f64; N], h: f64) {
         let setup = self.setup;
         self.modes = modes;
-        self.field = Field::new(setup, &modes);
-        let ev = self.field.eval::<N>(setup, y);
+        self.field = field;
         self.var = Var::Time.next(setup, &modes, 0.0, h, y, &ev.v, self.root_end);
         (self.x, self.h) = self.var.start_from_time(setup, y, h, &ev.v);
         self.k1 = self.var.rhs::<N>(setup, &self.field, self.x, y);
-        self.watch = events::watch(setup, &modes, y, &ev);
-        self.g_a = events::values(setup, &modes, &self.watch, y, &ev);
+        self.watch = events::watch(setup, &modes, y, ev);
+        self.g_a = events::values(setup, &modes, &self.watch, y, ev);
     }
 
     /// The step `h` of the current variable at `x` (velocities `v`) as a step of `τ`.
@@ -186,8 +186,8 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
             it.h = -x;
         }
         let h = it.h;
-        let field = it.field;
-        let f = |xx: f64, yy: &[f64; N]| var.rhs::<N>(setup, &field, xx, yy);
+        let field = &it.field;
+        let f = |xx: f64, yy: &[f64; N]| var.rhs::<N>(setup, field, xx, yy);
         let st = dop853_step(&f, x, &y, &it.k1, h);
         let en = error_measure(&st, |i| {
             setup.atol[i] + RTOL * y[i].abs().max(st.y[i].abs())
@@ -198,11 +198,11 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
             continue;
         }
         let y1 = st.y;
-        let (k_end, ev_b) = var.rhs_eval::<N>(setup, &field, x + h, &y1);
+        let (k_end, ev_b) = var.rhs_eval::<N>(setup, field, x + h, &y1);
         let g_b = events::values(setup, &it.modes, &it.watch, &y1, &ev_b);
         // (In the separation variable its own separation is the end of the range.)
         let own = var.separating();
-        let (g_a, list) = (it.g_a, it.watch.list);
+        let (g_a, list) = (&it.g_a, &it.watch.list);
         let crosses =
             |i: usize| g_a[i] <= 0.0 && g_b[i] > 0.0 && Some(list[i]) != own.map(Event::Separation);
         let crossing = (0..it.watch.n).any(crosses);
@@ -227,7 +227,9 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
                     break;
                 }
                 let ht = it.time_step(h, &ev_b.v);
-                it.restart(path.modes, &y, ht);
+                let field = Field::new(setup, &path.modes);
+                let ev = field.eval::<N>(setup, &y);
+                it.restart(path.modes, field, &ev, &y, ht);
                 continue;
             }
             it.x += h;
@@ -240,7 +242,7 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
                 let ht = it.time_step(it.h, &ev_b.v);
                 (it.x, it.h) = next.start_from_time(setup, &y, ht, &ev_b.v);
                 it.var = next;
-                it.k1 = next.rhs::<N>(setup, &field, it.x, &y);
+                it.k1 = next.rhs::<N>(setup, field, it.x, &y);
             }
             continue;
         }
@@ -263,15 +265,16 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
             break;
         }
         // On from the event (its regimes may have changed).
-        let v = Field::new(setup, &path.modes).eval::<N>(setup, &y).v;
-        let mut ht = it.time_step(h, &v);
+        let field = Field::new(setup, &path.modes);
+        let ev = field.eval::<N>(setup, &y);
+        let mut ht = it.time_step(h, &ev.v);
         if let Event::CompressionEnd(j) = event {
             // The contact now expands 1/e² times faster (ds/dτ = −v_n/e²): a shorter step.
             if setup.e[j] > 0.0 {
                 ht *= setup.e[j];
             }
         }
-        it.restart(path.modes, &y, ht);
+        it.restart(path.modes, field, &ev, &y, ht);
     }
     Ok(path.finish(&y, steps))
 }
