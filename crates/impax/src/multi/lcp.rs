@@ -132,7 +132,7 @@ struct Found<const N: usize> {
 }
 
 /// How many solutions [`Found`] keeps on the stack.
-const INLINE: usize = 4;
+const INLINE: usize = 2;
 
 impl<const N: usize> Found<N> {
     fn new() -> Self {
@@ -852,7 +852,8 @@ fn solve_mode<const N: usize>(s: &Setup<N>, modes: &[Mode; MAX_CONTACTS]) -> Opt
     debug_assert_eq!(n, m);
     let mut a = [[0.0; N]; N];
     let mut r = [0.0; N];
-    for (row, &i) in rows.iter().enumerate().take(n) {
+    for row in 0..n {
+        let i = rows[row];
         for c in 0..n {
             let j = contact[c];
             a[row][c] = ct[c] * s.w[i][2 * j] + cn[c] * s.w[i][2 * j + 1];
@@ -861,7 +862,14 @@ fn solve_mode<const N: usize>(s: &Setup<N>, modes: &[Mode; MAX_CONTACTS]) -> Opt
         r[row] = target - s.v[i];
     }
     let mut y = [0.0; N];
-    least_norm_n(&mut a, &mut r, n, &mut y);
+    // (The small systems with their size known: the loops unrolled, the same operations.)
+    match n {
+        1 => least_norm_sized::<N, 1>(&mut a, &mut r, &mut y),
+        2 => least_norm_sized::<N, 2>(&mut a, &mut r, &mut y),
+        3 => least_norm_sized::<N, 3>(&mut a, &mut r, &mut y),
+        4 => least_norm_sized::<N, 4>(&mut a, &mut r, &mut y),
+        _ => least_norm_n(&mut a, &mut r, n, &mut y),
+    }
     let mut p = [0.0; N];
     for c in 0..n {
         let j = contact[c];
@@ -990,9 +998,20 @@ pub(crate) fn least_norm(
     least_norm_n(a, r, n, y);
 }
 
+/// [`least_norm_n`] with `n = M` known.
+#[inline(always)]
+fn least_norm_sized<const D: usize, const M: usize>(
+    a: &mut [[f64; D]; D],
+    r: &mut [f64; D],
+    y: &mut [f64; D],
+) {
+    least_norm_n(a, r, M, y);
+}
+
 /// [`least_norm`] on arrays of any size `D ≥ n` (the same operations in the same order:
 /// the same numbers).
 #[allow(clippy::needless_range_loop)] // the indices of the triangular factors, as written
+#[inline(always)]
 fn least_norm_n<const D: usize>(
     a: &mut [[f64; D]; D],
     r: &mut [f64; D],
@@ -1004,19 +1023,20 @@ fn least_norm_n<const D: usize>(
         *c = i;
     }
     let mut amax = 0.0f64;
-    for row in a.iter().take(n) {
-        for x in row.iter().take(n) {
-            amax = amax.max(x.abs());
+    for i in 0..n {
+        for j in 0..n {
+            amax = amax.max(a[i][j].abs());
         }
     }
     let tol = PIVOT_TOL * amax;
     let mut rank = 0;
     for k in 0..n {
         let (mut pi, mut pj, mut best) = (k, k, 0.0f64);
-        for (i, row) in a.iter().enumerate().take(n).skip(k) {
-            for (j, x) in row.iter().enumerate().take(n).skip(k) {
-                if x.abs() > best {
-                    best = x.abs();
+        for i in k..n {
+            for j in k..n {
+                let x = a[i][j].abs();
+                if x > best {
+                    best = x;
                     pi = i;
                     pj = j;
                 }
