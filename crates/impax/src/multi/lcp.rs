@@ -40,6 +40,43 @@
 //! A frictionless problem has one solution in velocities (the conditions are then those of a
 //! convex quadratic programme); with friction there can be several.
 //!
+//! **How the enumeration is made fast** (the solutions are those of the enumeration above,
+//! to the last bit, in the same order, merged the same way). Almost every combination fails
+//! a condition by far, and the exact solve is only needed for the few that do not. The
+//! combinations are visited as the leaves of an *elimination tree*: contact `K − 1` in each
+//! of its modes, then contact `K − 2` in each of its modes, …, contact 0 last. Eliminating a
+//! contact's equations (its `2 × 2` block in stick, its normal row with `p_t = ∓μ p_n` in
+//! slip, nothing when off) leaves the Schur complement `S` as the matrix of the contacts not
+//! yet eliminated *whatever their modes*, so each node's `S` serves every combination below
+//! it. At a leaf the impulses come by back-substitution, contact 0 first, and each contact's
+//! conditions are checked as soon as its impulse is known (its velocity after is its row of
+//! the `S` it was eliminated from): most leaves stop at the first or second contact. A
+//! combination is **ruled out** only when one of its conditions fails by more than
+//! `1e-6` of an upper bound of the scale that condition is measured against — a thousand
+//! times the tolerance ([`VELOCITY_ROUND_OFF`]) of the exact check itself. Every other
+//! combination goes to the exact solve above, which alone decides, so whatever the tree
+//! keeps, the result is the enumeration's.
+//!
+//! What makes this safe, and where it is a numerical argument rather than a proof:
+//!
+//! * the scales are bounded from above exactly: the back-substitution gives
+//!   `|p_c| ≤ a_c + b_c |p_{0…c−1}|` at every contact (the triangle inequality through the
+//!   pivot block's inverse), so the largest impulse of the whole combination, and with it the
+//!   velocity scale `max_i |v⁻_i| + (max_i Σ_j |W_ij|) max |p|`, is bounded while only the
+//!   first contacts' impulses are known; the filter's tolerance is therefore never below the
+//!   exact check's;
+//! * the tree's impulses and the exact solve's are two eliminations of the same system.
+//!   Where the tree's pivots are small (below `1e-6` of `W`'s largest diagonal entry, or a
+//!   stick block's determinant below `1e-6` of its largest entry squared) or its multipliers
+//!   large (above `1e4`), or any number is NaN, nothing below that node is ruled out: every
+//!   combination there goes to the exact solve (the singular systems of redundant contacts
+//!   always do). Elsewhere the two solutions differ by round-off amplified by a bounded
+//!   growth, far below the factor 1000 between the two tolerances. This part is not proved
+//!   bound by bound: it is checked, the tree against the enumeration of every combination
+//!   on 40,000 random problems (`K = 1 … 6`, a third with singular `W`, some frictionless,
+//!   plastic, elastic, `μ` up to 4), identical to the last bit, and the check still passes
+//!   with a margin ten million times narrower than the one used.
+//!
 //! **Singular `W`** (redundant contacts: a rod lying flat, a box on four corners). The
 //! velocities after are what the conditions determine; the impulses that produce them form
 //! a family `p + z`, `W z = 0` (a rod lying flat: how a tangential impulse is shared between

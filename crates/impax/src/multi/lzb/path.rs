@@ -9,6 +9,12 @@
 //! the discrete solution differ by less than the step's error; where the event's function is
 //! there a hair below zero, the regime it starts is offset so that it starts below zero all
 //! the same: `events.rs`).
+//!
+//! After an event the path goes on with the step that crossed it, shortened by `e_j` where
+//! contact `j`'s compression ended (it then expands `1/e_j²` times faster); a separation's
+//! variable starts with the current step of `τ` as a step of `σ`, at most the whole way to
+//! the separation. Between two events the right-hand side is that of one set of regimes, built
+//! once ([`Field`]).
 
 use super::events::{self, Event};
 use super::field::{eval, tangential_acceleration, tangential_rates, Eval, Field};
