@@ -458,15 +458,17 @@ struct Tree<'a, const N: usize, const R: usize> {
     /// `vmax + wrow max |p|`.
     vmax: f64,
     wrow: f64,
-    /// Per contact: its mode, the slot of the Schur
-    /// complement it is eliminated from, its pivot's inverse (stick: the `2 × 2` block's;
-    /// slip or frictionless: `1/pivot` in `[0][0]`), `p_t = ratio p_n` in slip, and the
-    /// bound `a + b |p_{0…c}|` of the combination's largest impulse.
+    /// Per contact: its mode, the slot of the Schur complement it is eliminated from, its
+    /// pivot's inverse (stick: the `2 × 2` block's; slip or frictionless: `1/pivot` in
+    /// `[0][0]`), `p_t = ratio p_n` in slip, and [`RULED_OUT`] times the bound
+    /// `a + b |p_{0…c}|` of the combination's largest impulse (as the pair `(a, b)`).
     mode: [Mode; MAX_CONTACTS],
     slot: [usize; MAX_CONTACTS],
     inv: [[[f64; 2]; 2]; MAX_CONTACTS],
     ratio: [f64; MAX_CONTACTS],
     bound: [(f64, f64); MAX_CONTACTS],
+    /// `RULED_OUT vmax`.
+    tv: f64,
     /// The Schur complements and their right-hand sides (slot `K − 1`: `W`).
     mats: [[f64; N]; R],
     rhs: [[f64; N]; MAX_CONTACTS],
@@ -512,6 +514,7 @@ impl<'a, const N: usize, const R: usize> Tree<'a, N, R> {
             inv: [[[0.0; 2]; 2]; MAX_CONTACTS],
             ratio: [0.0; MAX_CONTACTS],
             bound: [(0.0, 1.0); MAX_CONTACTS],
+            tv: 0.0,
             mats: [[0.0; N]; R],
             rhs: [[0.0; N]; MAX_CONTACTS],
             found,
@@ -525,6 +528,7 @@ impl<'a, const N: usize, const R: usize> Tree<'a, N, R> {
             tree.vmax = larger(tree.vmax, s.v[i].abs());
             tree.wrow = larger(tree.wrow, s.w[i][..N].iter().map(|x| x.abs()).sum());
         }
+        tree.tv = RULED_OUT * tree.vmax;
         tree.branch(k - 1, k - 1, 0.0, 1.0, 0);
     }
 
@@ -547,7 +551,7 @@ impl<'a, const N: usize, const R: usize> Tree<'a, N, R> {
             return self.last(slot, a, b, active);
         }
         self.slot[c] = slot;
-        self.bound[c] = (a, b);
+        self.bound[c] = (RULED_OUT * a, RULED_OUT * b);
         self.mode[c] = Mode::Off;
         self.branch(c - 1, slot, a, b, active);
         let mu = self.s.mu[c];
@@ -756,11 +760,13 @@ impl<'a, const N: usize, const R: usize> Tree<'a, N, R> {
                 xt += row_t[i] * p[i];
                 xn += row_n[i] * p[i];
             }
-            let (a, b) = self.bound[c];
+            // The tolerances: RULED_OUT of the bounds a + b |p| (impulses) and
+            // vmax + wrow (a + b |p|) (velocities).
+            let (ta, tb) = self.bound[c];
             let mode = self.mode[c];
             let (pt, pn) = match mode {
                 Mode::Off => {
-                    if xn - rhs[n] < -RULED_OUT * (self.vmax + self.wrow * (a + b * known)) {
+                    if xn - rhs[n] < -(self.tv + self.wrow * (ta + tb * known)) {
                         return false;
                     }
                     continue;
@@ -781,8 +787,7 @@ impl<'a, const N: usize, const R: usize> Tree<'a, N, R> {
             p[t] = pt;
             p[n] = pn;
             known = larger(known, larger(pt.abs(), pn.abs()));
-            let pbound = a + b * known;
-            let tolp = RULED_OUT * pbound;
+            let tolp = ta + tb * known;
             if -pn > tolp {
                 return false;
             }
@@ -790,7 +795,7 @@ impl<'a, const N: usize, const R: usize> Tree<'a, N, R> {
                 Mode::Stick => pt.abs() - s.mu[c] * pn > tolp,
                 Mode::SlipPos | Mode::SlipNeg => {
                     let vt = xt + row_t[t] * pt + row_t[n] * pn - rhs[t];
-                    let tolv = RULED_OUT * (self.vmax + self.wrow * pbound);
+                    let tolv = self.tv + self.wrow * tolp;
                     if mode == Mode::SlipPos {
                         vt < -tolv
                     } else {
