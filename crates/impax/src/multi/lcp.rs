@@ -215,7 +215,7 @@ impl<const N: usize> Found<N> {
     }
 }
 
-/// The problem in the canonical units, on the stack (`N ≥ 2K`).
+/// The problem in the canonical units, on the stack (`N = 2K`).
 struct Setup<const N: usize> {
     k: usize,
     w: [[f64; N]; N],
@@ -488,8 +488,9 @@ fn exceeds(x: f64, bound: f64) -> bool {
     x > bound
 }
 
-/// The larger of two numbers (`b` if either is NaN: every use below errs on the side of
-/// keeping a combination, whose exact solve then decides).
+/// The larger of two numbers, without `f64::max`'s handling of NaN (which costs more): the
+/// tree's numbers are finite (the inputs scaled, the pivots bounded away from zero), and
+/// where a NaN did reach a tolerance, the tolerance would be NaN and rule nothing out.
 #[inline(always)]
 fn larger(a: f64, b: f64) -> f64 {
     if a > b {
