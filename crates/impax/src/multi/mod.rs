@@ -56,7 +56,7 @@ pub(crate) mod validate;
 
 pub use outcome::{
     is_energy_gain, BinaryImpact, ContactPhase, ContactPhaseKind, ContactResult, LcpSolution,
-    LzbPrimary, MultiDetail, MultiOutcome, MultiResolution, VELOCITY_ROUND_OFF,
+    LzbPrimary, MultiDetail, MultiOutcome, MultiResolution, PerContact, Phases, VELOCITY_ROUND_OFF,
 };
 pub use problem::{MultiProblem, HERTZ_EXPONENT, RANGE_TOL, RANK_TOL};
 pub use scenarios::MultiScenario;

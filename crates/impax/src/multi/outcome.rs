@@ -75,13 +75,125 @@ pub struct ContactResult {
     /// The regimes in order (`lcp`: one; `sequential`: those of every binary impact at this
     /// contact, one `off` if it had none; `lzb`: the tangential regimes while the contact
     /// carries a force, `off` between two engagements, one `off` if it never engaged).
-    pub phases: Vec<ContactPhase>,
+    pub phases: Phases,
     /// The work done at this contact, `∫ v_n dp_n` split at the end of its compression, and
     /// `∫ v_t dp_t`, along the law's path (`lcp`: the straight path `s p`, `0 ≤ s ≤ 1`, of all
     /// the impulses together; `sequential`: the binary impacts'; `lzb`: its integrated path,
     /// the normal work split by the sign of `v_n`). The contacts' works sum to `ΔT` (`lzb`: to
     /// the integration's tolerance).
     pub work: WorkSplit,
+}
+
+/// The phases of one contact ([`ContactResult::phases`]), in order: a slice, by
+/// dereference; the first two held in place (no allocation), more on the heap.
+///
+/// ```
+/// use impax::multi::{lcp, MultiProblem};
+/// let p = MultiProblem::from_upper(1, &[3.5, 0.0, 1.0], &[0.5, -0.866], &[0.4], &[0.7]).unwrap();
+/// let out = lcp::resolve(&p).unwrap();
+/// let phases = &out.contacts[0].phases;
+/// assert_eq!(phases.len(), 1);
+/// for ph in phases {
+///     assert!(ph.ends_at > 0.0);
+/// }
+/// ```
+#[derive(Clone)]
+pub struct Phases {
+    /// How many are in `first` (while `more` is empty).
+    len: usize,
+    first: [ContactPhase; 2],
+    /// Every phase, once there are more than two.
+    more: Vec<ContactPhase>,
+}
+
+impl Phases {
+    /// No phase.
+    pub fn new() -> Self {
+        let none = ContactPhase {
+            kind: ContactPhaseKind::Off,
+            ends_at: 0.0,
+        };
+        Phases {
+            len: 0,
+            first: [none; 2],
+            more: Vec::new(),
+        }
+    }
+
+    /// One phase.
+    pub fn one(phase: ContactPhase) -> Self {
+        let mut out = Phases::new();
+        out.push(phase);
+        out
+    }
+
+    /// Append a phase.
+    pub fn push(&mut self, phase: ContactPhase) {
+        if self.more.is_empty() {
+            if self.len < self.first.len() {
+                self.first[self.len] = phase;
+                self.len += 1;
+                return;
+            }
+            self.more.extend_from_slice(&self.first[..self.len]);
+        }
+        self.more.push(phase);
+    }
+}
+
+impl Default for Phases {
+    fn default() -> Self {
+        Phases::new()
+    }
+}
+
+impl std::ops::Deref for Phases {
+    type Target = [ContactPhase];
+    fn deref(&self) -> &[ContactPhase] {
+        if self.more.is_empty() {
+            &self.first[..self.len]
+        } else {
+            &self.more
+        }
+    }
+}
+
+impl std::ops::DerefMut for Phases {
+    fn deref_mut(&mut self) -> &mut [ContactPhase] {
+        if self.more.is_empty() {
+            &mut self.first[..self.len]
+        } else {
+            &mut self.more
+        }
+    }
+}
+
+impl<'a> IntoIterator for &'a Phases {
+    type Item = &'a ContactPhase;
+    type IntoIter = std::slice::Iter<'a, ContactPhase>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.iter()
+    }
+}
+
+impl<'a> IntoIterator for &'a mut Phases {
+    type Item = &'a mut ContactPhase;
+    type IntoIter = std::slice::IterMut<'a, ContactPhase>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.iter_mut()
+    }
+}
+
+impl fmt::Debug for Phases {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_list().entries(self.iter()).finish()
+    }
+}
+
+impl PartialEq for Phases {
+    fn eq(&self, other: &Self) -> bool {
+        **self == **other
+    }
 }
 
 impl ContactResult {
@@ -106,14 +218,83 @@ impl ContactResult {
 pub struct LcpSolution {
     /// Each contact's regime: `off`, `stick`, `slip+` or `slip-` (`slip±`/`no-slip` by the
     /// slip after at a frictionless contact).
-    pub regimes: Vec<ContactPhaseKind>,
+    pub regimes: PerContact<ContactPhaseKind>,
     /// The impulses, one per contact (module docs of [`super::lcp`] for the choice when `W` is
     /// singular).
-    pub impulses: Vec<Vec2>,
+    pub impulses: PerContact<Vec2>,
     /// The contact velocities after, one per contact.
-    pub velocities_after: Vec<Vec2>,
+    pub velocities_after: PerContact<Vec2>,
     /// `ΔT = ½ Σ_j (v_j⁻ + v_j⁺)·p_j`.
     pub energy_change: f64,
+}
+
+/// One value per contact of an [`LcpSolution`], held in place (no allocation; at most
+/// [`super::lcp::MAX_CONTACTS`] contacts): a slice, by dereference.
+///
+/// ```
+/// use impax::multi::{lcp, MultiProblem};
+/// let p = MultiProblem::from_upper(1, &[3.5, 0.0, 1.0], &[0.5, -0.866], &[0.4], &[0.7]).unwrap();
+/// let s = &lcp::solutions(&p)[0];
+/// assert_eq!(s.impulses.len(), 1);
+/// let all: &[impax::math::Vec2] = &s.impulses;
+/// assert_eq!(all[0], s.impulses[0]);
+/// ```
+#[derive(Clone, Copy)]
+pub struct PerContact<T: Copy> {
+    len: usize,
+    items: [T; super::lcp::MAX_CONTACTS],
+}
+
+impl<T: Copy> PerContact<T> {
+    /// `len` copies of `value` (`len ≤` [`super::lcp::MAX_CONTACTS`]).
+    pub(crate) fn filled(len: usize, value: T) -> Self {
+        assert!(len <= super::lcp::MAX_CONTACTS);
+        Self {
+            len,
+            items: [value; super::lcp::MAX_CONTACTS],
+        }
+    }
+}
+
+impl<T: Copy> std::ops::Deref for PerContact<T> {
+    type Target = [T];
+    fn deref(&self) -> &[T] {
+        &self.items[..self.len]
+    }
+}
+
+impl<T: Copy> std::ops::DerefMut for PerContact<T> {
+    fn deref_mut(&mut self) -> &mut [T] {
+        &mut self.items[..self.len]
+    }
+}
+
+impl<'a, T: Copy> IntoIterator for &'a PerContact<T> {
+    type Item = &'a T;
+    type IntoIter = std::slice::Iter<'a, T>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.iter()
+    }
+}
+
+impl<'a, T: Copy> IntoIterator for &'a mut PerContact<T> {
+    type Item = &'a mut T;
+    type IntoIter = std::slice::IterMut<'a, T>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.iter_mut()
+    }
+}
+
+impl<T: Copy + fmt::Debug> fmt::Debug for PerContact<T> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_list().entries(self.iter()).finish()
+    }
+}
+
+impl<T: Copy + PartialEq> PartialEq for PerContact<T> {
+    fn eq(&self, other: &Self) -> bool {
+        **self == **other
+    }
 }
 
 /// One binary impact of [`super::sequential`]: a contact resolved alone by `energetic`.
@@ -218,28 +399,49 @@ impl MultiOutcome {
 
     /// Whether every number of the outcome, its detail included, is finite.
     pub fn is_finite(&self) -> bool {
-        let finite = |v: &Vec2| v.iter().all(|x| x.is_finite());
-        let detail = match &self.detail {
-            MultiDetail::Lcp { solutions } => solutions.iter().all(|s| {
-                s.energy_change.is_finite()
-                    && s.impulses.iter().chain(&s.velocities_after).all(finite)
-            }),
-            MultiDetail::Sequential { impacts } => impacts
-                .iter()
-                .all(|b| finite(&b.velocity_before) && b.outcome.is_finite()),
-            MultiDetail::Lzb { primaries, .. } => primaries.iter().all(|p| p.impulse.is_finite()),
-            MultiDetail::OneContact { .. } => true,
-        };
-        detail
-            && self.energy_change.is_finite()
-            && self.contacts.iter().all(|c| {
-                finite(&c.impulse)
-                    && finite(&c.velocity_after)
-                    && [c.work.compression, c.work.restitution, c.work.friction]
-                        .iter()
-                        .all(|x| x.is_finite())
-                    && c.phases.iter().all(|p| p.ends_at.is_finite())
-            })
+        // `x · 0` is ±0 for a finite `x` and NaN otherwise: one sum of them tells whether every
+        // number is finite, without a branch per number.
+        let mut zero = 0.0 * self.energy_change;
+        let mut add = |x: f64| zero += x * 0.0;
+        for c in &self.contacts {
+            add(c.impulse.x);
+            add(c.impulse.y);
+            add(c.velocity_after.x);
+            add(c.velocity_after.y);
+            add(c.work.compression);
+            add(c.work.restitution);
+            add(c.work.friction);
+            for p in &c.phases {
+                add(p.ends_at);
+            }
+        }
+        match &self.detail {
+            MultiDetail::Lcp { solutions } => {
+                for s in solutions {
+                    add(s.energy_change);
+                    for x in s.impulses.iter().chain(&s.velocities_after) {
+                        add(x.x);
+                        add(x.y);
+                    }
+                }
+            }
+            MultiDetail::Sequential { impacts } => {
+                for b in impacts {
+                    add(b.velocity_before.x);
+                    add(b.velocity_before.y);
+                    if !b.outcome.is_finite() {
+                        return false;
+                    }
+                }
+            }
+            MultiDetail::Lzb { primaries, .. } => {
+                for p in primaries {
+                    add(p.impulse);
+                }
+            }
+            MultiDetail::OneContact { .. } => {}
+        }
+        zero == 0.0
     }
 
     /// A one-contact outcome as the outcome of a problem with one contact.
@@ -247,7 +449,7 @@ impl MultiOutcome {
         let mut contact = ContactResult {
             impulse: o.impulse,
             velocity_after: o.velocity_after,
-            phases: Vec::new(),
+            phases: Phases::new(),
             work: o.work,
         };
         for p in o.phases.as_slice() {
@@ -281,38 +483,44 @@ pub fn is_energy_gain(
     v_after: &[Vec2],
 ) -> bool {
     let (u, w, v, _) = problem.canonical();
-    let scaled =
-        |x: &[Vec2], f: &dyn Fn(f64) -> f64| -> Vec<Vec2> { x.iter().map(|y| y.map(f)).collect() };
-    let p = scaled(p, &|x| x * u.a / u.b);
-    let va = scaled(v_after, &|x| x * u.a);
-    energy_gain(w, v, energy_change * u.a * u.a / u.b, &p, &va)
+    energy_gain(
+        w,
+        v,
+        energy_change * u.a * u.a / u.b,
+        |j| p[j].map(|x| x * u.a / u.b),
+        |j| v_after[j].map(|x| x * u.a),
+    )
 }
 
-/// [`is_energy_gain`] in the canonical units.
+/// [`is_energy_gain`] in the canonical units, with contact `j`'s impulse `p(j)` and velocity
+/// after `v_after(j)`.
 fn energy_gain(
     w: &DMatrix<f64>,
     v: &DVector<f64>,
     energy_change: f64,
-    p: &[Vec2],
-    v_after: &[Vec2],
+    p: impl Fn(usize) -> Vec2,
+    v_after: impl Fn(usize) -> Vec2,
 ) -> bool {
     if energy_change <= 0.0 {
         return false;
     }
     let n = v.len();
-    let flat = |i: usize, x: &[Vec2]| {
-        if i.is_multiple_of(2) {
-            x[i / 2].x
-        } else {
-            x[i / 2].y
-        }
-    };
     let mut scale = 0.0;
     for i in 0..n {
-        let wp: f64 = (0..n).map(|k| w[(i, k)].abs() * flat(k, p).abs()).sum();
-        scale += (v[i].abs() + flat(i, v_after).abs() + wp) * flat(i, p).abs();
+        let wp: f64 = (0..n).map(|k| w[(i, k)].abs() * flat(k, &p).abs()).sum();
+        scale += (v[i].abs() + flat(i, &v_after).abs() + wp) * flat(i, &p).abs();
     }
     energy_change > ENERGY_GAIN_ROUND_OFF * scale
+}
+
+/// Component `i` of the contact-major vector whose contact `j` is `x(j)`.
+#[inline(always)]
+fn flat(i: usize, x: &impl Fn(usize) -> Vec2) -> f64 {
+    if i.is_multiple_of(2) {
+        x(i / 2).x
+    } else {
+        x(i / 2).y
+    }
 }
 
 /// The relative round-off below which a negative normal velocity after is not "approaching"
@@ -320,15 +528,22 @@ fn energy_gain(
 /// conditions of [`super::lcp`].
 pub const VELOCITY_ROUND_OFF: f64 = 1e-9;
 
-/// `max_i (|v⁻_i| + (|W| |p|)_i)`: the scale of the velocities of an impact.
-pub(crate) fn velocity_scale(w: &DMatrix<f64>, v: &DVector<f64>, p: &[Vec2]) -> f64 {
+/// `max_i (|v⁻_i| + (|W| |p|)_i)`: the scale of the velocities of an impact (`p(j)` contact
+/// `j`'s impulse, `k` contacts).
+pub(crate) fn velocity_scale(
+    w: &DMatrix<f64>,
+    v: &DVector<f64>,
+    k: usize,
+    p: impl Fn(usize) -> Vec2,
+) -> f64 {
     let n = v.len();
     (0..n)
         .map(|i| {
             v[i].abs()
-                + (0..p.len())
+                + (0..k)
                     .map(|j| {
-                        w[(i, 2 * j)].abs() * p[j].x.abs() + w[(i, 2 * j + 1)].abs() * p[j].y.abs()
+                        let pj = p(j);
+                        w[(i, 2 * j)].abs() * pj.x.abs() + w[(i, 2 * j + 1)].abs() * pj.y.abs()
                     })
                     .sum::<f64>()
         })
@@ -379,14 +594,18 @@ pub(crate) fn assemble_ending(
                 + (v[2 * j + 1] + c.velocity_after.y) * c.impulse.y)
         })
         .sum();
-    let p: Vec<Vec2> = contacts.iter().map(|c| c.impulse).collect();
-    let va: Vec<Vec2> = contacts.iter().map(|c| c.velocity_after).collect();
+    let p = |j: usize| contacts[j].impulse;
+    let va = |j: usize| contacts[j].velocity_after;
     let inconsistency = inconsistency.or_else(|| {
-        let tol = VELOCITY_ROUND_OFF * velocity_scale(w, v, &p);
-        let least = va.iter().map(|x| x.y).fold(f64::INFINITY, f64::min);
-        (least < -tol).then_some(Inconsistency::StillApproaching {
-            normal_velocity: least,
-        })
+        let least = contacts
+            .iter()
+            .map(|c| c.velocity_after.y)
+            .fold(f64::INFINITY, f64::min);
+        // (The scale only when a contact approaches at all: a tolerance is never negative.)
+        (least < 0.0 && least < -VELOCITY_ROUND_OFF * velocity_scale(w, v, contacts.len(), p))
+            .then_some(Inconsistency::StillApproaching {
+                normal_velocity: least,
+            })
     });
     let established = match ending {
         Ending::Exact => energy_change,
@@ -395,7 +614,7 @@ pub(crate) fn assemble_ending(
             energy_change - 2.0 * (energy_change - works).abs()
         }
     };
-    let verdict = if energy_gain(w, v, established, &p, &va) {
+    let verdict = if energy_gain(w, v, established, p, va) {
         Verdict::EnergyGained
     } else if inconsistency.is_some() {
         Verdict::InconsistentAssumption

@@ -79,7 +79,7 @@ pub fn resolve(problem: &MultiProblem) -> MultiResolution {
         .map(|_| ContactResult {
             impulse: Vec2::zeros(),
             velocity_after: Vec2::zeros(),
-            phases: Vec::new(),
+            phases: crate::multi::Phases::new(),
             work: WorkSplit::default(),
         })
         .collect();

@@ -65,6 +65,25 @@ impl ForceLaw {
         ForceLaw { eta, power, m }
     }
 
+    /// `x^(m−1)` by repeated squaring, as `f64::powi` computes it (`x` itself for the
+    /// common `m = 2`), without the call `powi` makes (which the compiler would also make
+    /// where the result is not needed).
+    #[inline(always)]
+    pub(in crate::multi) fn power_m1(&self, x: f64) -> f64 {
+        let (mut base, mut n, mut out) = (x, self.m - 1, 1.0);
+        debug_assert!(n >= 0);
+        loop {
+            if n & 1 != 0 {
+                out *= base;
+            }
+            n >>= 1;
+            if n == 0 {
+                return out;
+            }
+            base *= base;
+        }
+    }
+
     /// The normal force `κ s^η` (zero for `s ≤ 0`).
     #[inline(always)]
     pub(in crate::multi) fn force(&self, kappa: f64, s: f64) -> f64 {
@@ -81,10 +100,17 @@ impl ForceLaw {
         s.max(0.0) * self.force(kappa, s) / (self.eta + 1.0)
     }
 
-    /// The primary's ordering quantity `κ^(1/(η+1)) s`, increasing with the stored energy.
+    /// The factor `κ^(1/(η+1))` of the primary's ordering quantity, once per contact.
     #[inline]
-    pub(in crate::multi) fn energy_order(&self, kappa: f64, s: f64) -> f64 {
-        kappa.powf(1.0 / (self.eta + 1.0)) * s.max(0.0)
+    pub(in crate::multi) fn order(&self, kappa: f64) -> f64 {
+        kappa.powf(1.0 / (self.eta + 1.0))
+    }
+
+    /// The primary's ordering quantity `κ^(1/(η+1)) s` from the contact's factor `order`
+    /// ([`ForceLaw::order`]), increasing with the stored energy.
+    #[inline]
+    pub(in crate::multi) fn energy_order(&self, order: f64, s: f64) -> f64 {
+        order * s.max(0.0)
     }
 
     /// The deflection that stores `energy`.

@@ -248,7 +248,7 @@ fn one_contact(problem: &MultiProblem) -> MultiResolution {
     let mut contact = ContactResult {
         impulse: o.impulse,
         velocity_after: o.velocity_after,
-        phases: Vec::new(),
+        phases: crate::multi::Phases::new(),
         work: o.work,
     };
     for ph in o.phases.as_slice() {

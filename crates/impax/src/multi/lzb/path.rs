@@ -9,10 +9,16 @@
 //! the discrete solution differ by less than the step's error; where the event's function is
 //! there a hair below zero, the regime it starts is offset so that it starts below zero all
 //! the same: `events.rs`).
+//!
+//! After an event the path goes on with the step that crossed it, shortened by `e_j` where
+//! contact `j`'s compression ended (it then expands `1/e_j²` times faster); a separation's
+//! variable starts with the current step of `τ` as a step of `σ`, at most the whole way to
+//! the separation. Between two events the right-hand side is that of one set of regimes, built
+//! once ([`Field`]).
 
 use super::common::{grow, guard, shrink, NormalWork, Primary};
 use super::events::{self, Event};
-use super::field::{eval, tangential_acceleration, tangential_rates, Eval};
+use super::field::{eval, tangential_acceleration, tangential_rates, Eval, Field};
 use super::friction::{choose, rebuild, Allowed};
 use super::state::{Modes, Normal, Setup, StickSet, Tangent, MAXK, PER, PN, PT, S, WT};
 use super::variable::Var;
@@ -75,62 +81,147 @@ fn start(setup: &Setup) -> (Var, f64, f64) {
     }
 }
 
+/// The integration's state between two accepted points: the variable and where it is, the
+/// step to try, the regimes and their field, the derivative at the point, the events
+/// watched and their functions there.
+struct Stepper<'a, const N: usize> {
+    setup: &'a Setup,
+    var: Var,
+    x: f64,
+    h: f64,
+    modes: Modes,
+    field: Field,
+    k1: [f64; N],
+    watch: events::Watch,
+    g_a: [f64; 3 * MAXK],
+    /// The shortest time a contact alone would compress in, and where the start in `u`
+    /// ends (a quarter of it).
+    shortest: f64,
+    root_end: f64,
+}
+
+impl<'a, const N: usize> Stepper<'a, N> {
+    /// The start ([`start`]) from the point `y` in the regimes `modes`.
+    fn start(setup: &'a Setup, modes: Modes, y: &[f64; N]) -> Self {
+        let (var, h, shortest) = start(setup);
+        let field = Field::new(setup, &modes);
+        let k1 = var.rhs::<N>(setup, &field, 0.0, y);
+        let ev = field.eval::<N>(setup, y);
+        let watch = events::watch(setup, &modes, y, &ev);
+        let g_a = events::values(setup, &modes, &watch, y, &ev);
+        Stepper {
+            setup,
+            var,
+            x: 0.0,
+            h,
+            modes,
+            field,
+            k1,
+            watch,
+            g_a,
+            shortest,
+            root_end: 0.25 * shortest,
+        }
+    }
+
+    /// On from the point `y` in the regimes `modes` (changed by an event; `field` theirs,
+    /// `ev` the point's quantities in it) with the step `h` of `τ`: in time, or in a
+    /// separation's variable if one is near.
+    fn restart(&mut self, modes: Modes, field: Field, ev: &Eval, y: &[f64; N], h: f64) {
+        let setup = self.setup;
+        self.modes = modes;
+        self.field = field;
+        self.var = Var::Time.next(setup, &modes, 0.0, h, y, &ev.v, self.root_end);
+        (self.x, self.h) = self.var.start_from_time(setup, y, h, &ev.v);
+        self.k1 = self.var.rhs::<N>(setup, &self.field, self.x, y);
+        self.watch = events::watch(setup, &modes, y, ev);
+        self.g_a = events::values(setup, &modes, &self.watch, y, ev);
+    }
+
+    /// The step `h` of the current variable at `x` (velocities `v`) as a step of `τ`.
+    fn time_step(&self, h: f64, v: &[f64; 2 * MAXK]) -> f64 {
+        guard(self.var.to_time(self.setup, self.x, h, v), self.shortest)
+    }
+
+    /// The first of the events whose functions go from `g_a` to `g_b` across the step (the
+    /// watched ones that `crosses`), located on the step's dense output: its fraction of the
+    /// step and its index in the watch.
+    fn first_event(
+        &self,
+        dense: &Dense<N>,
+        g_b: &[f64; 3 * MAXK],
+        crosses: impl Fn(usize) -> bool,
+    ) -> (f64, usize) {
+        let (setup, watch) = (self.setup, &self.watch);
+        let mut first: Option<(f64, usize)> = None;
+        for i in (0..watch.n).filter(|&i| crosses(i)) {
+            let seed = if self.g_a[i] == 0.0 {
+                0.0
+            } else {
+                let g = |th: f64| {
+                    let z = dense.at(th);
+                    let ev = self.field.eval::<N>(setup, &z);
+                    events::value(setup, &self.modes, watch, i, &z, &ev)
+                };
+                illinois(g, 0.0, self.g_a[i], 1.0, g_b[i])
+            };
+            if first.is_none_or(|(th, _)| seed < th) {
+                first = Some((seed, i));
+            }
+        }
+        first.expect("a crossing")
+    }
+}
+
 /// Integrate the impact to its end (module docs of [`super`]); `N = 4K`.
 pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason> {
     debug_assert_eq!(N, PER * setup.k);
-    let k = setup.k;
     let mut y = [0.0; N];
     let mut path = Path::start(setup, &y);
-    let (mut var, mut h, shortest) = start(setup);
-    let mut x = 0.0;
-    let root_end = 0.25 * shortest;
+    let mut it = Stepper::<N>::start(setup, path.modes, &y);
     let (mut attempts, mut steps) = (0usize, 0usize);
-    let mut modes = path.modes;
-    let mut k1 = var.rhs::<N>(setup, &modes, x, &y);
-    let ev0 = eval(setup, &modes, &y);
-    let mut watch = events::watch(setup, &modes, &y, &ev0);
-    let mut g_a = events::values(setup, &modes, &watch, &y, &ev0);
-    while (0..k).any(|j| modes.active(j)) {
+    while (0..setup.k).any(|j| it.modes.active(j)) {
         attempts += 1;
         if attempts > MAX_STEPS {
             return Err(BreakdownReason::TooManySteps { limit: MAX_STEPS });
         }
+        let (var, x) = (it.var, it.x);
         // A separation ends exactly at σ = 0.
-        let lands = matches!(var, Var::Separation { .. }) && x + h <= 0.0;
+        let lands = matches!(var, Var::Separation { .. }) && x + it.h <= 0.0;
         if lands {
-            h = -x;
+            it.h = -x;
         }
-        let f = |xx: f64, yy: &[f64; N]| var.rhs::<N>(setup, &modes, xx, yy);
-        let st = dop853_step(&f, x, &y, &k1, h);
+        let h = it.h;
+        let field = &it.field;
+        let f = |xx: f64, yy: &[f64; N]| var.rhs::<N>(setup, field, xx, yy);
+        let st = dop853_step(&f, x, &y, &it.k1, h);
         let en = error_measure(&st, |i| {
             setup.atol[i] + RTOL * y[i].abs().max(st.y[i].abs())
         });
         // (NaN: rejected.)
         if en.is_nan() || en > 1.0 {
-            h *= shrink(en);
+            it.h *= shrink(en);
             continue;
         }
         let y1 = st.y;
-        let (k_end, ev_b) = var.rhs_eval::<N>(setup, &modes, x + h, &y1);
-        let g_b = events::values(setup, &modes, &watch, &y1, &ev_b);
+        let (k_end, ev_b) = var.rhs_eval::<N>(setup, field, x + h, &y1);
+        let g_b = events::values(setup, &it.modes, &it.watch, &y1, &ev_b);
         // (In the separation variable its own separation is the end of the range.)
         let own = var.separating();
-        let crosses = |i: usize| {
-            g_a[i] <= 0.0 && g_b[i] > 0.0 && Some(watch.list[i]) != own.map(Event::Separation)
-        };
-        let crossing = (0..watch.n).any(crosses);
-        if !crossing && settled(setup, &modes, &y1, &ev_b.v) {
-            y = y1;
-            steps += 1;
-            path.end_settled(&y);
-            break;
-        }
+        let (g_a, list) = (&it.g_a, &it.watch.list);
+        let crosses =
+            |i: usize| g_a[i] <= 0.0 && g_b[i] > 0.0 && Some(list[i]) != own.map(Event::Separation);
+        let crossing = (0..it.watch.n).any(crosses);
         if !crossing {
-            if let Some(stored) = jammed(setup, &modes, &y1, &ev_b) {
+            if settled(setup, &it.modes, &y1, &ev_b.v) {
+                y = y1;
+                steps += 1;
+                path.end_settled(&y);
+                break;
+            }
+            if let Some(stored) = jammed(setup, &it.modes, &y1, &ev_b) {
                 return Err(BreakdownReason::Jammed { stored });
             }
-        }
-        if !crossing {
             path.follow_primary(1.0, &y, &y1, &|| Dense::new(&f, x, &y, &st, &k_end, h));
             y = y1;
             steps += 1;
@@ -141,54 +232,35 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
                     path.end_settled(&y);
                     break;
                 }
-                modes = path.modes;
-                let ev = eval(setup, &modes, &y);
-                h = guard(var.to_time(setup, x, h, &ev_b.v), shortest);
-                var = Var::Time.next(setup, &modes, 0.0, h, &y, &ev.v, root_end);
-                (x, h) = var.start_from_time(setup, &y, h);
-                k1 = var.rhs::<N>(setup, &modes, x, &y);
-                watch = events::watch(setup, &modes, &y, &ev);
-                g_a = events::values(setup, &modes, &watch, &y, &ev);
+                let ht = it.time_step(h, &ev_b.v);
+                let field = Field::new(setup, &path.modes);
+                let ev = field.eval::<N>(setup, &y);
+                it.restart(path.modes, field, &ev, &y, ht);
                 continue;
             }
-            x += h;
-            k1 = k_end;
-            g_a = g_b;
-            h *= grow(en);
+            it.x += h;
+            it.k1 = k_end;
+            it.g_a = g_b;
+            it.h = h * grow(en);
             // The next variable: the start ends in u; a separation nears or stops nearing.
-            let next = var.next(setup, &modes, x, h, &y1, &ev_b.v, root_end);
+            let next = var.next(setup, &it.modes, it.x, it.h, &y1, &ev_b.v, it.root_end);
             if next != var {
-                h = guard(var.to_time(setup, x, h, &ev_b.v), shortest);
-                (x, h) = next.start_from_time(setup, &y, h);
-                var = next;
-                k1 = var.rhs::<N>(setup, &modes, x, &y);
+                let ht = it.time_step(it.h, &ev_b.v);
+                (it.x, it.h) = next.start_from_time(setup, &y, ht, &ev_b.v);
+                it.var = next;
+                it.k1 = next.rhs::<N>(setup, field, it.x, &y);
             }
             continue;
         }
         // The first event inside the step, located on the dense output.
         let dense = Dense::new(&f, x, &y, &st, &k_end, h);
-        let mut first: Option<(f64, usize)> = None;
-        for i in (0..watch.n).filter(|&i| crosses(i)) {
-            let seed = if g_a[i] == 0.0 {
-                0.0
-            } else {
-                let g = |th: f64| {
-                    let z = dense.at(th);
-                    events::value(setup, &modes, &watch, i, &z, &eval(setup, &modes, &z))
-                };
-                illinois(g, 0.0, g_a[i], 1.0, g_b[i])
-            };
-            if first.is_none_or(|(th, _)| seed < th) {
-                first = Some((seed, i));
-            }
-        }
-        let (seed, i) = first.expect("a crossing");
-        let event = watch.list[i];
+        let (seed, i) = it.first_event(&dense, &g_b, crosses);
+        let event = it.watch.list[i];
         // On the discrete solution: re-step from the step's start to the seed.
         let (theta, ye) = if seed == 0.0 {
             (0.0, y)
         } else {
-            (seed, dop853_step(&f, x, &y, &k1, seed * h).y)
+            (seed, dop853_step(&f, x, &y, &it.k1, seed * h).y)
         };
         path.follow_primary(theta, &y, &ye, &|| Dense::new(&f, x, &y, &st, &k_end, h));
         y = ye;
@@ -198,16 +270,17 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
             path.end_settled(&y);
             break;
         }
-        // On from the event (its regimes may have changed): in time, or in a separation's
-        // variable if one is near.
-        modes = path.modes;
-        let ev = eval(setup, &modes, &y);
-        h = guard(var.to_time(setup, x, h, &ev.v), shortest);
-        var = Var::Time.next(setup, &modes, 0.0, h, &y, &ev.v, root_end);
-        (x, h) = var.start_from_time(setup, &y, h);
-        k1 = var.rhs::<N>(setup, &modes, x, &y);
-        watch = events::watch(setup, &modes, &y, &ev);
-        g_a = events::values(setup, &modes, &watch, &y, &ev);
+        // On from the event (its regimes may have changed).
+        let field = Field::new(setup, &path.modes);
+        let ev = field.eval::<N>(setup, &y);
+        let mut ht = it.time_step(h, &ev.v);
+        if let Event::CompressionEnd(j) = event {
+            // The contact now expands 1/e² times faster (ds/dτ = −v_n/e²): a shorter step.
+            if setup.e[j] > 0.0 {
+                ht *= setup.e[j];
+            }
+        }
+        it.restart(path.modes, field, &ev, &y, ht);
     }
     Ok(path.finish(&y, steps))
 }
@@ -296,7 +369,7 @@ impl<'a> Path<'a> {
                 result: ContactResult {
                     impulse: Vec2::zeros(),
                     velocity_after: Vec2::zeros(),
-                    phases: Vec::new(),
+                    phases: crate::multi::Phases::new(),
                     work: WorkSplit::default(),
                 },
                 engaged: modes.active(j),

@@ -49,6 +49,9 @@ pub(super) struct Setup {
     /// The force law `F = κ s^η` and the power `m` of the regularising variables
     /// (`variable.rs`).
     pub law: ForceLaw,
+    /// `κ_j^(1/(η+1))`, the factor of the primary's ordering quantity
+    /// ([`Setup::energy_order`]).
+    pub order: [f64; MAXK],
     /// A contact approaches while `v_n < −approach`: [`super::APPROACH_ROUND_OFF`] times
     /// `max_i |v⁻_i|`. Also the tangential speed below which a contact joining or starting
     /// is taken at rest.
@@ -77,6 +80,7 @@ impl Setup {
             e: [0.0; MAXK],
             kappa: [0.0; MAXK],
             law: ForceLaw::new(problem.exponent()),
+            order: [0.0; MAXK],
             approach: 0.0,
             settled: 0.0,
             units,
@@ -93,6 +97,9 @@ impl Setup {
             s.e[j] = problem.restitutions()[j];
         }
         stiffness_ratios(problem.stiffnesses(), &mut s.kappa[..k]);
+        for j in 0..k {
+            s.order[j] = s.law.order(s.kappa[j]);
+        }
         let vmax = s.v0[..2 * k].iter().fold(0.0f64, |m, x| m.max(x.abs()));
         s.approach = super::APPROACH_ROUND_OFF * vmax;
         s.settled = super::SETTLED * vmax;
@@ -124,7 +131,7 @@ impl Setup {
     /// The primary's ordering quantity `κ_j^(1/(η+1)) s_j`, increasing with `Ê_j`.
     #[inline]
     pub(super) fn energy_order(&self, j: usize, s: f64) -> f64 {
-        self.law.energy_order(self.kappa[j], s)
+        self.law.energy_order(self.order[j], s)
     }
 }
 

@@ -21,7 +21,7 @@
 //! `v_nj = 0` with `s_j ∝ (τ − τ_j)²`, so its force `∝ (τ − τ_j)^(2η)` is analytic for
 //! `η = 3/2`. Any event returns the path to `τ`.
 
-use super::field::{rates, Eval};
+use super::field::{Eval, Field};
 use super::state::{Modes, Normal, Setup, MAXK, PER, S};
 
 /// The variable the path is integrated in.
@@ -43,9 +43,9 @@ impl Var {
         let m = setup.law.m;
         match self {
             Var::Time => 1.0,
-            Var::Root => f64::from(m) * x.powi(m - 1),
+            Var::Root => f64::from(m) * setup.law.power_m1(x),
             Var::Separation { contact: j, .. } => {
-                -f64::from(m) * x.powi(m - 1) * setup.e[j] * setup.e[j] / v[2 * j + 1]
+                -f64::from(m) * setup.law.power_m1(x) * setup.e[j] * setup.e[j] / v[2 * j + 1]
             }
         }
     }
@@ -55,11 +55,28 @@ impl Var {
     pub(super) fn rhs<const N: usize>(
         self,
         setup: &Setup,
-        modes: &Modes,
+        field: &Field,
         x: f64,
         y: &[f64; N],
     ) -> [f64; N] {
-        self.rhs_eval(setup, modes, x, y).0
+        let mut dy = field.dy::<N>(setup, y);
+        let m = f64::from(setup.law.m);
+        let c = match self {
+            Var::Time => return dy,
+            Var::Root => m * setup.law.power_m1(x),
+            Var::Separation { contact: j, .. } => {
+                let vn = field.normal_velocity::<N>(setup, y, j);
+                -m * setup.law.power_m1(x) * setup.e[j] * setup.e[j] / vn
+            }
+        };
+        for d in dy.iter_mut() {
+            *d *= c;
+        }
+        if let Var::Separation { contact: j, .. } = self {
+            // s_j = σ^m exactly.
+            dy[PER * j + S] = m * setup.law.power_m1(x);
+        }
+        dy
     }
 
     /// `dy/dx` at `(x, y)` and the point's quantities.
@@ -67,11 +84,11 @@ impl Var {
     pub(super) fn rhs_eval<const N: usize>(
         self,
         setup: &Setup,
-        modes: &Modes,
+        field: &Field,
         x: f64,
         y: &[f64; N],
     ) -> ([f64; N], Eval) {
-        let (mut dy, ev) = rates::<N>(setup, modes, y);
+        let (mut dy, ev) = field.rates::<N>(setup, y);
         if self != Var::Time {
             let c = self.dtau(setup, x, &ev.v);
             for d in dy.iter_mut() {
@@ -79,7 +96,7 @@ impl Var {
             }
             if let Var::Separation { contact: j, .. } = self {
                 // s_j = σ^m exactly.
-                dy[PER * j + S] = f64::from(setup.law.m) * x.powi(setup.law.m - 1);
+                dy[PER * j + S] = f64::from(setup.law.m) * setup.law.power_m1(x);
             }
         }
         (dy, ev)
@@ -151,13 +168,26 @@ impl Var {
     }
 
     /// Where this variable starts at the state `y` and its first step, from a step `h` of `τ`.
-    pub(super) fn start_from_time(self, setup: &Setup, y: &[f64], h: f64) -> (f64, f64) {
+    pub(super) fn start_from_time(
+        self,
+        setup: &Setup,
+        y: &[f64],
+        h: f64,
+        v: &[f64; 2 * MAXK],
+    ) -> (f64, f64) {
         match self {
             Var::Time | Var::Root => (0.0, h),
             Var::Separation { contact: j, .. } => {
-                // The whole way to the separation at once (the error test shortens it).
                 let sigma = y[PER * j + S].max(0.0).powf(1.0 / f64::from(setup.law.m));
-                (sigma, -sigma)
+                // The step of τ as a step of σ (dτ/dσ = −m σ^(m−1) e²/v_n), at most the whole
+                // way to the separation.
+                let dtau = self.dtau(setup, sigma, v).abs();
+                let step = if dtau > 0.0 && (h / dtau).is_finite() {
+                    (h / dtau).min(sigma)
+                } else {
+                    sigma
+                };
+                (sigma, -step)
             }
         }
     }

@@ -50,6 +50,8 @@ pub(super) struct Setup {
     pub e: [f64; MAXK],
     /// Stiffness ratios, the largest scaled to 1.
     pub kappa: [f64; MAXK],
+    /// `κ_j^(1/(η+1))`, the factor of the primary's ordering quantity.
+    pub order: [f64; MAXK],
     /// The force law `F = κ s^η` and the power `m` of the regularising variables.
     pub law: ForceLaw,
     /// A contact approaches while `v_n < −approach`: [`crate::multi::lzb::APPROACH_ROUND_OFF`]
@@ -86,6 +88,7 @@ impl Setup {
             mu: [0.0; MAXK],
             e: [0.0; MAXK],
             kappa: [0.0; MAXK],
+            order: [0.0; MAXK],
             law: ForceLaw::new(problem.exponent()),
             approach: 0.0,
             settled: 0.0,
@@ -103,6 +106,9 @@ impl Setup {
         }
         let stiffness: Vec<f64> = (0..k).map(|j| problem.stiffness(j)).collect();
         stiffness_ratios(&stiffness, &mut s.kappa[..k]);
+        for j in 0..k {
+            s.order[j] = s.law.order(s.kappa[j]);
+        }
         for j in 0..k {
             s.mu[j] = problem.friction(j);
             s.e[j] = problem.restitution(j);
@@ -139,7 +145,7 @@ impl Setup {
     /// The primary's ordering quantity, increasing with `Ê_j`.
     #[inline]
     pub(super) fn energy_order(&self, j: usize, s: f64) -> f64 {
-        self.law.energy_order(self.kappa[j], s)
+        self.law.energy_order(self.order[j], s)
     }
 
     /// Contact `j`'s tangential velocity at the state `y`, `(v⁻ + W p)_tj`.

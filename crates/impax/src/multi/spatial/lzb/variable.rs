@@ -79,9 +79,9 @@ impl Var {
         let m = setup.law.m;
         match self {
             Var::Time => 1.0,
-            Var::Root => f64::from(m) * x.powi(m - 1),
+            Var::Root => f64::from(m) * setup.law.power_m1(x),
             Var::Separation { contact: j, .. } => {
-                -f64::from(m) * x.powi(m - 1) * setup.e[j] * setup.e[j] / ev.v[3 * j + 2]
+                -f64::from(m) * setup.law.power_m1(x) * setup.e[j] * setup.e[j] / ev.v[3 * j + 2]
             }
             Var::Halt { contact: j } => {
                 let (sigma, q, _, _) = shrinking(setup, j, ev);
@@ -120,7 +120,7 @@ impl Var {
             if let Var::Separation { contact: j, .. } = self {
                 // s_j = σ^m exactly.
                 let m = setup.law.m;
-                dy[PER * j + S] = f64::from(m) * x.powi(m - 1);
+                dy[PER * j + S] = f64::from(m) * setup.law.power_m1(x);
             }
         }
         (dy, ev)
