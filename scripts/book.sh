@@ -6,7 +6,7 @@
 #
 # mdBook (pinned) is installed into .tools/ on first use. The commands the book and the README
 # show, and the outputs they print, are checked by `cargo test -p impax-cli --test
-# book_commands` (part of `cargo test --workspace`), as are the links of the Markdown sources.
+# cli book_commands` (part of `cargo test --workspace`), as are the links of the Markdown sources.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 version=0.5.4

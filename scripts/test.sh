@@ -16,7 +16,7 @@ if [[ "${1:-}" == "--rust" ]]; then
 fi
 
 echo "== Parquet output (feature \`parquet\`)"
-cargo test -p impax-cli --features parquet --test parquet
+cargo test -p impax-cli --features parquet --test cli parquet::
 
 echo "== serde round trips (feature \`serde\`)"
 cargo test -p impax --features serde --test serde

@@ -1,14 +1,10 @@
 //! `impax sweep --format parquet` (feature `parquet`): the file holds exactly the CSV's rows,
 //! nulls where the CSV cells are empty, across several row groups.
-#![cfg(feature = "parquet")]
 
-use assert_cmd::Command;
+use crate::support::impax;
+
 use parquet::file::reader::{FileReader, SerializedFileReader};
 use parquet::record::RowAccessor;
-
-fn impax() -> Command {
-    Command::cargo_bin("impax").expect("the impax binary is built")
-}
 
 #[test]
 fn parquet_rows_equal_csv_rows() {

@@ -2,41 +2,13 @@
 //! the physics it must show (Kane's paradox on the double pendulum; paper B's conserved
 //! quantities), and bad input (one line, exit 2).
 
-use assert_cmd::Command;
-use serde_json::Value;
+use crate::support::{bad, impax, json};
+
 use std::io::Write;
-
-fn impax() -> Command {
-    Command::cargo_bin("impax").expect("the impax binary is built")
-}
-
-fn json_ok(args: &[&str]) -> Value {
-    let out = impax().args(args).output().unwrap();
-    assert!(
-        out.status.success(),
-        "impax {args:?} failed: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).expect("valid JSON")
-}
-
-fn bad(args: &[&str], needle: &str) {
-    let out = impax().args(args).output().unwrap();
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(2), "impax {args:?}: {stderr}");
-    assert!(out.stdout.is_empty());
-    let lines: Vec<&str> = stderr.lines().filter(|l| !l.trim().is_empty()).collect();
-    assert_eq!(lines.len(), 1, "impax {args:?}: {stderr}");
-    assert!(
-        stderr.contains(needle),
-        "impax {args:?}: `{stderr}` lacks `{needle}`"
-    );
-    assert!(!stderr.contains("panicked"));
-}
 
 #[test]
 fn double_pendulum_compare_shows_kanes_paradox() {
-    let doc = json_ok(&[
+    let doc = json(&[
         "compare",
         "double-pendulum",
         "--angles-deg",
@@ -88,8 +60,8 @@ fn mechanism_toml_and_flags_agree() {
         "mechanism = \"double-pendulum\"\nfriction = 0.3\nrestitution = 0.8\nmasses = [2.0, 1.0]\nlengths = [1.5, 0.7]\nangles_deg = [20.0, -35.0]\nrates = [-1.0, 2.5]\nlaws = [\"energetic\", \"whittaker\"]"
     )
     .unwrap();
-    let from_file = json_ok(&["compare", f.0.to_str().unwrap(), "--json"]);
-    let from_flags = json_ok(&[
+    let from_file = json(&["compare", f.0.to_str().unwrap(), "--json"]);
+    let from_flags = json(&[
         "compare",
         "double-pendulum",
         "--friction",
@@ -111,7 +83,7 @@ fn mechanism_toml_and_flags_agree() {
     assert_eq!(from_file["results"], from_flags["results"]);
     assert_eq!(from_file["results"].as_array().unwrap().len(), 2);
     // A flag overrides the file.
-    let over = json_ok(&[
+    let over = json(&[
         "compare",
         f.0.to_str().unwrap(),
         "--friction",
@@ -131,7 +103,7 @@ fn tempfile_in_target(name: &str) -> (std::path::PathBuf, std::fs::File) {
 
 #[test]
 fn ring_pendulum_conserved_quantities() {
-    let doc = json_ok(&["conserved", "ring-pendulum", "--json"]);
+    let doc = json(&["conserved", "ring-pendulum", "--json"]);
     assert_eq!(doc["cyclic"], serde_json::json!(["x"]));
     let q = doc["quantities"].as_array().unwrap();
     let get = |name: &str| q.iter().find(|x| x["name"] == name).unwrap();
@@ -153,7 +125,7 @@ fn ring_pendulum_conserved_quantities() {
 
 #[test]
 fn cart_pendulum_momentum_is_the_cyclic_integral() {
-    let doc = json_ok(&["conserved", "cart-pendulum", "--masses", "2,1", "--json"]);
+    let doc = json(&["conserved", "cart-pendulum", "--masses", "2,1", "--json"]);
     let q = doc["quantities"].as_array().unwrap();
     let get = |name: &str| q.iter().find(|x| x["name"] == name).unwrap();
     for name in ["p_x", "P_x", "energy", "boost x"] {

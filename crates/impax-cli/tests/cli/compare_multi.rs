@@ -2,10 +2,8 @@
 //! the published answers through the command line (Housner's rocking ratio, the cradle's two
 //! answers, the rod leaving level), and flags that do not apply refused with exit 2.
 
-mod support;
-
+use crate::support::{f, fails, json};
 use serde_json::Value;
-use support::{f, fails, json};
 
 fn law<'a>(doc: &'a Value, id: &str) -> &'a Value {
     doc["results"]

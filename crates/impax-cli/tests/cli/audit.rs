@@ -6,37 +6,9 @@
 //! at (0.5, −1)): `lcp` gains 18.3 % (T⁺/T⁻ = 1.1835, the figure pymunk gives too), equal to
 //! `newton` because both stick; `energetic` dissipates 4.3 %.
 
-use assert_cmd::Command;
+use crate::support::{bad, json, run_ok};
+
 use serde_json::Value;
-
-fn impax() -> Command {
-    Command::cargo_bin("impax").expect("the impax binary is built")
-}
-
-fn run_ok(args: &[&str]) -> String {
-    let out = impax().args(args).output().unwrap();
-    assert!(
-        out.status.success(),
-        "impax {args:?} failed: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    String::from_utf8(out.stdout).unwrap()
-}
-
-fn json_ok(args: &[&str]) -> Value {
-    serde_json::from_str(&run_ok(args)).expect("valid JSON")
-}
-
-fn bad(args: &[&str], needle: &str) {
-    let out = impax().args(args).output().unwrap();
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(2), "impax {args:?}: {stderr}");
-    assert!(out.stdout.is_empty());
-    let lines: Vec<&str> = stderr.lines().filter(|l| !l.trim().is_empty()).collect();
-    assert_eq!(lines.len(), 1, "impax {args:?}: {stderr:?}");
-    assert!(lines[0].contains(needle), "`{}` lacks `{needle}`", lines[0]);
-    assert!(!stderr.contains("panicked"));
-}
 
 /// A file in the temporary directory, removed on drop.
 struct Temp(std::path::PathBuf);
@@ -82,7 +54,7 @@ fn ratio(doc: &Value, law: &str) -> f64 {
 
 #[test]
 fn rod_the_engine_rule_gains_eighteen_percent() {
-    let doc = json_ok(&["audit", "rod", "--json"]);
+    let doc = json(&["audit", "rod", "--json"]);
     for key in [
         "scenario",
         "velocity_names",
@@ -141,7 +113,7 @@ fn rod_the_engine_rule_gains_eighteen_percent() {
 
 #[test]
 fn sphere_the_engine_rule_is_right_and_whittaker_is_not() {
-    let doc = json_ok(&["audit", "sphere", "--json"]);
+    let doc = json(&["audit", "sphere", "--json"]);
     // The seed's case: the slip halts and the sphere leaves rolling; lcp sticks.
     assert_eq!(engine(&doc, "lcp")["verdict"]["id"], "matches");
     assert!((ratio(&doc, "lcp") - ratio(&doc, "energetic")).abs() < 1e-12);
@@ -154,7 +126,7 @@ fn sphere_the_engine_rule_is_right_and_whittaker_is_not() {
 
 #[test]
 fn double_pendulum_the_engine_dissipates_less_than_it_should() {
-    let doc = json_ok(&["audit", "double-pendulum", "--json"]);
+    let doc = json(&["audit", "double-pendulum", "--json"]);
     assert_eq!(
         doc["velocity_names"],
         serde_json::json!(["theta1'", "theta2'"])
@@ -164,7 +136,7 @@ fn double_pendulum_the_engine_dissipates_less_than_it_should() {
     assert!((ratio(&doc, "energetic") - 0.15960).abs() < 1e-5);
     assert_eq!(engine(&doc, "lcp")["verdict"]["id"], "dissipates-less");
     assert!((ratio(&doc, "whittaker") - 1.26087).abs() < 1e-5);
-    let other = json_ok(&[
+    let other = json(&[
         "audit",
         "double-pendulum",
         "--angles-deg",
@@ -186,9 +158,9 @@ fn toml_scenarios_a_body_and_a_mechanism() {
         "rod.toml",
         "friction = 0.8\nrestitution = 1.0\n[body]\nshape = \"rod\"\nmass = 1.0\nlength = 1.0\nangle_deg = 50.0\nvelocity = [0.5, -1.0]\nomega = 0.0\n",
     );
-    let doc = json_ok(&["audit", body.path(), "--json"]);
+    let doc = json(&["audit", body.path(), "--json"]);
     // The same rod as the built-in, described as a body: the same energy ratios.
-    let builtin = json_ok(&["audit", "rod", "--json"]);
+    let builtin = json(&["audit", "rod", "--json"]);
     for law in ["newton", "poisson", "energetic", "lcp", "whittaker"] {
         assert!(
             (ratio(&doc, law) - ratio(&builtin, law)).abs() < 1e-12,
@@ -203,7 +175,7 @@ fn toml_scenarios_a_body_and_a_mechanism() {
         "dp.toml",
         "mechanism = \"double-pendulum\"\nfriction = 0.5\nrestitution = 0.5\nlaws = [\"whittaker\"]\n",
     );
-    let doc = json_ok(&["audit", mech.path(), "--json"]);
+    let doc = json(&["audit", mech.path(), "--json"]);
     assert_eq!(doc["results"].as_array().unwrap().len(), 5);
     assert!((ratio(&doc, "whittaker") - 1.26087).abs() < 1e-5);
 }
@@ -311,8 +283,8 @@ fn spatial_scenarios() {
         "sphere3.toml",
         &format!("space = \"3d\"\nfriction = 0.4\nrestitution = 0.7\n[body]\nshape = \"sphere\"\nmass = 1.0\nradius = 1.0\nvelocity = [{s:?}, 0.0, {:?}]\nomega = [0.0, 0.0, 0.0]\n", -c),
     );
-    let doc = json_ok(&["audit", sphere.path(), "--json"]);
-    let planar = json_ok(&["audit", "sphere", "--json"]);
+    let doc = json(&["audit", sphere.path(), "--json"]);
+    let planar = json(&["audit", "sphere", "--json"]);
     for law in ["newton", "poisson", "energetic", "lcp", "whittaker"] {
         assert!(
             (ratio(&doc, law) - ratio(&planar, law)).abs() < 1e-9,
@@ -324,7 +296,7 @@ fn spatial_scenarios() {
         "box3.toml",
         "space = \"3d\"\nfriction = 0.8\nrestitution = 1.0\n[body]\nshape = \"box\"\nmass = 1.0\nhalf_extents = [1.0, 0.2, 0.1]\norientation_deg = [10.0, 40.0, 25.0]\nvelocity = [0.5, 0.3, -1.0]\nomega = [0.0, 0.0, 0.0]\n",
     );
-    let doc = json_ok(&["audit", boxed.path(), "--json"]);
+    let doc = json(&["audit", boxed.path(), "--json"]);
     assert_eq!(
         doc["velocity_names"],
         serde_json::json!(["vx", "vy", "vz", "omega_x", "omega_y", "omega_z"])

@@ -3,10 +3,8 @@
 //! `--exponent`): the published answers, the identities the force law must keep, and flags
 //! refused with exit 2.
 
-mod support;
-
+use crate::support::{f, fails, json};
 use serde_json::Value;
-use support::{f, fails, json};
 
 fn result<'a>(doc: &'a Value, id: &str) -> &'a Value {
     doc["results"]
@@ -124,7 +122,7 @@ fn the_rocking_block_audit_matches_everywhere() {
 /// The table names the reference and the roles.
 #[test]
 fn the_audit_table_names_its_reference() {
-    let out = support::impax()
+    let out = crate::support::impax()
         .args(["audit", "ball-ball-wall"])
         .output()
         .unwrap();

@@ -1,39 +1,10 @@
 //! `impax sweep`: rows equal single library calls, output independent of the thread count,
 //! `--out`, the summary, and every kind of bad grid (one line on stderr, exit code 2).
 
-use assert_cmd::Command;
+use crate::support::{bad, impax, run_bytes};
+
 use impax::bodies::{sphere, spin_state, PlanarImpact, Side};
 use impax::LawId;
-
-fn impax() -> Command {
-    Command::cargo_bin("impax").expect("the impax binary is built")
-}
-
-fn run_ok(args: &[&str]) -> Vec<u8> {
-    let out = impax().args(args).output().unwrap();
-    assert!(
-        out.status.success(),
-        "impax {args:?} failed: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    out.stdout
-}
-
-/// Bad input: exit code 2, one line on stderr naming `needle`, nothing on stdout.
-fn bad(args: &[&str], needle: &str) {
-    let out = impax().args(args).output().unwrap();
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(2), "impax {args:?}: {stderr}");
-    assert!(out.stdout.is_empty(), "impax {args:?} printed to stdout");
-    let lines: Vec<&str> = stderr.lines().filter(|l| !l.trim().is_empty()).collect();
-    assert_eq!(lines.len(), 1, "impax {args:?}: {stderr:?}");
-    assert!(
-        lines[0].contains(needle),
-        "impax {args:?}: `{}` does not mention `{needle}`",
-        lines[0]
-    );
-    assert!(!stderr.contains("panicked"));
-}
 
 /// A CSV cell as a number (empty: NaN). The writer prints the shortest round-trip form, so
 /// parsing gives back the exact value.
@@ -51,7 +22,7 @@ fn same(a: f64, b: f64) -> bool {
 
 #[test]
 fn sweep_rows_equal_single_resolve_calls() {
-    let csv = String::from_utf8(run_ok(&[
+    let csv = String::from_utf8(run_bytes(&[
         "sweep",
         "--grid",
         "alpha-deg=0:80:5",
@@ -150,7 +121,7 @@ fn reduced_columns_take_the_same_numbers() {
         "spin-ratio=-2:2:31",
         "--quiet",
     ];
-    let full = String::from_utf8(run_ok(&grid)).unwrap();
+    let full = String::from_utf8(run_bytes(&grid)).unwrap();
     let mut args = grid.to_vec();
     args.extend([
         "--law",
@@ -158,7 +129,7 @@ fn reduced_columns_take_the_same_numbers() {
         "--columns",
         "status,p_t,energy_ratio",
     ]);
-    let reduced = String::from_utf8(run_ok(&args)).unwrap();
+    let reduced = String::from_utf8(run_bytes(&args)).unwrap();
     let want: Vec<String> = full
         .lines()
         .skip(1)
@@ -189,8 +160,8 @@ fn output_is_identical_for_any_thread_count() {
             "--quiet",
         ]
     };
-    let one = run_ok(&args("1"));
-    let three = run_ok(&args("3"));
+    let one = run_bytes(&args("1"));
+    let three = run_bytes(&args("3"));
     assert_eq!(one.len(), three.len());
     assert!(one == three, "1 and 3 threads differ");
     assert_eq!(
@@ -198,7 +169,7 @@ fn output_is_identical_for_any_thread_count() {
         1 + 120 * 200 * 2
     );
     let random = |t: &'static str| {
-        run_ok(&[
+        run_bytes(&[
             "sweep",
             "--random",
             "friction=0:1",
@@ -231,15 +202,15 @@ fn out_file_and_summary() {
         "newton",
         "--quiet",
     ];
-    let stdout = run_ok(&args);
+    let stdout = run_bytes(&args);
     let mut with_out = args.to_vec();
     let p = path.to_str().unwrap();
     with_out.extend(["--out", p]);
-    assert!(run_ok(&with_out).is_empty());
+    assert!(run_bytes(&with_out).is_empty());
     assert_eq!(std::fs::read(&path).unwrap(), stdout);
     let _ = std::fs::remove_dir_all(&dir);
 
-    let text = String::from_utf8(run_ok(&[
+    let text = String::from_utf8(run_bytes(&[
         "sweep",
         "--grid",
         "spin-ratio=-1:0.5:31",

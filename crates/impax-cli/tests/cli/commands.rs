@@ -1,52 +1,9 @@
 //! End-to-end tests of the `impax` binary: the seed table, the JSON contract, and every kind
 //! of bad input (one line on stderr, exit code 2, no panic).
 
-use assert_cmd::Command;
-use serde_json::Value;
+use crate::support::{bad, json, run_ok};
+
 use std::io::Write;
-
-fn impax() -> Command {
-    Command::cargo_bin("impax").expect("the impax binary is built")
-}
-
-fn run_ok(args: &[&str]) -> String {
-    let out = impax().args(args).output().unwrap();
-    assert!(
-        out.status.success(),
-        "impax {args:?} failed: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    String::from_utf8(out.stdout).unwrap()
-}
-
-fn json_ok(args: &[&str]) -> Value {
-    serde_json::from_str(&run_ok(args)).expect("valid JSON")
-}
-
-/// Run with bad input: exit code 2, exactly one non-empty line on stderr containing
-/// `needle`, nothing on stdout, no panic.
-fn bad(args: &[&str], needle: &str) {
-    let out = impax().args(args).output().unwrap();
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(
-        out.status.code(),
-        Some(2),
-        "impax {args:?}: stderr {stderr}"
-    );
-    assert!(out.stdout.is_empty(), "impax {args:?} printed to stdout");
-    let lines: Vec<&str> = stderr.lines().filter(|l| !l.trim().is_empty()).collect();
-    assert_eq!(
-        lines.len(),
-        1,
-        "impax {args:?}: expected one line, got {stderr:?}"
-    );
-    assert!(
-        lines[0].contains(needle),
-        "impax {args:?}: `{}` does not mention `{needle}`",
-        lines[0]
-    );
-    assert!(!stderr.contains("panicked"), "impax {args:?} panicked");
-}
 
 fn scenario_file(text: &str) -> tempfile_path::TempToml {
     tempfile_path::TempToml::new(text)
@@ -62,7 +19,10 @@ mod tempfile_path {
             static N: AtomicUsize = AtomicUsize::new(0);
             let dir = std::env::temp_dir().join(format!("impax-cli-tests-{}", std::process::id()));
             std::fs::create_dir_all(&dir).unwrap();
-            let p = dir.join(format!("s{}.toml", N.fetch_add(1, Ordering::SeqCst)));
+            let p = dir.join(format!(
+                "commands-s{}.toml",
+                N.fetch_add(1, Ordering::SeqCst)
+            ));
             let mut f = std::fs::File::create(&p).unwrap();
             super::Write::write_all(&mut f, text.as_bytes()).unwrap();
             TempToml(p)
@@ -85,7 +45,7 @@ fn compare_seed_table_snapshot() {
 
 #[test]
 fn compare_seed_json_has_the_contract_keys_and_seed_values() {
-    let doc = json_ok(&["compare", "--json"]);
+    let doc = json(&["compare", "--json"]);
     let results = doc["results"].as_array().unwrap();
     let ids: Vec<&str> = results.iter().map(|r| r["law"].as_str().unwrap()).collect();
     for law in [
@@ -146,7 +106,7 @@ fn compare_seed_json_has_the_contract_keys_and_seed_values() {
 #[test]
 fn compare_flags_change_the_case() {
     // γ = 0.3 is past Whittaker's threshold (≈ 0.206): no more energy gain.
-    let doc = json_ok(&[
+    let doc = json(&[
         "compare",
         "--json",
         "--spin-ratio",
@@ -157,7 +117,7 @@ fn compare_flags_change_the_case() {
     let r = &doc["results"][0];
     assert_eq!(doc["results"].as_array().unwrap().len(), 1);
     assert!(r["energy_change_ratio"].as_f64().unwrap() < 0.0);
-    let doc = json_ok(&[
+    let doc = json(&[
         "compare",
         "--json",
         "--alpha-deg",
@@ -195,7 +155,7 @@ velocity = [0.5, -1.0]
 omega = 0.0
 "#,
     );
-    let doc = json_ok(&["compare", rod.path(), "--json"]);
+    let doc = json(&["compare", rod.path(), "--json"]);
     let results = doc["results"].as_array().unwrap();
     assert_eq!(results.len(), 9);
     let table = run_ok(&["compare", rod.path()]);
@@ -219,7 +179,7 @@ velocity = [0.0, 0.5]
 omega = -1.0
 "#,
     );
-    let doc = json_ok(&["compare", pair.path(), "--json"]);
+    let doc = json(&["compare", pair.path(), "--json"]);
     let results = doc["results"].as_array().unwrap();
     assert_eq!(results.len(), 2);
     assert!(results[0]["other_body_velocity_after"]["vx"].is_f64());
@@ -227,7 +187,7 @@ omega = -1.0
 
 #[test]
 fn resolve_prints_one_entry_per_law() {
-    let doc = json_ok(&[
+    let doc = json(&[
         "resolve",
         "--w",
         "3.5,0,1",
@@ -255,7 +215,7 @@ fn resolve_prints_one_entry_per_law() {
     assert!(doc.get("body_velocity_after").is_none());
     assert!((doc["velocity_after"]["t"].as_f64().unwrap()).abs() < 1e-15);
     // Negative tangential velocity with a leading minus is accepted.
-    let doc = json_ok(&[
+    let doc = json(&[
         "resolve",
         "--w",
         "2,-0.5,1",
@@ -285,7 +245,7 @@ fn resolve_prints_one_entry_per_law() {
 #[test]
 fn whittaker_breakdown_is_reported_not_a_number() {
     // W_nn − μ s0 W_tn = 1 − 2·0.9 < 0: Whittaker needs a negative normal impulse.
-    let doc = json_ok(&[
+    let doc = json(&[
         "resolve",
         "--w",
         "2,0.9,1",

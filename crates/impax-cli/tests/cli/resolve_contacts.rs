@@ -4,9 +4,7 @@
 //! flat through the command line, K = 1 equal to the one-contact command, and bad input as one
 //! line with exit 2 naming the field.
 
-mod support;
-
-use support::{f, fails, json};
+use crate::support::{f, fails, json};
 
 /// Three equal balls (m = 1) in a row touching, frictionless, e = 1: contact 1 closes at 1.
 const CRADLE: [&str; 9] = [

@@ -2,40 +2,13 @@
 //! animation; the first bounce against `impax compare`; impacts at several contacts and
 //! contacts that stay closed (rocking block, cradle, rod dropped flat); bad input.
 
-use assert_cmd::Command;
+use crate::support::{bad, impax, json, run_ok};
+
 use serde_json::Value;
 
-fn impax() -> Command {
-    Command::cargo_bin("impax").expect("the impax binary is built")
-}
-
-fn run_ok(args: &[&str]) -> String {
-    let out = impax().args(args).output().unwrap();
-    assert!(
-        out.status.success(),
-        "impax {args:?}: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    String::from_utf8(out.stdout).unwrap()
-}
-
-fn bad(args: &[&str], needle: &str) {
-    let out = impax().args(args).output().unwrap();
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(2), "impax {args:?}: {stderr}");
-    assert!(out.stdout.is_empty());
-    assert_eq!(
-        stderr.lines().filter(|l| !l.trim().is_empty()).count(),
-        1,
-        "{stderr}"
-    );
-    assert!(stderr.contains(needle), "`{stderr}` lacks `{needle}`");
-}
-
+/// A scratch path of this module.
 fn tmp(name: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("impax-sim-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    dir.join(name)
+    crate::support::scratch(&format!("simulate-{name}"))
 }
 
 #[test]
@@ -297,10 +270,6 @@ fn bad_simulations_are_one_line_and_exit_2() {
         &["simulate", "rod-drop", "--v0", "1"],
         "v0: not a parameter of rod-drop",
     );
-}
-
-fn json(args: &[&str]) -> Value {
-    serde_json::from_str(&run_ok(args)).unwrap()
 }
 
 #[test]

@@ -11,12 +11,10 @@
 //! `unsupported-contact` and the pendulum with `persistent-contact`; impacts at several
 //! contacts and contacts that stay closed are simulated now, and both end at rest.)
 
-use assert_cmd::Command;
 use serde_json::Value;
 
 fn simulate(args: &[&str]) -> Value {
-    let out = Command::cargo_bin("impax")
-        .unwrap()
+    let out = crate::support::impax()
         .arg("simulate")
         .args(args)
         .arg("--json")
@@ -36,8 +34,7 @@ fn csv_rows(args: &[&str]) -> Vec<Vec<f64>> {
         std::process::id(),
         args.join("_").replace(['/', ','], "-")
     ));
-    let out = Command::cargo_bin("impax")
-        .unwrap()
+    let out = crate::support::impax()
         .arg("simulate")
         .args(args)
         .arg("--csv")

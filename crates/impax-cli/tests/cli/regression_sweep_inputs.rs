@@ -12,14 +12,11 @@
 //!   Expected: a product of points and laws (or of the grid's COUNTs) beyond `u64` says so
 //!   without a wrapped or saturated number, even with `--yes`.
 
-use assert_cmd::Command;
-
 /// Bad input: exit code 2, one line on stderr containing every needle, nothing on stdout.
 /// (The old binary ran the `--yes` sweeps below for ever: they are stopped after a minute, a
 /// guard against a hanging test, not a measured time.)
 fn bad(args: &[&str], needles: &[&str]) -> String {
-    let out = Command::cargo_bin("impax")
-        .unwrap()
+    let out = crate::support::impax()
         .args(args)
         .timeout(std::time::Duration::from_secs(60))
         .output()
@@ -60,8 +57,7 @@ fn threads_outside_1_to_256_are_refused() {
     ];
     bad(&map, &["--threads: must be between 1 and 256, got 1000"]);
     // The limit itself is accepted.
-    let out = Command::cargo_bin("impax")
-        .unwrap()
+    let out = crate::support::impax()
         .args(grid)
         .args(["--threads", "256", "--law", "energetic"])
         .output()
@@ -76,8 +72,7 @@ fn threads_outside_1_to_256_are_refused() {
 
 #[test]
 fn the_help_states_the_thread_limit() {
-    let out = Command::cargo_bin("impax")
-        .unwrap()
+    let out = crate::support::impax()
         .args(["sweep", "--help"])
         .output()
         .unwrap();
@@ -126,8 +121,7 @@ fn a_set_field_that_is_also_swept_is_refused() {
 
 #[test]
 fn a_set_field_that_is_not_swept_still_applies() {
-    let out = Command::cargo_bin("impax")
-        .unwrap()
+    let out = crate::support::impax()
         .args([
             "sweep",
             "--grid",

@@ -9,15 +9,9 @@
 //!   (`angle-deg`, `alpha-deg` of the bouncing ball, `angles-deg` of the double pendulum, and
 //!   `--angles-deg` of the built-in mechanisms of `impax compare`).
 
-use assert_cmd::Command;
-
 /// Bad input: exit code 2, one line on stderr, returned.
 fn bad(args: &[&str]) -> String {
-    let out = Command::cargo_bin("impax")
-        .unwrap()
-        .args(args)
-        .output()
-        .unwrap();
+    let out = crate::support::impax().args(args).output().unwrap();
     let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
     assert_eq!(out.status.code(), Some(2), "impax {args:?}: {stderr}");
     assert!(out.stdout.is_empty(), "impax {args:?} printed to stdout");
@@ -144,11 +138,7 @@ fn angles_within_a_full_turn_still_run() {
             "0.1",
         ][..],
     ] {
-        let out = Command::cargo_bin("impax")
-            .unwrap()
-            .args(args)
-            .output()
-            .unwrap();
+        let out = crate::support::impax().args(args).output().unwrap();
         assert!(
             out.status.success(),
             "{args:?}: {}",

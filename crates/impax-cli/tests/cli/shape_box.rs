@@ -3,16 +3,12 @@
 //! numbers of the `rigid` shape of the same inertia and contact corner, and errors naming the
 //! file's keys.
 
-mod support;
-
+use crate::support::{f, fails, impax, json};
 use serde_json::Value;
-use support::{f, fails, impax, json};
 
+/// A scratch file of this module, its path as text.
 fn write(name: &str, text: &str) -> String {
-    let dir = std::env::temp_dir().join(format!("impax-shape-box-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let path = dir.join(name);
-    std::fs::write(&path, text).unwrap();
+    let path = crate::support::write(&format!("shape-box-{name}"), text);
     path.to_str().unwrap().to_string()
 }
 

@@ -11,15 +11,10 @@
 //! Expected: a finite right answer, or exit 2 with one line naming the field that is out of
 //! range.
 
-use assert_cmd::Command;
 use serde_json::Value;
 
 fn impax(args: &[&str]) -> (Option<i32>, String, String) {
-    let out = Command::cargo_bin("impax")
-        .unwrap()
-        .args(args)
-        .output()
-        .unwrap();
+    let out = crate::support::impax().args(args).output().unwrap();
     (
         out.status.code(),
         String::from_utf8_lossy(&out.stdout).into_owned(),
@@ -55,10 +50,9 @@ fn finite(args: &[&str]) -> String {
     out
 }
 
+/// A scratch file of this module.
 fn tmp(name: &str, text: &str) -> std::path::PathBuf {
-    let path = std::env::temp_dir().join(format!("impax-nonfinite-{}-{name}", std::process::id()));
-    std::fs::write(&path, text).unwrap();
-    path
+    crate::support::write(&format!("nonfinite-{name}"), text)
 }
 
 #[test]

@@ -5,10 +5,8 @@
 //! shape's builder, description and normalisation). Each snapshot is the whole standard
 //! output; a change in any byte fails.
 
-mod support;
-
+use crate::support::impax;
 use std::path::PathBuf;
-use support::impax;
 
 /// Run `impax args…`, require success and nothing on standard error; return standard output.
 fn stdout(args: &[&str]) -> String {

@@ -2,22 +2,7 @@
 //! `invariant_rays`, agreement with the planar command on an embedded planar problem, and
 //! bad 3D input (one line, exit 2).
 
-use assert_cmd::Command;
-use serde_json::Value;
-
-fn impax() -> Command {
-    Command::cargo_bin("impax").expect("the impax binary is built")
-}
-
-fn json(args: &[&str]) -> Value {
-    let out = impax().args(args).output().unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).unwrap()
-}
+use crate::support::{impax, json};
 
 #[test]
 fn spatial_entry_has_the_planar_keys_plus_hodograph() {

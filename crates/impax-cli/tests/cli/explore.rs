@@ -8,7 +8,6 @@
 //! The single-write responses and the bounded reads are unit tests of `explore::answer`.
 
 use assert_cmd::cargo::cargo_bin;
-use assert_cmd::Command;
 use std::io::{BufRead, BufReader, Read, Write};
 use std::net::{TcpListener, TcpStream};
 use std::path::PathBuf;
@@ -37,8 +36,7 @@ fn temp_dir(tag: &str) -> PathBuf {
 #[test]
 fn out_writes_the_page_files() {
     let dir = temp_dir("out");
-    let out = Command::cargo_bin("impax")
-        .unwrap()
+    let out = crate::support::impax()
         .args(["explore", "--out"])
         .arg(&dir)
         .output()
@@ -85,8 +83,7 @@ fn decode_base64(text: &str) -> Vec<u8> {
 fn out_to_a_file_is_bad_input() {
     let file = temp_dir("file");
     std::fs::write(&file, b"not a folder").unwrap();
-    let out = Command::cargo_bin("impax")
-        .unwrap()
+    let out = crate::support::impax()
         .args(["explore", "--out"])
         .arg(file.join("sub"))
         .output()
@@ -165,8 +162,7 @@ fn serves_the_page_with_mime_types() {
 fn a_port_in_use_is_bad_input() {
     let taken = TcpListener::bind("127.0.0.1:0").unwrap();
     let port = taken.local_addr().unwrap().port().to_string();
-    let out = Command::cargo_bin("impax")
-        .unwrap()
+    let out = crate::support::impax()
         .args(["explore", "--port", &port])
         .output()
         .unwrap();

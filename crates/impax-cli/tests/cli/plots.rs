@@ -2,12 +2,9 @@
 //! have the requested size and are not blank; the map's Whittaker boundary for the sphere
 //! matches paper A's eq. 13 threshold to grid resolution; bad map input exits with 2.
 
-use assert_cmd::Command;
-use std::path::PathBuf;
+use crate::support::{bad, run_ok};
 
-fn impax() -> Command {
-    Command::cargo_bin("impax").expect("the impax binary is built")
-}
+use std::path::PathBuf;
 
 /// A fresh directory for this test's files (removed on drop).
 struct Dir(PathBuf);
@@ -25,16 +22,6 @@ impl Drop for Dir {
     fn drop(&mut self) {
         let _ = std::fs::remove_dir_all(&self.0);
     }
-}
-
-fn run_ok(args: &[&str]) -> String {
-    let out = impax().args(args).output().unwrap();
-    assert!(
-        out.status.success(),
-        "impax {args:?} failed: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    String::from_utf8(out.stdout).unwrap()
 }
 
 /// The PNG decodes, has the size, and is a picture: many colours, much non-white ink, and
@@ -205,16 +192,6 @@ fn compare_plot_draws_routh_and_energy_bars() {
             check_png(&f, (1500, 900));
         }
     }
-}
-
-/// Bad input: exit code 2, one line on stderr naming `needle`.
-fn bad(args: &[&str], needle: &str) {
-    let out = impax().args(args).output().unwrap();
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(2), "impax {args:?}: {stderr}");
-    let lines: Vec<&str> = stderr.lines().filter(|l| !l.trim().is_empty()).collect();
-    assert_eq!(lines.len(), 1, "impax {args:?}: {stderr:?}");
-    assert!(lines[0].contains(needle), "`{}` lacks `{needle}`", lines[0]);
 }
 
 #[test]

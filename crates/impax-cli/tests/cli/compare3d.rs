@@ -1,23 +1,15 @@
 //! `impax compare scenario.toml` with `space = "3d"`: every spatial law on 3D bodies, the
 //! JSON keys, a sphere that reproduces the planar seed, and bad 3D scenarios.
 
-use assert_cmd::Command;
 use serde_json::Value;
 
+/// A scratch scenario file of this module.
 fn write(name: &str, text: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("impax-compare3d-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let p = dir.join(name);
-    std::fs::write(&p, text).unwrap();
-    p
+    crate::support::write(&format!("compare3d-{name}"), text)
 }
 
 fn run(args: &[&str]) -> std::process::Output {
-    Command::cargo_bin("impax")
-        .unwrap()
-        .args(args)
-        .output()
-        .unwrap()
+    crate::support::impax().args(args).output().unwrap()
 }
 
 #[test]
