@@ -7,7 +7,8 @@
 //! the numbers a sweep sets by name) and the one builder of a body ([`BodySpec::build`]). The
 //! command line, the sweeps, the Python bindings and the explorer fill a [`BodySpec`] (or read
 //! the table) rather than knowing shapes themselves: a shape added here works in all of them.
-//! The built-in mechanisms likewise: [`MechanismSpec::build`] (a file with a `mechanism` key,
+//! The spatial body scenario of `impax compare` (`space = "3d"`) likewise:
+//! [`SpatialScenario`], [`Shape3`], [`BodySpec3::build`]. The built-in mechanisms likewise: [`MechanismSpec::build`] (a file with a `mechanism` key,
 //! the mechanism flags, Python's `mechanism(...)`).
 //!
 //! ```toml
@@ -46,8 +47,10 @@ mod body;
 mod mechanism;
 mod planar;
 mod shape;
+mod spatial;
 
 pub use body::{BodySpec, BuiltBody, Scale};
 pub use mechanism::{BuiltMechanism, MechanismSpec, MAX_ANGLE_DEG};
 pub use planar::{BuiltPlanar, PlanarScenario, SEED_TOML};
 pub use shape::{AngleUnit, Need, Quantity, Shape, ShapeParam, ShapeScalar};
+pub use spatial::{BodySpec3, BuiltBody3, BuiltSpatial, Shape3, SpatialScenario};

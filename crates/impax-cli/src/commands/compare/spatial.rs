@@ -1,185 +1,23 @@
 //! `impax compare scenario.toml` for spatial (3D) bodies: a scenario file with
 //! `space = "3d"` (see the book, docs/src/scenarios.md, "Spatial bodies").
 //!
-//! ```toml
-//! space = "3d"
-//! friction = 0.4
-//! restitution = 0.7
-//! laws = ["whittaker", "energetic"]      # optional; default: every spatial law
-//!
-//! [body]                                 # body A, contact at its lowest point (−z)
-//! shape = "ellipsoid"                    # sphere | ellipsoid | box | cylinder | rigid
-//! mass = 1.0
-//! semi_axes = [2.0, 1.0, 0.5]            # ellipsoid
-//! # radius = 1.0                         # sphere, cylinder
-//! # half_height = 1.0                    # cylinder
-//! # half_extents = [1.0, 0.5, 0.3]       # box; corner = [1, -1, -1] optional
-//! # inertia = [[1, 0, 0], [0, 2, 0], [0, 0, 2.5]]; contact = [0.3, -0.2, -0.8]   # rigid (body frame)
-//! orientation_deg = [10.0, 20.0, 30.0]   # roll, pitch, yaw (or orientation = [w, x, y, z])
-//! velocity = [0.5, 0.2, -1.0]
-//! omega = [0.0, 3.0, 0.0]
-//!
-//! [other]                                # optional free body B, struck at its highest point
-//! ```
+//! The file's format and the bodies are the core's ([`impax::scenario::SpatialScenario`]);
+//! this module resolves the laws and writes the table and the JSON.
 
 use crate::input::{CliError, CliResult};
 use crate::output::fmt::{signed, Table};
 use crate::output::json::num;
 use crate::sources::scenario::parse_laws;
-use impax::bodies::Side;
-use impax::bodies3::{self, BodyOutcome3, BodyState3, RigidBody3, SpatialImpact};
-use impax::math::{Mat3, Quat, UnitQuat, Vec3};
+use impax::bodies3::{BodyOutcome3, BodyState3, SpatialImpact};
+use impax::math::Vec3;
 use impax::planar::Breakdown;
+use impax::scenario::{BuiltSpatial, SpatialScenario};
 use impax::LawId;
-use serde::Deserialize;
 use serde_json::{json, Value};
-
-#[derive(Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct FileSpec {
-    #[allow(dead_code)]
-    space: String,
-    friction: f64,
-    restitution: f64,
-    laws: Option<Vec<String>>,
-    body: BodySpec,
-    other: Option<BodySpec>,
-}
-
-#[derive(Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct BodySpec {
-    shape: String,
-    mass: f64,
-    radius: Option<f64>,
-    half_height: Option<f64>,
-    semi_axes: Option<[f64; 3]>,
-    half_extents: Option<[f64; 3]>,
-    corner: Option<[f64; 3]>,
-    inertia: Option<[[f64; 3]; 3]>,
-    contact: Option<[f64; 3]>,
-    orientation: Option<[f64; 4]>,
-    orientation_deg: Option<[f64; 3]>,
-    velocity: Option<[f64; 3]>,
-    omega: Option<[f64; 3]>,
-}
 
 /// Whether a TOML text asks for the spatial bodies (`space = "3d"`).
 pub fn is_spatial(text: &str) -> bool {
-    text.parse::<toml::Table>()
-        .ok()
-        .and_then(|t| t.get("space").and_then(|v| v.as_str().map(|s| s == "3d")))
-        .unwrap_or(false)
-}
-
-fn orientation(spec: &BodySpec, prefix: &str) -> CliResult<UnitQuat> {
-    match (spec.orientation, spec.orientation_deg) {
-        (Some(_), Some(_)) => Err(CliError::input(format!(
-            "{prefix}.orientation: give either orientation (quaternion) or orientation_deg, not both"
-        ))),
-        (Some([w, x, y, z]), None) => {
-            let q = Quat::new(w, x, y, z);
-            let n = q.norm();
-            if !n.is_finite() || n <= 0.0 {
-                return Err(CliError::input(format!(
-                    "{prefix}.orientation: must be a non-zero finite quaternion [w, x, y, z]"
-                )));
-            }
-            Ok(UnitQuat::from_quaternion(q))
-        }
-        (None, Some([r, p, y])) => {
-            if ![r, p, y].iter().all(|a| a.is_finite()) {
-                return Err(CliError::input(format!(
-                    "{prefix}.orientation_deg: must be finite angles"
-                )));
-            }
-            Ok(UnitQuat::from_euler_angles(
-                r.to_radians(),
-                p.to_radians(),
-                y.to_radians(),
-            ))
-        }
-        (None, None) => Ok(UnitQuat::identity()),
-    }
-}
-
-fn build(spec: &BodySpec, prefix: &str, side: Side) -> CliResult<(RigidBody3, BodyState3, String)> {
-    let f = |n: &str| format!("{prefix}.{n}");
-    let need = |n: &str, x: Option<f64>| {
-        x.ok_or_else(|| CliError::input(format!("{}: required for shape `{}`", f(n), spec.shape)))
-    };
-    let err = |e: impax::Error| CliError::input(format!("{prefix}.{e}"));
-    let q = orientation(spec, prefix)?;
-    let m = spec.mass;
-    let (body, desc) = match spec.shape.as_str() {
-        "sphere" => {
-            let r = need("radius", spec.radius)?;
-            (
-                bodies3::sphere(m, r, side).map_err(err)?,
-                format!("sphere m = {m}, r = {r}"),
-            )
-        }
-        "ellipsoid" => {
-            let a = spec.semi_axes.ok_or_else(|| {
-                CliError::input(format!(
-                    "{}: required for shape `ellipsoid`",
-                    f("semi_axes")
-                ))
-            })?;
-            (
-                bodies3::ellipsoid(m, a, q, side).map_err(err)?,
-                format!("ellipsoid m = {m}, semi-axes {a:?}"),
-            )
-        }
-        "box" => {
-            let h = spec.half_extents.ok_or_else(|| {
-                CliError::input(format!("{}: required for shape `box`", f("half_extents")))
-            })?;
-            (
-                bodies3::cuboid(m, h, q, spec.corner, side).map_err(err)?,
-                format!("box m = {m}, half-extents {h:?}"),
-            )
-        }
-        "cylinder" => {
-            let r = need("radius", spec.radius)?;
-            let h = need("half_height", spec.half_height)?;
-            (
-                bodies3::cylinder(m, r, h, q, side).map_err(err)?,
-                format!("cylinder m = {m}, r = {r}, half-height {h}"),
-            )
-        }
-        "rigid" => {
-            let i = spec.inertia.ok_or_else(|| {
-                CliError::input(format!("{}: required for shape `rigid`", f("inertia")))
-            })?;
-            let c = spec.contact.ok_or_else(|| {
-                CliError::input(format!("{}: required for shape `rigid`", f("contact")))
-            })?;
-            let im = Mat3::from_fn(|r, col| i[r][col]);
-            (
-                RigidBody3::new(m, im, q, Vec3::from(c)).map_err(err)?,
-                format!("rigid body m = {m}, contact {c:?}"),
-            )
-        }
-        other => {
-            return Err(CliError::input(format!(
-                "{}: unknown shape `{other}` (3D shapes: sphere, ellipsoid, box, cylinder, rigid)",
-                f("shape")
-            )))
-        }
-    };
-    let v = spec.velocity.unwrap_or([0.0; 3]);
-    let w = spec.omega.unwrap_or([0.0; 3]);
-    if !v.iter().chain(w.iter()).all(|x| x.is_finite()) {
-        return Err(CliError::input(format!(
-            "{prefix}: velocity and omega must be finite"
-        )));
-    }
-    Ok((
-        body,
-        BodyState3::new(Vec3::from(v), Vec3::from(w)),
-        format!("{desc}, v = {v:?}, ω = {w:?}"),
-    ))
+    SpatialScenario::is_spatial(text)
 }
 
 fn vec3(v: Vec3) -> Value {
@@ -245,23 +83,12 @@ pub(crate) fn entry(
 
 /// A 3D scenario text: the impact, its description and the file's coefficients and laws.
 pub(crate) fn load(source: &str, text: &str) -> CliResult<(SpatialImpact, String, Spec3)> {
-    let spec: FileSpec = toml::from_str(text)
+    let spec: SpatialScenario = toml::from_str(text)
         .map_err(|e| CliError::input(format!("{source}: {}", e.message().replace('\n', " "))))?;
-    if spec.space != "3d" {
-        return Err(CliError::input(format!(
-            "space: `{}` is not `3d`",
-            spec.space
-        )));
-    }
-    let (a, sa, mut desc) = build(&spec.body, "body", Side::Below)?;
-    let impact = match &spec.other {
-        None => SpatialImpact::on_fixed_surface(a, sa),
-        Some(o) => {
-            let (b, sb, d) = build(o, "other", Side::Above)?;
-            desc = format!("{desc} striking {d}");
-            SpatialImpact::between(a, sa, b, sb)
-        }
-    };
+    let BuiltSpatial {
+        impact,
+        description: desc,
+    } = spec.build()?;
     Ok((
         impact,
         desc,
