@@ -158,7 +158,7 @@
       row(c.key, c.label, [`<td class="num before">${before(c)}</td>`, ...cells], c.kind);
     });
     a.contact_names.forEach((name, j) => {
-      const cells = cols.map((r) => `<td class="text phases" data-law="${r.law}" data-key="phases${j + 1}">${r.contacts ? r.contacts[j].phases : "—"}</td>`);
+      const cells = cols.map((r) => `<td class="text phases" data-law="${r.law}" data-key="phases${j + 1}">${r.contacts ? r.contacts[j].phase_summary : "—"}</td>`);
       row(`phases${j + 1}`, `phases ${name}`, ["<td></td>", ...cells], "phase");
     });
     const verdicts = cols.map((r) => `<td class="text verdict" data-law="${r.law}" data-verdict="${r.verdict}">${verdictText(r.verdict)}</td>`);

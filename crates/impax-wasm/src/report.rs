@@ -38,16 +38,7 @@ use impax::scenario::Shape;
 use impax::LawId;
 use serde_json::{json, Map, Value};
 
-/// JSON number, `-0` as `0`, non-finite as `null`.
-pub fn num(x: f64) -> Value {
-    if x == 0.0 {
-        json!(0.0)
-    } else if x.is_finite() {
-        json!(x)
-    } else {
-        Value::Null
-    }
-}
+pub use impax::json::num;
 
 /// Answer a compare request.
 ///
@@ -60,41 +51,11 @@ pub fn compare(request: &Request) -> Result<Value, String> {
     }
 }
 
-fn verdict_id(o: &Outcome) -> &'static str {
-    o.verdict.id()
-}
-
+/// The outcome's record as the command line writes it ([`impax::json::outcome_fields`]),
+/// with `breakdown` (null) and the impulse `path` for the drawing.
 fn common(o: &Outcome, problem: &ContactProblem) -> Map<String, Value> {
-    let mut m = Map::new();
-    m.insert("law".into(), json!(o.law.as_str()));
-    m.insert("verdict".into(), json!(verdict_id(o)));
-    m.insert(
-        "inconsistency".into(),
-        o.inconsistency.map_or(
-            Value::Null,
-            |i| json!({ "id": i.id(), "message": i.to_string() }),
-        ),
-    );
+    let mut m = impax::json::outcome_fields(o, "contact_velocity_after");
     m.insert("breakdown".into(), Value::Null);
-    m.insert(
-        "impulse".into(),
-        json!({ "t": num(o.impulse.x), "n": num(o.impulse.y) }),
-    );
-    m.insert(
-        "contact_velocity_after".into(),
-        json!({ "t": num(o.velocity_after.x), "n": num(o.velocity_after.y) }),
-    );
-    m.insert("energy_change".into(), num(o.energy_change));
-    m.insert(
-        "phases".into(),
-        Value::Array(
-            o.phases
-                .as_slice()
-                .iter()
-                .map(|p| json!({ "kind": p.kind.label(), "ends_at": num(p.ends_at) }))
-                .collect(),
-        ),
-    );
     m.insert(
         "path".into(),
         Value::Array(
@@ -119,15 +80,6 @@ fn broken(b: &Breakdown) -> Value {
         "energy": null,
         "phases": [],
         "path": [],
-    })
-}
-
-fn problem_json(p: &ContactProblem) -> Value {
-    json!({
-        "w": [[p.wtt(), p.wtn()], [p.wtn(), p.wnn()]],
-        "v": { "t": num(p.velocity().x), "n": num(p.velocity().y) },
-        "friction": p.friction(),
-        "restitution": p.restitution(),
     })
 }
 
@@ -202,7 +154,7 @@ fn body(case: &BodyCase, friction: f64, restitution: f64) -> Result<Value, Strin
     Ok(json!({
         "kind": "body",
         "scenario": case.description,
-        "problem": problem_json(&problem),
+        "problem": impax::json::problem(&problem),
         "energy_before": case.impact.energy_before().total(),
         "t0": t0,
         "columns": [
@@ -343,7 +295,7 @@ fn mechanism(case: &MechanismCase, friction: f64, restitution: f64) -> Result<Va
     Ok(json!({
         "kind": "mechanism",
         "scenario": case.description,
-        "problem": problem_json(&problem),
+        "problem": impax::json::problem(&problem),
         "energy_before": t0,
         "t0": t0,
         "columns": [

@@ -71,6 +71,8 @@ pub mod bodies3;
 pub mod error;
 #[cfg(feature = "serde")]
 mod forms;
+#[cfg(feature = "json")]
+pub mod json;
 pub mod law;
 pub mod math;
 pub mod mechanism;

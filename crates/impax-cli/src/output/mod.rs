@@ -3,5 +3,5 @@
 
 pub mod animation;
 pub mod fmt;
-pub mod json;
+pub use impax::json;
 pub mod plot;

@@ -11,14 +11,15 @@
 //!   "coordinates": ["x1", "y1", "theta1", …], "contact_names": ["balls 1–2", …],
 //!   "u_before": [generalized velocities before], "energy_before": T⁻,
 //!   "problem": {"contacts": K, "rank", "w": [[2K × 2K]], "v": [{"t", "n"}], "friction": [K],
-//!               "restitution": [K]},
+//!               "restitution": [K], "stiffness": [K], "exponent"} (the command line's record),
 //!   "columns": [{"key", "label", "kind": "velocity" | "impulse" | "energy"}],
 //!   "results": [{
 //!     "law", "verdict" (consistent | energy-gained | inconsistent-assumption | breakdown),
 //!     "inconsistency": null | {"id", "message"}, "breakdown": null | {"id", "message"},
 //!     "values": [one number per column] | null,
 //!     "velocities_after": [n] | null, "normal_impulses": [K] | null,
-//!     "contacts": [{"name", "impulse": {"t", "n"}, "velocity_after": {"t", "n"}, "phases"}] | null,
+//!     "contacts": [{"name", "impulse": {"t", "n"}, "velocity_after": {"t", "n"},
+//!                   "phases": [{"kind", "ends_at"}], "work", "phase_summary": one line}] | null,
 //!     "energy_change", "energy_after", "energy_ratio", "energy_change_from_velocities"
 //!   }],
 //!   "omitted": [{"law", "reason"}],     // a law that does not take this many contacts
@@ -39,7 +40,7 @@ pub mod system;
 
 use crate::report::num;
 use impax::law::Breakdown;
-use impax::multi::{MultiOutcome, MultiProblem, SystemOutcome};
+use impax::multi::{MultiOutcome, SystemOutcome};
 use impax::LawId;
 use motion::Motion;
 use serde_json::{json, Map, Value};
@@ -107,7 +108,7 @@ pub fn answer(request: &MultiRequest) -> Result<Value, String> {
         "contact_names": names,
         "u_before": impact.velocities_before().iter().map(|&x| num(x)).collect::<Vec<_>>(),
         "energy_before": t0,
-        "problem": problem_json(&problem),
+        "problem": impax::json::multi_problem(&problem),
         "columns": columns,
         "results": results,
         "omitted": omitted,
@@ -197,19 +198,18 @@ fn outcome(
     let mut values: Vec<Value> = shown.iter().map(|&i| num(u[i])).collect();
     values.extend(normal.iter().map(|&p| num(p)));
     values.extend([num(o.energy_change), num(ratio)]);
-    let contacts: Vec<Value> = o
-        .contacts
-        .iter()
-        .zip(names)
-        .map(|(c, name)| {
-            json!({
-                "name": name,
-                "impulse": { "t": num(c.impulse.x), "n": num(c.impulse.y) },
-                "velocity_after": { "t": num(c.velocity_after.x), "n": num(c.velocity_after.y) },
-                "phases": c.phase_summary(),
-            })
-        })
-        .collect();
+    // Each contact as the command line writes it ([`impax::json::multi_outcome`]), with its
+    // name and its phases in one line for the table.
+    let mut contacts = impax::json::multi_outcome(o)["contacts"].take();
+    for ((c, name), out) in o.contacts.iter().zip(names).zip(
+        contacts
+            .as_array_mut()
+            .expect("the record's contacts")
+            .iter_mut(),
+    ) {
+        out["name"] = json!(name);
+        out["phase_summary"] = json!(c.phase_summary());
+    }
     json!({
         "law": o.law.as_str(),
         "verdict": o.verdict.id(),
@@ -246,18 +246,5 @@ fn broken_without_velocities(law: LawId) -> Value {
         "energy_after": null,
         "energy_ratio": null,
         "energy_change_from_velocities": null,
-    })
-}
-
-fn problem_json(p: &MultiProblem) -> Value {
-    let k = p.contacts();
-    let w = p.w();
-    json!({
-        "contacts": k,
-        "rank": p.rank(),
-        "w": (0..2 * k).map(|i| (0..2 * k).map(|j| num(w[(i, j)])).collect::<Vec<_>>()).collect::<Vec<_>>(),
-        "v": (0..k).map(|j| { let c = p.contact_velocity(j); json!({ "t": num(c.x), "n": num(c.y) }) }).collect::<Vec<_>>(),
-        "friction": (0..k).map(|j| p.friction(j)).collect::<Vec<_>>(),
-        "restitution": (0..k).map(|j| p.restitution(j)).collect::<Vec<_>>(),
     })
 }

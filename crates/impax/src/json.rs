@@ -1,12 +1,14 @@
-//! JSON records of outcomes (the schema is documented in the book, docs/src/reference/json.md).
+//! JSON records of outcomes, the one writer of the command line and the explorer (feature
+//! `json`): every key is a documented contract (the book's reference, "JSON output"), so the
+//! front ends write outcomes only through these functions and add only their own keys.
 
-use impax::bodies::BodyOutcome;
-use impax::law::WorkSplit;
-use impax::math::{Vec2, Vec3};
-use impax::multi::spatial as multi3;
-use impax::multi::{ContactPhase, MultiDetail, MultiOutcome, MultiProblem, MultiResolution};
-use impax::planar::{Breakdown, ContactProblem, LawDetail, Outcome, SmithReading};
-use impax::spatial::{Detail3, Phase3Kind};
+use crate::bodies::BodyOutcome;
+use crate::law::WorkSplit;
+use crate::math::{Vec2, Vec3};
+use crate::multi::spatial as multi3;
+use crate::multi::{ContactPhase, MultiDetail, MultiOutcome, MultiProblem, MultiResolution};
+use crate::planar::{Breakdown, ContactProblem, LawDetail, Outcome, SmithReading};
+use crate::spatial::{Detail3, Phase3Kind};
 use serde_json::{json, Map, Value};
 
 /// JSON numbers: `-0` printed as `0`.
@@ -118,7 +120,7 @@ pub fn breakdown_fields(b: &Breakdown, velocity_key: &str, body: bool) -> Map<St
 /// A `compare` entry for one law applied to a body scenario.
 pub fn body_entry(r: &BodyOutcome, t0: f64, two_bodies: bool) -> Value {
     let mut m = outcome_fields(&r.outcome, "contact_velocity_after");
-    let state = |s: &impax::bodies::BodyState2| json!({ "vx": num(s.velocity.x), "vy": num(s.velocity.y), "omega": num(s.omega) });
+    let state = |s: &crate::bodies::BodyState2| json!({ "vx": num(s.velocity.x), "vy": num(s.velocity.y), "omega": num(s.omega) });
     m.insert("body_velocity_after".into(), state(&r.body_after));
     if two_bodies {
         m.insert(
@@ -194,26 +196,31 @@ pub fn multi_problem(p: &MultiProblem) -> Value {
 /// `breakdown`, `detail` (every number null when the law broke down).
 pub fn multi_entry(r: &MultiResolution) -> Value {
     match r {
-        Ok(o) => entry_of(
-            o.law,
-            o.verdict,
-            o.contacts
-                .iter()
-                .map(|c| {
-                    contact_of(
-                        vec2(c.impulse),
-                        vec2(c.velocity_after),
-                        multi_phases(&c.phases),
-                        &c.work,
-                    )
-                })
-                .collect(),
-            o.energy_change,
-            o.inconsistency,
-            multi_detail(o),
-        ),
+        Ok(o) => multi_outcome(o),
         Err(b) => broken_entry(b),
     }
+}
+
+/// The entry of a multi-contact law that resolved ([`multi_entry`]).
+pub fn multi_outcome(o: &MultiOutcome) -> Value {
+    entry_of(
+        o.law,
+        o.verdict,
+        o.contacts
+            .iter()
+            .map(|c| {
+                contact_of(
+                    vec2(c.impulse),
+                    vec2(c.velocity_after),
+                    multi_phases(&c.phases),
+                    &c.work,
+                )
+            })
+            .collect(),
+        o.energy_change,
+        o.inconsistency,
+        multi_detail(o),
+    )
 }
 
 /// One contact's object: `impulse`, `velocity_after`, `phases`, `work`.
@@ -228,11 +235,11 @@ fn contact_of(impulse: Value, velocity_after: Value, phases: Value, work: &WorkS
 
 /// A multi-contact law's entry, planar or spatial.
 fn entry_of(
-    law: impax::LawId,
-    verdict: impax::law::Verdict,
+    law: crate::LawId,
+    verdict: crate::law::Verdict,
     contacts: Vec<Value>,
     energy_change: f64,
-    inconsistency: Option<impax::law::Inconsistency>,
+    inconsistency: Option<crate::law::Inconsistency>,
     detail: Value,
 ) -> Value {
     json!({
