@@ -21,7 +21,7 @@
 //!
 //! Data flows one way: [`MultiProblem`] → [`lcp::resolve`] / [`sequential::resolve`] /
 //! [`lzb::resolve`] (or [`LawId::resolve_multi`]) → [`MultiOutcome`] or
-//! [`Breakdown`](crate::law::Breakdown). With one contact they reduce to the one-contact laws
+//! [`Breakdown`]. With one contact they reduce to the one-contact laws
 //! (`lcp` to [`crate::planar::laws::Lcp`], `sequential` and `lzb` to
 //! [`crate::planar::laws::Energetic`]).
 //!
@@ -126,7 +126,7 @@ impl LawId {
     /// or more, `smith-centre` (it needs a body), `lcp` with more than
     /// [`crate::multi::lcp::MAX_CONTACTS`] contacts, `lzb` with more than
     /// [`crate::multi::lzb::MAX_CONTACTS`]. A law that has no result for these
-    /// numbers gives a [`Breakdown`](crate::law::Breakdown), as with one contact.
+    /// numbers gives a [`Breakdown`], as with one contact.
     ///
     /// [`MultiOutcome::from_outcome`]: crate::multi::MultiOutcome::from_outcome
     ///
