@@ -297,6 +297,52 @@ impl<T: Copy + PartialEq> PartialEq for PerContact<T> {
     }
 }
 
+// serde: both as the sequence they dereference to (the forms they had as `Vec`s).
+
+#[cfg(feature = "serde")]
+impl serde::Serialize for Phases {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.collect_seq(self.iter())
+    }
+}
+
+#[cfg(feature = "serde")]
+impl<'de> serde::Deserialize<'de> for Phases {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        let list = Vec::<ContactPhase>::deserialize(deserializer)?;
+        let mut out = Phases::new();
+        for phase in list {
+            out.push(phase);
+        }
+        Ok(out)
+    }
+}
+
+#[cfg(feature = "serde")]
+impl<T: Copy + serde::Serialize> serde::Serialize for PerContact<T> {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.collect_seq(self.iter())
+    }
+}
+
+#[cfg(feature = "serde")]
+impl<'de, T: Copy + serde::Deserialize<'de>> serde::Deserialize<'de> for PerContact<T> {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        use serde::de::Error;
+        let list = Vec::<T>::deserialize(deserializer)?;
+        let (Some(&first), true) = (list.first(), list.len() <= super::lcp::MAX_CONTACTS) else {
+            return Err(D::Error::custom(format!(
+                "{} contacts: a solution has 1 to {}",
+                list.len(),
+                super::lcp::MAX_CONTACTS
+            )));
+        };
+        let mut out = PerContact::filled(list.len(), first);
+        out.copy_from_slice(&list);
+        Ok(out)
+    }
+}
+
 /// One binary impact of [`super::sequential`]: a contact resolved alone by `energetic`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
