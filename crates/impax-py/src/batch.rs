@@ -12,7 +12,7 @@
 use crate::convert::{float_array, planar_law, spatial_law, threads as thread_count, value_error};
 use impax::analysis::Sequence;
 use impax::planar::{ContactProblem, Verdict};
-use impax::spatial::{ContactProblem3, Phase3Kind};
+use impax::spatial;
 use impax::LawId;
 use numpy::ndarray::ArrayViewD;
 use numpy::{PyArray1, PyArray2, PyArrayMethods};
@@ -82,8 +82,8 @@ fn sequence_code(s: Sequence) -> u8 {
 }
 
 #[allow(unreachable_patterns)]
-fn sequence3_code(phases: &[impax::spatial::Phase3]) -> u8 {
-    use Phase3Kind::*;
+fn sequence3_code(phases: &[impax::spatial::Phase]) -> u8 {
+    use spatial::PhaseKind::*;
     match phases {
         [] => 5,
         [a] => match a.kind {
@@ -218,7 +218,7 @@ impl<'a> Out<'a> {
     }
 
     #[inline]
-    fn spatial(&mut self, k: usize, r: &impax::spatial::Resolution3) {
+    fn spatial(&mut self, k: usize, r: &impax::spatial::Resolution) {
         match r {
             Ok(o) => {
                 for j in 0..3 {
@@ -308,7 +308,7 @@ fn chunk_spatial(input: &Input<'_>, mut out: Out<'_>, start: usize) -> RowError 
     for k in 0..out.rows() {
         let i = start + k;
         let (w, v) = (&input.w[6 * i..6 * i + 6], &input.v[3 * i..3 * i + 3]);
-        match ContactProblem3::from_upper(
+        match spatial::ContactProblem::from_upper(
             [w[0], w[1], w[2], w[3], w[4], w[5]],
             [v[0], v[1], v[2]],
             input.friction.at(i),

@@ -6,7 +6,7 @@ use crate::convert::{float_array, lib, value_error};
 use impax::law::WorkSplit;
 use impax::multi::spatial as multi3;
 use impax::multi::{MultiDetail, MultiProblem};
-use impax::spatial::Phase3Kind;
+use impax::spatial;
 use impax::LawId;
 use nalgebra::DMatrix;
 use pyo3::prelude::*;
@@ -141,7 +141,7 @@ impl View {
                                 impulse: v3(s.impulses[j]),
                                 velocity_after: v3(s.velocities_after[j]),
                                 slip_angle_deg: match s.regimes[j] {
-                                    multi3::ContactPhaseKind::Impact(Phase3Kind::Slip {
+                                    multi3::ContactPhaseKind::Impact(spatial::PhaseKind::Slip {
                                         to,
                                         ..
                                     }) => Some(to.to_degrees()),

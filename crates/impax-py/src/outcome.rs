@@ -7,9 +7,7 @@
 use impax::bodies::{BodyState2, EnergyParts};
 use impax::math::{Vec2, Vec3};
 use impax::planar::{Breakdown, Inconsistency, LawDetail, Outcome as Planar, SmithReading};
-use impax::spatial::{
-    invariant_rays, ContactProblem3, Detail3, InvariantRays, Outcome3, Phase3Kind,
-};
+use impax::spatial::{self, invariant_rays, InvariantRays};
 use impax::LawId;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyString, PyTuple};
@@ -19,7 +17,7 @@ pub enum Raw {
     /// A planar law's resolution.
     Planar(Result<Planar, Breakdown>),
     /// A spatial law's resolution.
-    Spatial(Result<Outcome3, Breakdown>),
+    Spatial(Result<spatial::Outcome, Breakdown>),
 }
 
 /// What the impact acted on, beyond contact space.
@@ -64,7 +62,7 @@ pub struct Outcome {
     pub context: Context,
     /// The spatial contact-space problem (`impax.resolve` with a 3×3 `W`), for what is
     /// computed only when read: the hodograph, the invariant rays, the LCP's solutions.
-    pub problem3: Option<ContactProblem3>,
+    pub problem3: Option<spatial::ContactProblem>,
 }
 
 /// The common numbers of a planar or spatial outcome.
@@ -192,11 +190,11 @@ impl Outcome {
                     d.set_item("ends_at", num(p.ends_at))?;
                     #[allow(unreachable_patterns)]
                     match p.kind {
-                        Phase3Kind::Slip { from, to } => {
+                        spatial::PhaseKind::Slip { from, to } => {
                             d.set_item("from_deg", from.to_degrees())?;
                             d.set_item("to_deg", to.to_degrees())?;
                         }
-                        Phase3Kind::Resumed { angle } => {
+                        spatial::PhaseKind::Resumed { angle } => {
                             d.set_item("angle_deg", angle.to_degrees())?;
                         }
                         _ => {}
@@ -251,15 +249,15 @@ impl Outcome {
             },
             #[allow(unreachable_patterns)]
             Raw::Spatial(Ok(o)) => match o.detail {
-                Detail3::None => return Ok(None),
-                Detail3::Brach { ratio, capped } => {
+                spatial::LawDetail::None => return Ok(None),
+                spatial::LawDetail::Brach { ratio, capped } => {
                     d.set_item("ratio", ratio.and_then(fin))?;
                     d.set_item("capped", capped)?;
                 }
-                Detail3::Lcp { solutions } => {
+                spatial::LawDetail::Lcp { solutions } => {
                     d.set_item("solutions", solutions)?;
                 }
-                Detail3::DarbouxKeller {
+                spatial::LawDetail::DarbouxKeller {
                     slip_halt,
                     second_compression,
                     steps,
@@ -561,7 +559,7 @@ impl Outcome {
                 self.frame_dict(py, v3(sol.velocity_after))?,
             )?;
             d.set_item("energy_change", num(sol.energy_change))?;
-            if let Phase3Kind::Slip { to, .. } = sol.kind {
+            if let spatial::PhaseKind::Slip { to, .. } = sol.kind {
                 d.set_item("slip_angle_deg", to.to_degrees())?;
             }
             list.append(d)?;

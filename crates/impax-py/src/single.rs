@@ -7,7 +7,7 @@ use crate::multi::MultiOutcome;
 use crate::outcome::{Context, Outcome, Raw};
 use impax::math::{Vec2, Vec3};
 use impax::planar::ContactProblem;
-use impax::spatial::ContactProblem3;
+use impax::spatial;
 use pyo3::prelude::*;
 
 /// Resolve one impact in contact space with one law.
@@ -90,7 +90,7 @@ fn one(
         Matrix::Spatial(m) => {
             let v = vector(v, 3, "3 numbers (v_t1, v_t2, v_n) for a spatial W")?;
             let law = spatial_law(law)?;
-            let p = lib(ContactProblem3::new(
+            let p = lib(spatial::ContactProblem::new(
                 m,
                 Vec3::new(v[0], v[1], v[2]),
                 friction,

@@ -6,20 +6,20 @@
 //! Run: `cargo bench -p impax --bench spatial_laws`.
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
-use impax::spatial::{ContactProblem3, Detail3};
+use impax::spatial::{ContactProblem, LawDetail};
 use impax::LawId;
 
 /// The benchmark cases, also printed with their phases and step counts.
-pub fn cases() -> Vec<(&'static str, ContactProblem3)> {
+pub fn cases() -> Vec<(&'static str, ContactProblem)> {
     let w = [2.0, 0.6, 0.3, 1.0, -0.2, 1.5];
     vec![
         (
             "swirl-stick",
-            ContactProblem3::from_upper(w, [0.3, 0.8, -1.0], 0.8, 0.7).unwrap(),
+            ContactProblem::from_upper(w, [0.3, 0.8, -1.0], 0.8, 0.7).unwrap(),
         ),
         (
             "halt-resume",
-            ContactProblem3::from_upper(
+            ContactProblem::from_upper(
                 [1.64, -0.82, -0.35, 1.62, -0.41, 0.87],
                 [0.38, 0.96, -1.0],
                 0.53,
@@ -29,7 +29,7 @@ pub fn cases() -> Vec<(&'static str, ContactProblem3)> {
         ),
         (
             "near-zero-swirl",
-            ContactProblem3::from_upper(
+            ContactProblem::from_upper(
                 [1.0, 0.3, 0.8, 2.0, -0.5, 1.5],
                 [-0.4, 0.3, -1.0],
                 0.3,
@@ -39,7 +39,7 @@ pub fn cases() -> Vec<(&'static str, ContactProblem3)> {
         ),
         (
             "strong-swirl",
-            ContactProblem3::from_upper(
+            ContactProblem::from_upper(
                 [1.16, 0.18, -0.23, 0.75, 0.47, 0.91],
                 [0.6, -0.25, -1.0],
                 0.17,
@@ -49,11 +49,11 @@ pub fn cases() -> Vec<(&'static str, ContactProblem3)> {
         ),
         (
             "swirl-slip",
-            ContactProblem3::from_upper(w, [2.0, -1.5, -1.0], 0.3, 0.7).unwrap(),
+            ContactProblem::from_upper(w, [2.0, -1.5, -1.0], 0.3, 0.7).unwrap(),
         ),
         (
             "sphere",
-            ContactProblem3::from_upper(
+            ContactProblem::from_upper(
                 [3.5, 0.0, 0.0, 3.5, 0.0, 1.0],
                 [0.5, 0.2, -0.866],
                 0.4,
@@ -69,7 +69,7 @@ fn bench(c: &mut Criterion) {
     for (name, p) in cases() {
         let o = LawId::Energetic.resolve3(&p).unwrap();
         let steps = match o.detail {
-            Detail3::DarbouxKeller { steps, .. } => steps,
+            LawDetail::DarbouxKeller { steps, .. } => steps,
             _ => 0,
         };
         eprintln!("{name}: {} ({steps} steps)", o.phases.summary());

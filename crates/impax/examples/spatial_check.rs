@@ -1,6 +1,6 @@
 //! Quick check: planar problems embedded in 3D against the planar closed form.
 use impax::math::SplitMix64;
-use impax::{planar::ContactProblem, spatial::ContactProblem3, LawId};
+use impax::{planar::ContactProblem, spatial, LawId};
 
 fn main() {
     let mut rng = SplitMix64(12345u64);
@@ -23,7 +23,7 @@ fn main() {
             Ok(p) => p,
             Err(_) => continue,
         };
-        let p3 = ContactProblem3::from_planar(&p, 1.0 + next()).unwrap();
+        let p3 = spatial::ContactProblem::from_planar(&p, 1.0 + next()).unwrap();
         for law in [
             LawId::Newton,
             LawId::Poisson,
@@ -53,7 +53,7 @@ fn main() {
                             );
                         }
                     }
-                    if let impax::spatial::Detail3::DarbouxKeller { steps: s, .. } = y.detail {
+                    if let impax::spatial::LawDetail::DarbouxKeller { steps: s, .. } = y.detail {
                         steps += s as u64;
                     }
                 }

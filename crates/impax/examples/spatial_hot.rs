@@ -1,10 +1,10 @@
 //! Tight loop over one spatial benchmark case for profiling (instruction counts under
 //! `valgrind --tool=callgrind`): `cargo run --release --example spatial_hot -- swirl-stick 1000 [rtol]`.
-use impax::spatial::{ContactProblem3, Detail3, SpatialOptions};
+use impax::spatial::{ContactProblem, LawDetail, SpatialOptions};
 use impax::LawId;
 use std::hint::black_box;
 
-fn case(name: &str) -> ContactProblem3 {
+fn case(name: &str) -> ContactProblem {
     let w = [2.0, 0.6, 0.3, 1.0, -0.2, 1.5];
     let (w, v, mu, e) = match name {
         "swirl-stick" => (w, [0.3, 0.8, -1.0], 0.8, 0.7),
@@ -27,7 +27,7 @@ fn case(name: &str) -> ContactProblem3 {
             "cases: swirl-stick, halt-resume, near-zero-swirl, strong-swirl, swirl-slip, sphere"
         ),
     };
-    ContactProblem3::from_upper(w, v, mu, e).expect("valid")
+    ContactProblem::from_upper(w, v, mu, e).expect("valid")
 }
 
 fn main() {
@@ -42,7 +42,7 @@ fn main() {
     let p = case(&name);
     let o = LawId::Energetic.resolve3_with(&p, &opts).expect("resolves");
     let steps = match o.detail {
-        Detail3::DarbouxKeller { steps, .. } => steps,
+        LawDetail::DarbouxKeller { steps, .. } => steps,
         _ => 0,
     };
     let t = std::time::Instant::now();

@@ -1,6 +1,6 @@
 //! Print the hodograph points of one spatial problem (debugging aid).
 use impax::{
-    spatial::{laws, ContactProblem3},
+    spatial::{laws, ContactProblem},
     LawId,
 };
 fn main() {
@@ -8,7 +8,7 @@ fn main() {
         .skip(1)
         .map(|s| s.parse().expect("number"))
         .collect();
-    let p = ContactProblem3::from_upper(
+    let p = ContactProblem::from_upper(
         [args[0], args[1], args[2], args[3], args[4], args[5]],
         [args[6], args[7], args[8]],
         args[9],

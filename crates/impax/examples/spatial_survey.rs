@@ -12,7 +12,7 @@
 //! `K = 0` skips the second part). For instruction counts, run it under
 //! `valgrind --tool=callgrind` with `K = 0` and two values of `N`, and divide the difference.
 use impax::math::SplitMix64;
-use impax::spatial::{laws::hodograph, ContactProblem3, Phase3Kind};
+use impax::spatial::{laws::hodograph, ContactProblem, PhaseKind};
 use impax::LawId;
 use std::f64::consts::{PI, TAU};
 use std::hint::black_box;
@@ -20,7 +20,7 @@ use std::time::Instant;
 
 /// A random problem from the generator described above, or `None` if the draw is not
 /// positive definite.
-fn draw(next: &mut impl FnMut() -> f64) -> Option<ContactProblem3> {
+fn draw(next: &mut impl FnMut() -> f64) -> Option<ContactProblem> {
     let (d1, d2) = (0.3 + 2.0 * next(), 0.3 + 2.0 * next());
     let (s, c) = (PI * next()).sin_cos();
     let w11 = d1 * c * c + d2 * s * s;
@@ -30,19 +30,19 @@ fn draw(next: &mut impl FnMut() -> f64) -> Option<ContactProblem3> {
     let wnn = 0.5 + 2.0 * next();
     let v = [2.0 * next() - 1.0, 2.0 * next() - 1.0, -1.0];
     let (mu, e) = (0.05 + 0.9 * next(), next());
-    ContactProblem3::from_upper([w11, w12, w13, w22, w23, wnn], v, mu, e).ok()
+    ContactProblem::from_upper([w11, w12, w13, w22, w23, wnn], v, mu, e).ok()
 }
 
 /// Whether the energetic slip turns by 80° or more without a halt and without `σ` falling
 /// below `0.3 σ⁻`.
-fn swirls_strongly(p: &ContactProblem3) -> bool {
+fn swirls_strongly(p: &ContactProblem) -> bool {
     let Ok(o) = LawId::Energetic.resolve3(p) else {
         return false;
     };
     let [phase] = o.phases.as_slice() else {
         return false;
     };
-    let Phase3Kind::Slip { from, to } = phase.kind else {
+    let PhaseKind::Slip { from, to } = phase.kind else {
         return false;
     };
     let turn = (to - from).rem_euclid(TAU);
@@ -82,8 +82,8 @@ fn main() {
     for p in &problems {
         if let Ok(o) = LawId::Energetic.resolve3(p) {
             match o.phases.as_slice().last().map(|ph| ph.kind) {
-                Some(Phase3Kind::Stick) => stick += 1,
-                Some(Phase3Kind::Resumed { .. }) => resumed += 1,
+                Some(PhaseKind::Stick) => stick += 1,
+                Some(PhaseKind::Resumed { .. }) => resumed += 1,
                 _ => slip += 1,
             }
         }

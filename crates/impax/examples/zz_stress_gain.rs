@@ -1,6 +1,6 @@
 use impax::math::{Mat3, SplitMix64, Vec3};
 use impax::planar::{ContactProblem, Verdict};
-use impax::spatial::ContactProblem3;
+use impax::spatial;
 use impax::LawId;
 fn main() {
     let n: usize = std::env::args()
@@ -78,7 +78,7 @@ fn main() {
         );
         let mu = rng.range(0.0, 2.0);
         let e = rng.unit();
-        let Ok(p) = ContactProblem3::new(w, v, mu, e) else {
+        let Ok(p) = spatial::ContactProblem::new(w, v, mu, e) else {
             continue;
         };
         for (i, law) in [LawId::Energetic, LawId::Poisson].iter().enumerate() {

@@ -8,7 +8,7 @@
 use crate::math::{Mat2, Mat3, Vec2, Vec3};
 use crate::multi::MultiProblem;
 use crate::planar::{ContactProblem, Phase, Phases};
-use crate::spatial::{ContactProblem3, Phase3, Phases3};
+use crate::spatial::{ContactProblem, Phase, Phases};
 use nalgebra::DMatrix;
 use serde::de::Error as _;
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
@@ -53,7 +53,7 @@ struct ContactProblem3Form {
     restitution: f64,
 }
 
-impl Serialize for ContactProblem3 {
+impl Serialize for ContactProblem {
     fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
         let w = self.w();
         ContactProblem3Form {
@@ -66,11 +66,11 @@ impl Serialize for ContactProblem3 {
     }
 }
 
-impl<'de> Deserialize<'de> for ContactProblem3 {
+impl<'de> Deserialize<'de> for ContactProblem {
     fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
         let f = ContactProblem3Form::deserialize(deserializer)?;
         let w = Mat3::from_fn(|i, j| f.w[i][j]);
-        ContactProblem3::new(w, f.v, f.friction, f.restitution).map_err(D::Error::custom)
+        ContactProblem::new(w, f.v, f.friction, f.restitution).map_err(D::Error::custom)
     }
 }
 
@@ -162,23 +162,23 @@ impl<'de> Deserialize<'de> for Phases {
     }
 }
 
-impl Serialize for Phases3 {
+impl Serialize for Phases {
     fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
         serializer.collect_seq(self.as_slice())
     }
 }
 
-impl<'de> Deserialize<'de> for Phases3 {
+impl<'de> Deserialize<'de> for Phases {
     /// At most two phases (slip, then stick or resumed slip).
     fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-        let list = Vec::<Phase3>::deserialize(deserializer)?;
+        let list = Vec::<Phase>::deserialize(deserializer)?;
         if list.len() > 2 {
             return Err(D::Error::custom(format!(
                 "phases: at most 2 phases, got {}",
                 list.len()
             )));
         }
-        let mut phases = Phases3::new();
+        let mut phases = Phases::new();
         for p in list {
             phases.push(p.kind, p.ends_at);
         }

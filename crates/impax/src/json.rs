@@ -8,7 +8,7 @@ use crate::math::{Vec2, Vec3};
 use crate::multi::spatial as multi3;
 use crate::multi::{ContactPhase, MultiDetail, MultiOutcome, MultiProblem, MultiResolution};
 use crate::planar::{Breakdown, ContactProblem, LawDetail, Outcome, SmithReading};
-use crate::spatial::{Detail3, Phase3Kind};
+use crate::spatial::{self, PhaseKind};
 use serde_json::{json, Map, Value};
 
 /// JSON numbers: `-0` printed as `0`.
@@ -312,26 +312,26 @@ pub fn vec3(v: Vec3) -> Value {
 
 /// A spatial phase: `kind`, `ends_at`, and `from_deg`, `to_deg` (slip) or `angle_deg`
 /// (resumed slip).
-pub fn phase3(kind: Phase3Kind, ends_at: f64) -> Value {
+pub fn phase3(kind: PhaseKind, ends_at: f64) -> Value {
     let mut e = json!({ "kind": kind.label(), "ends_at": num(ends_at) });
     match kind {
-        Phase3Kind::Slip { from, to } => {
+        PhaseKind::Slip { from, to } => {
             e["from_deg"] = json!(from.to_degrees());
             e["to_deg"] = json!(to.to_degrees());
         }
-        Phase3Kind::Resumed { angle } => e["angle_deg"] = json!(angle.to_degrees()),
+        PhaseKind::Resumed { angle } => e["angle_deg"] = json!(angle.to_degrees()),
         _ => {}
     }
     e
 }
 
 /// A spatial law's `detail`.
-pub fn detail3(d: &Detail3) -> Value {
+pub fn detail3(d: &spatial::LawDetail) -> Value {
     match *d {
-        Detail3::None => Value::Null,
-        Detail3::Brach { ratio, capped } => json!({ "ratio": ratio, "capped": capped }),
-        Detail3::Lcp { solutions } => json!({ "solutions": solutions }),
-        Detail3::DarbouxKeller {
+        spatial::LawDetail::None => Value::Null,
+        spatial::LawDetail::Brach { ratio, capped } => json!({ "ratio": ratio, "capped": capped }),
+        spatial::LawDetail::Lcp { solutions } => json!({ "solutions": solutions }),
+        spatial::LawDetail::DarbouxKeller {
             slip_halt,
             second_compression,
             steps,
@@ -413,7 +413,7 @@ fn multi3_detail(o: &multi3::MultiOutcome) -> Value {
                         "impulse": vec3(s.impulses[j]),
                         "velocity_after": vec3(s.velocities_after[j]),
                     });
-                    if let multi3::ContactPhaseKind::Impact(Phase3Kind::Slip { to, .. }) = s.regimes[j] {
+                    if let multi3::ContactPhaseKind::Impact(PhaseKind::Slip { to, .. }) = s.regimes[j] {
                         e["slip_angle_deg"] = json!(to.to_degrees());
                     }
                     e

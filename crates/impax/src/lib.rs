@@ -30,9 +30,9 @@
 //! ([`LawId`], written as its id: `"two-phase"`), the verdicts, inconsistencies and breakdowns
 //! ([`law::Verdict`], [`law::Inconsistency`], [`law::Breakdown`], [`law::BreakdownReason`]),
 //! the work split, the outcomes with their phases and details ([`planar::Outcome`],
-//! [`spatial::Outcome3`], [`multi::MultiOutcome`], [`bodies::BodyOutcome`],
+//! [`spatial::Outcome`], [`multi::MultiOutcome`], [`bodies::BodyOutcome`],
 //! [`bodies3::BodyOutcome3`]), the problems ([`planar::ContactProblem`],
-//! [`spatial::ContactProblem3`], [`multi::MultiProblem`]) and the scenario
+//! [`spatial::ContactProblem`], [`multi::MultiProblem`]) and the scenario
 //! ([`scenario::PlanarScenario`]); nalgebra's vectors with it. Ids are written as the ids the
 //! command line prints: a verdict as `"energy-gained"`, an enum with numbers as an object
 //! tagged by its `"id"` (`{"id": "slip-reversed", "slip_after": -0.1}`). A problem is written

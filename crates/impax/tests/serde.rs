@@ -13,7 +13,7 @@ use impax::math::{Mat2, Vec2, Vec3};
 use impax::multi::{MultiDetail, MultiProblem};
 use impax::planar::{ContactProblem, LawDetail, Phases};
 use impax::scenario::{PlanarScenario, SEED_TOML};
-use impax::spatial::{ContactProblem3, Detail3, Phases3};
+use impax::spatial;
 use impax::LawId;
 use serde::de::DeserializeOwned;
 use serde::Serialize;
@@ -267,7 +267,7 @@ fn spatial_outcomes_of_every_law_round_trip() {
             [-0.3176, -0.9221, -0.1423],
         ] {
             for (mu, e) in [(0.0, 0.5), (0.3, 0.7), (1.0, 1.0), (19.5, 1.0)] {
-                let p = ContactProblem3::from_upper(w, v, mu, e).unwrap();
+                let p = spatial::ContactProblem::from_upper(w, v, mu, e).unwrap();
                 round_trip(&p);
                 for &law in &laws {
                     let r = law.resolve3(&p);
@@ -280,7 +280,7 @@ fn spatial_outcomes_of_every_law_round_trip() {
                             for phase in o.phases.as_slice() {
                                 kinds.insert(id_of(&round_trip(&phase.kind)));
                             }
-                            if let Detail3::DarbouxKeller { .. } = o.detail {
+                            if let spatial::LawDetail::DarbouxKeller { .. } = o.detail {
                                 assert!(v["detail"]["steps"].is_u64());
                             }
                         }
@@ -398,7 +398,7 @@ fn a_problem_read_back_is_validated() {
     assert!(e.starts_with("restitution: "), "{e}");
     let e = read(r#"{"w": [[1.0, 0.0], [0.0, 1.0]], "v": [0.5, -1.0], "friction": 0.4, "e": 0.5}"#);
     assert!(e.contains("unknown field `e`"), "{e}");
-    let e = serde_json::from_str::<ContactProblem3>(
+    let e = serde_json::from_str::<spatial::ContactProblem>(
         r#"{"w": [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]], "v": [0.5, 0.0, -1.0], "friction": -0.1, "restitution": 0.5}"#,
     )
     .unwrap_err()
@@ -427,7 +427,7 @@ fn phase_lists_are_read_within_their_capacity() {
     assert!(serde_json::from_value::<Phases>(json!([slip, stick, slip])).is_err());
     assert!(serde_json::from_value::<Phases>(json!([slip, slip])).is_err());
     let three = json!({"kind": {"id": "stick"}, "ends_at": 0.5});
-    assert!(serde_json::from_value::<Phases3>(json!([three, three, three])).is_err());
+    assert!(serde_json::from_value::<spatial::Phases>(json!([three, three, three])).is_err());
     let detail: LawDetail = serde_json::from_value(json!({"id": "none"})).unwrap();
     assert_eq!(detail, LawDetail::None);
 }

@@ -5,14 +5,14 @@ use crate::error::Result;
 use crate::law::Breakdown;
 use crate::law::LawId;
 use crate::math::{Mat3, Vec3};
-use crate::spatial::{ContactProblem3, Outcome3};
+use crate::spatial::{ContactProblem, Outcome};
 
 /// A law applied to a [`SpatialImpact`]: the contact-space outcome and the bodies after.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct BodyOutcome3 {
     /// Contact-space outcome.
-    pub outcome: Outcome3,
+    pub outcome: Outcome,
     /// Body A after.
     pub body_after: BodyState3,
     /// Body B after, when there is one.
@@ -86,8 +86,8 @@ impl SpatialImpact {
     }
 
     /// The spatial contact problem (validated).
-    pub fn problem(&self, friction: f64, restitution: f64) -> Result<ContactProblem3> {
-        ContactProblem3::new(
+    pub fn problem(&self, friction: f64, restitution: f64) -> Result<ContactProblem> {
+        ContactProblem::new(
             self.inverse_inertia(),
             self.contact_velocity(),
             friction,
@@ -108,7 +108,7 @@ impl SpatialImpact {
     pub fn resolve(
         &self,
         law: LawId,
-        problem: &ContactProblem3,
+        problem: &ContactProblem,
     ) -> std::result::Result<BodyOutcome3, Breakdown> {
         let outcome = law.resolve3(problem)?;
         let p = outcome.impulse;

@@ -9,7 +9,7 @@
 //! ```
 //!
 //! The planar test is [`crate::planar::laws::is_energy_gain`], the spatial one
-//! [`crate::spatial::laws::is_energy_gain3`].
+//! [`crate::spatial::laws::is_energy_gain`].
 
 /// The factor of the round-off bound of `ΔT` above which a rise of kinetic energy is
 /// reported as a gain: `16 ε`.

@@ -20,7 +20,7 @@
 //! `C = −μ W12`, `D = −μ (W22 − W11)/2`), solved through its companion matrix and polished by
 //! Newton's method on `f(φ)` itself.
 
-use super::ContactProblem3;
+use super::ContactProblem;
 use crate::math::{Mat2, Vec2};
 use nalgebra::Matrix4;
 
@@ -90,7 +90,7 @@ pub(crate) fn slip_rate(wtt: &Mat2, wtn: Vec2, mu: f64, s: Vec2) -> Vec2 {
 }
 
 /// The invariant rays of the problem's slip field.
-pub fn invariant_rays(problem: &ContactProblem3) -> InvariantRays {
+pub fn invariant_rays(problem: &ContactProblem) -> InvariantRays {
     rays_of(&problem.wtt(), problem.wtn(), problem.friction())
 }
 
@@ -219,7 +219,7 @@ pub(crate) fn rays_of(wtt: &Mat2, w: Vec2, mu: f64) -> InvariantRays {
 /// `W = L D Lᵀ` (order `t1, t2, n`): `λ = −(l31 − l21 l32, l32)` (backward stable, where the
 /// explicit inverse of an ill-conditioned `W_tt` is not).
 #[inline]
-pub fn sticking_ratio(problem: &ContactProblem3) -> Vec2 {
+pub fn sticking_ratio(problem: &ContactProblem) -> Vec2 {
     problem.stick().0
 }
 
@@ -231,7 +231,7 @@ pub fn sticking_ratio(problem: &ContactProblem3) -> Vec2 {
 /// equation `Σ w̃ᵢ² / (λ' + μ dᵢ)² = 1`, whose left side decreases strictly and convexly:
 /// Newton's method from a point left of the root (`max(0, |w̃| − μ d_max)`) converges
 /// monotonically.
-pub fn resumption_direction(problem: &ContactProblem3) -> Option<(Vec2, f64)> {
+pub fn resumption_direction(problem: &ContactProblem) -> Option<(Vec2, f64)> {
     resumption_ray(&problem.wtt(), problem.wtn(), problem.friction())
 }
 

@@ -3,8 +3,8 @@
 //! [`super::lcp`].
 
 use super::darboux_keller::{integrate_with, PathEnd, SpatialOptions, Termination};
-use super::outcome::{Detail3, Outcome3, Phase3Kind, Phases3, Resolution3};
-use super::ContactProblem3;
+use super::outcome::{LawDetail, Outcome, PhaseKind, Phases, Resolution};
+use super::ContactProblem;
 use crate::law::energy::ENERGY_GAIN_ROUND_OFF;
 use crate::law::LawId;
 use crate::law::{Breakdown, BreakdownReason, Inconsistency, Verdict, WorkSplit};
@@ -13,8 +13,8 @@ use crate::math::{norm_of, Vec2, Vec3};
 /// Whether `ΔT` is a real gain: it exceeds the round-off of its evaluation
 /// `½ (v⁻ + v⁺)·p`, `16 ε Σ_i (|v⁻_i| + |v⁺_i| + (|W| |p|)_i) |p_i|` (the problem's own
 /// energy scale; as [`crate::planar::laws::is_energy_gain`]).
-pub fn is_energy_gain3(
-    problem: &ContactProblem3,
+pub fn is_energy_gain(
+    problem: &ContactProblem,
     energy_change: f64,
     p: Vec3,
     v_after: Vec3,
@@ -29,12 +29,12 @@ pub fn is_energy_gain3(
 }
 
 pub(crate) fn assemble(
-    problem: &ContactProblem3,
+    problem: &ContactProblem,
     law: LawId,
     end: &PathEnd,
-    detail: Detail3,
+    detail: LawDetail,
     inconsistency: Option<Inconsistency>,
-) -> Outcome3 {
+) -> Outcome {
     let energy_change = 0.5 * (problem.velocity() + end.velocity).dot(&end.impulse);
     // The integrated laws reach their end to the integration's tolerance, not to round-off:
     // ΔT and the work split W_n + W_t are two evaluations of the same quantity, and a gain
@@ -42,14 +42,14 @@ pub(crate) fn assemble(
     // came out at ΔT = +2.6e-14 of an energy of 0.33 against works summing to 9e-16).
     let works = end.normal_work + end.friction_work;
     let established = energy_change - 2.0 * (energy_change - works).abs();
-    let verdict = if is_energy_gain3(problem, established, end.impulse, end.velocity) {
+    let verdict = if is_energy_gain(problem, established, end.impulse, end.velocity) {
         Verdict::EnergyGained
     } else if inconsistency.is_some() {
         Verdict::InconsistentAssumption
     } else {
         Verdict::Consistent
     };
-    Outcome3 {
+    Outcome {
         law,
         impulse: end.impulse,
         velocity_after: end.velocity,
@@ -69,9 +69,9 @@ pub(crate) fn assemble(
 
 /// The closed-form record of a straight path `p = p_n (k, 1)` (`k` a 2-vector).
 pub(crate) fn straight(
-    problem: &ContactProblem3,
+    problem: &ContactProblem,
     law: LawId,
-    kind: Phase3Kind,
+    kind: PhaseKind,
     k: Vec2,
     pf: f64,
 ) -> PathEnd {
@@ -92,7 +92,7 @@ pub(crate) fn straight(
         (None, 0.0, 0.0)
     };
     let friction_work = pf * (k.x * (v.x + 0.5 * slope.x * pf) + k.y * (v.y + 0.5 * slope.y * pf));
-    let mut phases = Phases3::new();
+    let mut phases = Phases::new();
     phases.push(kind, pf);
     let _ = law;
     PathEnd {
@@ -110,7 +110,7 @@ pub(crate) fn straight(
 }
 
 /// `p_n = −(1+e) v_n⁻ / (w_nn + w_tn·k)` for a straight path with ratio `k`.
-fn newton_pn(problem: &ContactProblem3, law: LawId, k: Vec2) -> Result<f64, Breakdown> {
+fn newton_pn(problem: &ContactProblem, law: LawId, k: Vec2) -> Result<f64, Breakdown> {
     let den = problem.wnn() + problem.wtn().dot(&k);
     let pf = -(1.0 + problem.restitution()) * problem.velocity().z / den;
     if den > 0.0 && pf.is_finite() {
@@ -125,16 +125,16 @@ fn newton_pn(problem: &ContactProblem3, law: LawId, k: Vec2) -> Result<f64, Brea
 
 /// `whittaker` in 3D: Coulomb friction on the total impulse, along the initial slip
 /// direction `ŝ0`: `p = p_n (−μ ŝ0, 1)`, `p_n = −(1+e) v_n⁻ / (w_nn − μ w_tn·ŝ0)`.
-pub fn whittaker(problem: &ContactProblem3) -> Resolution3 {
+pub fn whittaker(problem: &ContactProblem) -> Resolution {
     let law = LawId::Whittaker;
     let vt = problem.velocity().xy();
     let sigma = norm_of(vt);
     let (s0, kind) = if sigma > 0.0 {
         let s = vt / sigma;
         let a = s.y.atan2(s.x);
-        (s, Phase3Kind::Slip { from: a, to: a })
+        (s, PhaseKind::Slip { from: a, to: a })
     } else {
-        (Vec2::zeros(), Phase3Kind::NoSlip)
+        (Vec2::zeros(), PhaseKind::NoSlip)
     };
     let k = -problem.friction() * s0;
     let pf = newton_pn(problem, law, k)?;
@@ -142,13 +142,13 @@ pub fn whittaker(problem: &ContactProblem3) -> Resolution3 {
     let slip_after = end.velocity.xy().dot(&s0);
     let inconsistency = (sigma > 0.0 && problem.friction() > 0.0 && slip_after < 0.0)
         .then_some(Inconsistency::SlipReversed { slip_after });
-    Ok(assemble(problem, law, &end, Detail3::None, inconsistency))
+    Ok(assemble(problem, law, &end, LawDetail::None, inconsistency))
 }
 
 /// `brach` in 3D: the impulse `p* = W⁻¹ (−v_t⁻, −(1+e) v_n⁻)` that leaves no tangential
 /// velocity, used if its ratio `|p*_t|/p*_n ≤ μ`; otherwise the ratio is capped to the cone
 /// along `p*_t`: `p_t = μ p_n p*_t/|p*_t|` with Newton's restitution.
-pub fn brach(problem: &ContactProblem3) -> Resolution3 {
+pub fn brach(problem: &ContactProblem) -> Resolution {
     let law = LawId::Brach;
     let v = problem.velocity();
     let mu = problem.friction();
@@ -169,14 +169,14 @@ pub fn brach(problem: &ContactProblem3) -> Resolution3 {
         f64::INFINITY
     };
     if sticking && ratio <= mu {
-        let mut end = straight(problem, law, Phase3Kind::Stick, pt / star.z, star.z);
+        let mut end = straight(problem, law, PhaseKind::Stick, pt / star.z, star.z);
         end.velocity.x = 0.0;
         end.velocity.y = 0.0;
         return Ok(assemble(
             problem,
             law,
             &end,
-            Detail3::Brach {
+            LawDetail::Brach {
                 ratio: Some(ratio),
                 capped: false,
             },
@@ -192,20 +192,20 @@ pub fn brach(problem: &ContactProblem3) -> Resolution3 {
     let pf = newton_pn(problem, law, k)?;
     let a = (-dir.y).atan2(-dir.x);
     let kind = if mu > 0.0 && norm_of(pt) > 0.0 {
-        Phase3Kind::Slip { from: a, to: a }
+        PhaseKind::Slip { from: a, to: a }
     } else if v.x != 0.0 || v.y != 0.0 {
         // Frictionless: label by the initial slip, as the planar law does.
         let a0 = v.y.atan2(v.x);
-        Phase3Kind::Slip { from: a0, to: a0 }
+        PhaseKind::Slip { from: a0, to: a0 }
     } else {
-        Phase3Kind::NoSlip
+        PhaseKind::NoSlip
     };
     let end = straight(problem, law, kind, k, pf);
     Ok(assemble(
         problem,
         law,
         &end,
-        Detail3::Brach {
+        LawDetail::Brach {
             ratio: sticking.then_some(ratio),
             capped: true,
         },
@@ -216,31 +216,31 @@ pub fn brach(problem: &ContactProblem3) -> Resolution3 {
 /// `newton`, `poisson` or `energetic` in 3D by the Darboux–Keller integration, with an
 /// observer called at every accepted point `(p_n, v)` (for hodographs).
 pub fn darboux_keller_observed(
-    problem: &ContactProblem3,
+    problem: &ContactProblem,
     law: LawId,
     observe: &mut impl FnMut(f64, Vec3),
-) -> Resolution3 {
+) -> Resolution {
     darboux_keller_observed_with(problem, law, &SpatialOptions::default(), observe)
 }
 
 /// [`darboux_keller_observed`] with the integration options `opts`.
 pub fn darboux_keller_observed_with(
-    problem: &ContactProblem3,
+    problem: &ContactProblem,
     law: LawId,
     opts: &SpatialOptions,
     observe: &mut impl FnMut(f64, Vec3),
-) -> Resolution3 {
+) -> Resolution {
     darboux_keller(problem, law, opts, true, observe)
 }
 
 /// The Darboux–Keller laws, told whether `observe` does anything.
 fn darboux_keller(
-    problem: &ContactProblem3,
+    problem: &ContactProblem,
     law: LawId,
     opts: &SpatialOptions,
     observing: bool,
     observe: &mut impl FnMut(f64, Vec3),
-) -> Resolution3 {
+) -> Resolution {
     let term = match law {
         LawId::Newton => Termination::Newton,
         LawId::Poisson => Termination::Poisson,
@@ -254,7 +254,7 @@ fn darboux_keller(
     };
     let end = integrate_with(problem, term, opts, observing, observe)
         .map_err(|reason| Breakdown { law, reason })?;
-    let detail = Detail3::DarbouxKeller {
+    let detail = LawDetail::DarbouxKeller {
         slip_halt: end.slip_halt,
         second_compression: end.second_compression,
         steps: end.steps,
@@ -270,7 +270,7 @@ fn darboux_keller(
 
 /// [`Inconsistency::StillApproaching`] if the impact ends with `v_n⁺` below zero by more
 /// than the round-off of `v_n⁻ + (W p)_n`, `16 ε (|v_n⁻| + (|W| |p|)_n)`.
-pub(crate) fn still_approaching(problem: &ContactProblem3, end: &PathEnd) -> Option<Inconsistency> {
+pub(crate) fn still_approaching(problem: &ContactProblem, end: &PathEnd) -> Option<Inconsistency> {
     let vn = end.velocity.z;
     let round_off = 16.0
         * f64::EPSILON
@@ -282,7 +282,7 @@ pub(crate) fn still_approaching(problem: &ContactProblem3, end: &PathEnd) -> Opt
 
 /// Resolve a spatial problem with a law (`two-phase`, `smith` and `smith-centre` are planar
 /// only and break down with [`BreakdownReason::PlanarOnly`]).
-pub fn resolve(law: LawId, problem: &ContactProblem3) -> Resolution3 {
+pub fn resolve(law: LawId, problem: &ContactProblem) -> Resolution {
     resolve_with(law, problem, &SpatialOptions::default())
 }
 
@@ -297,10 +297,10 @@ pub fn resolve(law: LawId, problem: &ContactProblem3) -> Resolution3 {
 /// `sequential` (the binary-impact rule of several contacts, [`crate::multi::sequential`])
 /// and `lzb` (the multiple-impact law of Liu, Zhao & Brogliato, [`crate::multi::lzb`]) with
 /// one contact are `energetic`, its outcome or breakdown labelled `sequential` or `lzb`.
-pub fn resolve_with(law: LawId, problem: &ContactProblem3, opts: &SpatialOptions) -> Resolution3 {
+pub fn resolve_with(law: LawId, problem: &ContactProblem, opts: &SpatialOptions) -> Resolution {
     if matches!(law, LawId::Sequential | LawId::Lzb) {
         return match resolve_with(LawId::Energetic, problem, opts) {
-            Ok(o) => Ok(Outcome3 { law, ..o }),
+            Ok(o) => Ok(Outcome { law, ..o }),
             Err(b) => Err(Breakdown { law, ..b }),
         };
     }
@@ -329,7 +329,7 @@ pub fn resolve_with(law: LawId, problem: &ContactProblem3, opts: &SpatialOptions
 }
 
 /// [`resolve_with`] in the units of `problem` as given.
-fn resolve_in_units(law: LawId, problem: &ContactProblem3, opts: &SpatialOptions) -> Resolution3 {
+fn resolve_in_units(law: LawId, problem: &ContactProblem, opts: &SpatialOptions) -> Resolution {
     let out = match law {
         LawId::Whittaker => whittaker(problem),
         LawId::Brach => brach(problem),
@@ -338,7 +338,7 @@ fn resolve_in_units(law: LawId, problem: &ContactProblem3, opts: &SpatialOptions
         }
         LawId::Lcp => super::lcp::resolve(problem),
         LawId::Sequential | LawId::Lzb => resolve_in_units(LawId::Energetic, problem, opts)
-            .map(|o| Outcome3 { law, ..o })
+            .map(|o| Outcome { law, ..o })
             .map_err(|b| Breakdown { law, ..b }),
         LawId::TwoPhase | LawId::Smith | LawId::SmithCentre => Err(Breakdown {
             law,
@@ -357,7 +357,7 @@ fn resolve_in_units(law: LawId, problem: &ContactProblem3, opts: &SpatialOptions
 
 /// The slip-velocity path of a Darboux–Keller law, sampled at every accepted integration
 /// point: `(p_n, v_t1, v_t2, v_n)` (for plots of the hodograph).
-pub fn hodograph(problem: &ContactProblem3, law: LawId) -> Result<Vec<[f64; 4]>, Breakdown> {
+pub fn hodograph(problem: &ContactProblem, law: LawId) -> Result<Vec<[f64; 4]>, Breakdown> {
     let mut pts = Vec::new();
     darboux_keller_observed(problem, law, &mut |p, v| pts.push([p, v.x, v.y, v.z]))?;
     Ok(pts)
@@ -368,8 +368,8 @@ impl LawId {
     #[inline]
     pub fn resolve3(
         self,
-        problem: &crate::spatial::ContactProblem3,
-    ) -> crate::spatial::Resolution3 {
+        problem: &crate::spatial::ContactProblem,
+    ) -> crate::spatial::Resolution {
         crate::spatial::laws::resolve(self, problem)
     }
 
@@ -378,9 +378,9 @@ impl LawId {
     #[inline]
     pub fn resolve3_with(
         self,
-        problem: &crate::spatial::ContactProblem3,
+        problem: &crate::spatial::ContactProblem,
         opts: &crate::spatial::SpatialOptions,
-    ) -> crate::spatial::Resolution3 {
+    ) -> crate::spatial::Resolution {
         crate::spatial::laws::resolve_with(self, problem, opts)
     }
 }

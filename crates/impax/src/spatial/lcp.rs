@@ -43,8 +43,8 @@
 //! stick) and agrees with the planar law.
 
 use super::laws::{assemble, straight};
-use super::outcome::{Detail3, Phase3Kind, Resolution3};
-use super::ContactProblem3;
+use super::outcome::{LawDetail, PhaseKind, Resolution};
+use super::ContactProblem;
 use crate::law::LawId;
 use crate::law::{Breakdown, BreakdownReason, Inconsistency};
 use crate::math::{cross2, norm3_of, norm_of, Vec2, Vec3};
@@ -55,7 +55,7 @@ use std::f64::consts::TAU;
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LcpSolution3 {
     /// `Stick`, or `Slip { from: θ, to: θ }` with `θ` the direction of the final slip.
-    pub kind: Phase3Kind,
+    pub kind: PhaseKind,
     /// Impulse on body A, `(p_t1, p_t2, p_n)`.
     pub impulse: Vec3,
     /// Contact velocity after: `v⁻ + W p` to the round-off of its terms, reported as the
@@ -87,7 +87,7 @@ struct Trig2 {
 }
 
 impl Trig2 {
-    fn of(problem: &ContactProblem3, n: f64) -> Self {
+    fn of(problem: &ContactProblem, n: f64) -> Self {
         let mu = problem.friction();
         let c = problem.wnn();
         let u = problem.velocity().xy();
@@ -201,7 +201,7 @@ fn slip_angles(trig: &Trig2) -> Vec<f64> {
 /// coupled `W` (`D = 5e-9` beside `w_nn = 2e5`, where `N/D` was 6 % off and the true
 /// solution was rejected with `σ < 0`), and `ŝ × u = ŝ × g = 0` for a slip along `u` on
 /// an invariant ray. The one of smaller estimated relative error is used.
-fn slip_candidate(problem: &ContactProblem3, n: f64, theta: f64) -> Option<LcpSolution3> {
+fn slip_candidate(problem: &ContactProblem, n: f64, theta: f64) -> Option<LcpSolution3> {
     let (sn, cs) = theta.sin_cos();
     let s = Vec2::new(cs, sn);
     let sp = Vec2::new(-sn, cs);
@@ -244,7 +244,7 @@ fn slip_candidate(problem: &ContactProblem3, n: f64, theta: f64) -> Option<LcpSo
     // and v_n⁺ = −e v_n⁻ (v⁻ + W p meets them to the round-off of its terms).
     let velocity_after = Vec3::new(sigma * s.x, sigma * s.y, newton_target(problem));
     Some(LcpSolution3 {
-        kind: Phase3Kind::Slip {
+        kind: PhaseKind::Slip {
             from: theta,
             to: theta,
         },
@@ -258,12 +258,12 @@ fn slip_candidate(problem: &ContactProblem3, n: f64, theta: f64) -> Option<LcpSo
 /// rather than as `v_n⁻ + (W p)_n`, whose round-off (of the size of `|W||p|`) can be large
 /// beside it for a grazing impact.
 #[inline]
-fn newton_target(problem: &ContactProblem3) -> f64 {
+fn newton_target(problem: &ContactProblem) -> f64 {
     -problem.restitution() * problem.velocity().z
 }
 
 /// The sticking candidate: `W p = (−u, N)`, if `p_n ≥ 0` and `|p_t| ≤ μ p_n`.
-fn stick(problem: &ContactProblem3, n: f64) -> Option<LcpSolution3> {
+fn stick(problem: &ContactProblem, n: f64) -> Option<LcpSolution3> {
     let v = problem.velocity();
     let p = problem.w().cholesky()?.solve(&Vec3::new(-v.x, -v.y, n));
     if !(p.z >= 0.0 && norm_of(p.xy()) <= problem.friction() * p.z) {
@@ -271,7 +271,7 @@ fn stick(problem: &ContactProblem3, n: f64) -> Option<LcpSolution3> {
     }
     let velocity_after = Vec3::new(0.0, 0.0, newton_target(problem));
     Some(LcpSolution3 {
-        kind: Phase3Kind::Stick,
+        kind: PhaseKind::Stick,
         impulse: p,
         velocity_after,
         energy_change: 0.5 * (v + velocity_after).dot(&p),
@@ -283,13 +283,13 @@ fn stick(problem: &ContactProblem3, n: f64) -> Option<LcpSolution3> {
 /// impulse to 1e-10 (the stick/slip boundary, `σ → 0`) is not repeated.
 ///
 /// ```
-/// use impax::spatial::{ContactProblem3, lcp};
+/// use impax::spatial::{ContactProblem, lcp};
 /// // A sphere (W = diag(7/2, 7/2, 1)): one solution.
-/// let p = ContactProblem3::from_upper([3.5, 0.0, 0.0, 3.5, 0.0, 1.0], [0.5, 0.2, -1.0], 0.3, 0.5)
+/// let p = ContactProblem::from_upper([3.5, 0.0, 0.0, 3.5, 0.0, 1.0], [0.5, 0.2, -1.0], 0.3, 0.5)
 ///     .unwrap();
 /// assert_eq!(lcp::solutions(&p).len(), 1);
 /// ```
-pub fn solutions(problem: &ContactProblem3) -> Vec<LcpSolution3> {
+pub fn solutions(problem: &ContactProblem) -> Vec<LcpSolution3> {
     // In the problem's canonical units (powers of two, exact; the same as `resolve`'s), the
     // solutions scaled back.
     let Some((scaled, u)) = problem.canonical_units() else {
@@ -307,7 +307,7 @@ pub fn solutions(problem: &ContactProblem3) -> Vec<LcpSolution3> {
 }
 
 /// [`solutions`] in the units of `problem` as given.
-fn solutions_in_units(problem: &ContactProblem3) -> Vec<LcpSolution3> {
+fn solutions_in_units(problem: &ContactProblem) -> Vec<LcpSolution3> {
     let n = -(1.0 + problem.restitution()) * problem.velocity().z;
     let mut all: Vec<LcpSolution3> = stick(problem, n).into_iter().collect();
     if problem.friction() == 0.0 {
@@ -318,7 +318,7 @@ fn solutions_in_units(problem: &ContactProblem3) -> Vec<LcpSolution3> {
         let t = velocity_after.xy();
         let a = t.y.atan2(t.x);
         return vec![LcpSolution3 {
-            kind: Phase3Kind::Slip { from: a, to: a },
+            kind: PhaseKind::Slip { from: a, to: a },
             impulse,
             velocity_after,
             energy_change: 0.5 * (problem.velocity() + velocity_after).dot(&impulse),
@@ -337,7 +337,7 @@ fn solutions_in_units(problem: &ContactProblem3) -> Vec<LcpSolution3> {
                     theta
                 };
                 all.push(LcpSolution3 {
-                    kind: Phase3Kind::Slip {
+                    kind: PhaseKind::Slip {
                         from: theta,
                         to: theta,
                     },
@@ -353,7 +353,7 @@ fn solutions_in_units(problem: &ContactProblem3) -> Vec<LcpSolution3> {
 /// `lcp` in 3D: the solution of least kinetic energy after; several solutions are flagged
 /// with [`Inconsistency::MultipleSolutions`], none (not observed) is a
 /// [`BreakdownReason::NoSolution`].
-pub fn resolve(problem: &ContactProblem3) -> Resolution3 {
+pub fn resolve(problem: &ContactProblem) -> Resolution {
     let law = LawId::Lcp;
     let all = solutions(problem);
     let Some(best) = all.first() else {
@@ -373,7 +373,7 @@ pub fn resolve(problem: &ContactProblem3) -> Resolution3 {
         problem,
         law,
         &end,
-        Detail3::Lcp {
+        LawDetail::Lcp {
             solutions: all.len(),
         },
         inconsistency,
@@ -388,7 +388,7 @@ mod tests {
     /// and its derivative a central difference.
     #[test]
     fn coefficient_form_matches_the_definition() {
-        let p = ContactProblem3::from_upper(
+        let p = ContactProblem::from_upper(
             [2.0, 0.6, 0.3, 1.0, -0.2, 1.5],
             [0.3, 0.8, -1.0],
             0.8,

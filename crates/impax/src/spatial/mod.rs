@@ -2,9 +2,9 @@
 //! structure of the slip field (invariant rays, resumption).
 //!
 //! ```
-//! use impax::{LawId, spatial::ContactProblem3};
+//! use impax::{LawId, spatial::ContactProblem};
 //! // A planar problem embedded in 3D agrees with the planar closed form.
-//! let p = ContactProblem3::from_upper([3.5, 0.0, 0.0, 3.5, 0.0, 1.0], [0.5, 0.0, -0.866], 0.4, 0.7)
+//! let p = ContactProblem::from_upper([3.5, 0.0, 0.0, 3.5, 0.0, 1.0], [0.5, 0.0, -0.866], 0.4, 0.7)
 //!     .unwrap();
 //! let out = LawId::Energetic.resolve3(&p).unwrap();
 //! assert!((out.impulse.x + 0.5 / 3.5).abs() < 1e-12);
@@ -21,5 +21,5 @@ pub use darboux_keller::SpatialOptions;
 pub use invariant::{
     invariant_rays, resumption_direction, sticking_ratio, InvariantRay, InvariantRays, RayKind,
 };
-pub use outcome::{Detail3, Outcome3, Phase3, Phase3Kind, Phases3, Resolution3};
-pub use problem::{ContactProblem3, PIVOT_TOL};
+pub use outcome::{LawDetail, Outcome, Phase, PhaseKind, Phases, Resolution};
+pub use problem::{ContactProblem, PIVOT_TOL};

@@ -13,7 +13,7 @@ use std::fmt;
     derive(serde::Serialize, serde::Deserialize),
     serde(tag = "id", rename_all = "kebab-case")
 )]
-pub enum Phase3Kind {
+pub enum PhaseKind {
     /// Slip whose direction turns from angle `from` to angle `to` (radians in the tangent
     /// plane, `atan2(v_t2, v_t1)`); equal angles when it does not swirl.
     Slip {
@@ -33,25 +33,25 @@ pub enum Phase3Kind {
     NoSlip,
 }
 
-impl Phase3Kind {
+impl PhaseKind {
     /// Short label: `slip`, `stick`, `resumed-slip`, `no-slip`.
     pub fn label(&self) -> &'static str {
         match self {
-            Phase3Kind::Slip { .. } => "slip",
-            Phase3Kind::Stick => "stick",
-            Phase3Kind::Resumed { .. } => "resumed-slip",
-            Phase3Kind::NoSlip => "no-slip",
+            PhaseKind::Slip { .. } => "slip",
+            PhaseKind::Stick => "stick",
+            PhaseKind::Resumed { .. } => "resumed-slip",
+            PhaseKind::NoSlip => "no-slip",
         }
     }
 }
 
-impl fmt::Display for Phase3Kind {
+impl fmt::Display for PhaseKind {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            Phase3Kind::Slip { from, to } => {
+            PhaseKind::Slip { from, to } => {
                 write!(f, "slip({:.1}°→{:.1}°)", from.to_degrees(), to.to_degrees())
             }
-            Phase3Kind::Resumed { angle } => write!(f, "resumed-slip({:.1}°)", angle.to_degrees()),
+            PhaseKind::Resumed { angle } => write!(f, "resumed-slip({:.1}°)", angle.to_degrees()),
             other => f.write_str(other.label()),
         }
     }
@@ -60,21 +60,21 @@ impl fmt::Display for Phase3Kind {
 /// One phase and the normal impulse at which it ends.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-pub struct Phase3 {
+pub struct Phase {
     /// The regime.
-    pub kind: Phase3Kind,
+    pub kind: PhaseKind,
     /// Normal impulse at the end of the phase.
     pub ends_at: f64,
 }
 
 /// The phases of a spatial impact (at most two: slip, then stick or resumed slip).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Phases3 {
-    items: [Phase3; 2],
+pub struct Phases {
+    items: [Phase; 2],
     len: usize,
 }
 
-impl Phases3 {
+impl Phases {
     /// Multiply every phase's end impulse by `k` (a change of units).
     pub(crate) fn scale_impulse(&mut self, k: f64) {
         for p in &mut self.items[..self.len] {
@@ -85,22 +85,22 @@ impl Phases3 {
     /// No phases.
     pub const fn new() -> Self {
         Self {
-            items: [Phase3 {
-                kind: Phase3Kind::Stick,
+            items: [Phase {
+                kind: PhaseKind::Stick,
                 ends_at: 0.0,
             }; 2],
             len: 0,
         }
     }
     /// Append a phase (silently ignored beyond two, which no law produces).
-    pub fn push(&mut self, kind: Phase3Kind, ends_at: f64) {
+    pub fn push(&mut self, kind: PhaseKind, ends_at: f64) {
         if self.len < 2 {
-            self.items[self.len] = Phase3 { kind, ends_at };
+            self.items[self.len] = Phase { kind, ends_at };
             self.len += 1;
         }
     }
     /// The phases.
-    pub fn as_slice(&self) -> &[Phase3] {
+    pub fn as_slice(&self) -> &[Phase] {
         &self.items[..self.len]
     }
     /// Labels joined by ` → `.
@@ -110,7 +110,7 @@ impl Phases3 {
     }
 }
 
-impl Default for Phases3 {
+impl Default for Phases {
     fn default() -> Self {
         Self::new()
     }
@@ -123,7 +123,7 @@ impl Default for Phases3 {
     derive(serde::Serialize, serde::Deserialize),
     serde(tag = "id", rename_all = "kebab-case")
 )]
-pub enum Detail3 {
+pub enum LawDetail {
     /// Nothing more.
     None,
     /// Brach: the sticking ratio's magnitude and whether it was capped.
@@ -151,10 +151,10 @@ pub enum Detail3 {
     },
 }
 
-/// The result of one law on one [`ContactProblem3`](super::ContactProblem3).
+/// The result of one law on one [`ContactProblem`](super::ContactProblem).
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-pub struct Outcome3 {
+pub struct Outcome {
     /// Which law.
     pub law: LawId,
     /// Impulse on body A, `(p_t1, p_t2, p_n)`.
@@ -168,17 +168,17 @@ pub struct Outcome3 {
     /// `ΔT`.
     pub energy_change: f64,
     /// Phases.
-    pub phases: Phases3,
+    pub phases: Phases,
     /// Headline verdict.
     pub verdict: Verdict,
     /// A contradicted assumption, if any.
     pub inconsistency: Option<Inconsistency>,
     /// Law-specific detail.
-    pub detail: Detail3,
+    pub detail: LawDetail,
 }
 
-impl Outcome3 {
-    /// The outcome of the problem in `u` ([`super::ContactProblem3`]'s canonical units)
+impl Outcome {
+    /// The outcome of the problem in `u` ([`super::ContactProblem`]'s canonical units)
     /// in the problem's own units (every factor a power of two: exact).
     pub(crate) fn in_problem_units(mut self, u: Units) -> Self {
         self.impulse = self.impulse.map(|x| u.impulse(x));
@@ -202,7 +202,7 @@ impl Outcome3 {
             }
             other => other,
         });
-        if let Detail3::DarbouxKeller {
+        if let LawDetail::DarbouxKeller {
             slip_halt,
             second_compression,
             ..
@@ -226,4 +226,4 @@ impl Outcome3 {
 }
 
 /// What a spatial law returns.
-pub type Resolution3 = Result<Outcome3, crate::law::Breakdown>;
+pub type Resolution = Result<Outcome, crate::law::Breakdown>;

@@ -12,7 +12,7 @@ const SYMMETRY_TOL: f64 = 1e-12;
 pub const PIVOT_TOL: f64 = 1e-11;
 
 /// Check that the symmetric `w` is positive definite beyond round-off (see
-/// [`ContactProblem3::new`]); the reason names the failing quantity with its value.
+/// [`ContactProblem::new`]); the reason names the failing quantity with its value.
 pub(crate) fn positive_definite(w: &Mat3) -> Result<()> {
     const NAMES: [&str; 3] = ["t1", "t2", "n"];
     let refuse = |reason: String| {
@@ -120,22 +120,22 @@ pub(crate) fn ldl(w: &Mat3, c: f64) -> (Vec3, Vec2) {
 /// `v_n⁻ < 0`; the impulse is the one on body A and `p_n ≥ 0`.
 ///
 /// ```
-/// use impax::spatial::ContactProblem3;
+/// use impax::spatial::ContactProblem;
 /// use impax::math::{Mat3, Vec3};
 /// // A sphere (m = 1) on a plane: W = diag(7/2, 7/2, 1).
-/// let p = ContactProblem3::new(Mat3::from_diagonal(&Vec3::new(3.5, 3.5, 1.0)),
+/// let p = ContactProblem::new(Mat3::from_diagonal(&Vec3::new(3.5, 3.5, 1.0)),
 ///                              Vec3::new(0.5, 0.0, -0.866), 0.4, 0.7).unwrap();
 /// assert_eq!(p.wnn(), 1.0);
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct ContactProblem3 {
+pub struct ContactProblem {
     w: Mat3,
     v: Vec3,
     mu: f64,
     e: f64,
 }
 
-impl ContactProblem3 {
+impl ContactProblem {
     /// Validate and build a problem.
     ///
     /// Errors (each names its field): a non-finite entry; `W` not symmetric (beyond
@@ -220,7 +220,7 @@ impl ContactProblem3 {
     }
 
     /// The same problem with velocities times `a` and `W` times `b` (powers of two: exact),
-    /// without the validation of [`ContactProblem3::new`] (the approach energy may not be
+    /// without the validation of [`ContactProblem::new`] (the approach energy may not be
     /// representable in these units).
     pub(crate) fn in_units(&self, a: f64, b: f64) -> Self {
         Self {

@@ -17,11 +17,11 @@ use impax::math::SplitMix64;
 use impax::math::{Mat3, Vec2, Vec3};
 use impax::planar::{ContactProblem, Inconsistency, PhaseKind, SlipDirection};
 use impax::spatial::lcp::{solutions, LcpSolution3};
-use impax::spatial::{ContactProblem3, Detail3, Phase3Kind};
+use impax::spatial;
 use impax::LawId;
 use std::f64::consts::TAU;
 
-fn random_problem(rng: &mut SplitMix64, coupled: bool) -> ContactProblem3 {
+fn random_problem(rng: &mut SplitMix64, coupled: bool) -> spatial::ContactProblem {
     loop {
         let mut l = Mat3::zeros();
         for i in 0..3 {
@@ -51,14 +51,14 @@ fn random_problem(rng: &mut SplitMix64, coupled: bool) -> ContactProblem3 {
             rng.range(0.0, 2.0)
         };
         let e = rng.unit();
-        if let Ok(p) = ContactProblem3::new(w, v, mu, e) {
+        if let Ok(p) = spatial::ContactProblem::new(w, v, mu, e) {
             return p;
         }
     }
 }
 
 /// The largest relative violation of the complementarity conditions by one solution.
-fn residual(p: &ContactProblem3, s: &LcpSolution3) -> f64 {
+fn residual(p: &spatial::ContactProblem, s: &LcpSolution3) -> f64 {
     let imp = s.impulse;
     let v = p.velocity();
     let vplus = p.velocity() + p.w() * imp;
@@ -73,8 +73,8 @@ fn residual(p: &ContactProblem3, s: &LcpSolution3) -> f64 {
     // The reported velocity is v⁻ + W p (stick: zero tangential part, checked here).
     r = r.max((s.velocity_after - vplus).norm() / vscale);
     match s.kind {
-        Phase3Kind::Stick => r.max(vplus.xy().norm() / vscale),
-        Phase3Kind::Slip { to, .. } if mu > 0.0 => {
+        spatial::PhaseKind::Stick => r.max(vplus.xy().norm() / vscale),
+        spatial::PhaseKind::Slip { to, .. } if mu > 0.0 => {
             let sh = Vec2::new(to.cos(), to.sin());
             let vt = vplus.xy();
             // On the cone, along −ŝ, and v_t⁺ parallel to ŝ with σ > 0.
@@ -111,7 +111,7 @@ fn every_solution_satisfies_the_conditions_and_one_always_exists() {
         assert_eq!(o.impulse, sols[0].impulse);
         assert_eq!(
             o.detail,
-            Detail3::Lcp {
+            spatial::LawDetail::Lcp {
                 solutions: sols.len()
             }
         );
@@ -136,7 +136,7 @@ fn every_solution_satisfies_the_conditions_and_one_always_exists() {
 /// The slip directions consistent at `θ`, written from the definition: `p = p_n (−μ ŝ, 1)`
 /// with `p_n` from Newton's target, `v⁺ = v⁻ + W p`; consistent iff `p_n > 0`, `ŝ × v_t⁺ = 0`
 /// and `ŝ·v_t⁺ > 0`. Returns `(ŝ × v_t⁺ · D, admissible)` at `θ`.
-fn scan_value(p: &ContactProblem3, theta: f64) -> (f64, bool) {
+fn scan_value(p: &spatial::ContactProblem, theta: f64) -> (f64, bool) {
     let mu = p.friction();
     let v = p.velocity();
     let s = Vec2::new(theta.cos(), theta.sin());
@@ -158,13 +158,13 @@ fn a_brute_force_angle_scan_finds_no_missed_solution() {
     for _ in 0..1000 {
         let mut p = random_problem(&mut rng, true);
         if p.friction() == 0.0 {
-            p = ContactProblem3::new(*p.w(), p.velocity(), 0.5, p.restitution()).unwrap();
+            p = spatial::ContactProblem::new(*p.w(), p.velocity(), 0.5, p.restitution()).unwrap();
         }
         let sols = solutions(&p);
         let slips: Vec<f64> = sols
             .iter()
             .filter_map(|s| match s.kind {
-                Phase3Kind::Slip { to, .. } => Some(to.rem_euclid(TAU)),
+                spatial::PhaseKind::Slip { to, .. } => Some(to.rem_euclid(TAU)),
                 _ => None,
             })
             .collect();
@@ -185,7 +185,7 @@ fn a_brute_force_angle_scan_finds_no_missed_solution() {
         };
         for s in &scanned {
             // A slip at the stick/slip boundary (σ → 0) is reported as the stick.
-            let at_stick = sols.iter().any(|x| x.kind == Phase3Kind::Stick);
+            let at_stick = sols.iter().any(|x| x.kind == spatial::PhaseKind::Stick);
             assert!(
                 slips.iter().any(|&a| close(a, *s)) || at_stick,
                 "scan finds θ = {s} not among {slips:?} for {p:?}"
@@ -228,7 +228,7 @@ fn planar_embedding_agrees_with_the_planar_law() {
         };
         let p = ContactProblem::from_entries(a, b, c, vt, -rng.range(0.1, 2.0), mu, rng.unit())
             .unwrap();
-        let p3 = ContactProblem3::from_planar(&p, rng.range(0.1, 10.0)).unwrap();
+        let p3 = spatial::ContactProblem::from_planar(&p, rng.range(0.1, 10.0)).unwrap();
         let o = LawId::Lcp.resolve(&p).unwrap();
         let o3 = LawId::Lcp.resolve3(&p3).unwrap();
         assert_eq!(solutions(&p3).len(), 1, "{p3:?}");
@@ -247,8 +247,8 @@ fn planar_embedding_agrees_with_the_planar_law() {
         assert!((o.energy_change - o3.energy_change).abs() < 1e-12 * scale * scale);
         assert_eq!(o.verdict, o3.verdict);
         match (o.phases.as_slice()[0].kind, o3.phases.as_slice()[0].kind) {
-            (PhaseKind::Stick, Phase3Kind::Stick) => {}
-            (PhaseKind::Slip(d), Phase3Kind::Slip { to, .. }) if mu > 0.0 => {
+            (PhaseKind::Stick, spatial::PhaseKind::Stick) => {}
+            (PhaseKind::Slip(d), spatial::PhaseKind::Slip { to, .. }) if mu > 0.0 => {
                 let want = if d == SlipDirection::Positive {
                     0.0
                 } else {
@@ -257,7 +257,7 @@ fn planar_embedding_agrees_with_the_planar_law() {
                 let diff = (to - want).rem_euclid(TAU);
                 assert!(diff.min(TAU - diff) < 1e-9, "{to} vs {d:?}");
             }
-            (PhaseKind::Slip(_), Phase3Kind::Slip { .. }) => {}
+            (PhaseKind::Slip(_), spatial::PhaseKind::Slip { .. }) => {}
             (x, y) => panic!("phase {x:?} vs {y:?} for {p:?}"),
         }
     }
@@ -302,8 +302,8 @@ fn a_problem_with_three_solutions() {
 }
 
 /// Found by a random search (seeded), pinned here.
-fn three_solution_problem() -> ContactProblem3 {
-    ContactProblem3::from_upper(
+fn three_solution_problem() -> spatial::ContactProblem {
+    spatial::ContactProblem::from_upper(
         [
             8.692015037824595,
             4.6411520047113655,
@@ -344,7 +344,7 @@ fn badly_scaled_problems_still_solve() {
             s * rng.range(-2.0, 2.0),
             -s * rng.range(0.01, 2.0),
         );
-        let Ok(p) = ContactProblem3::new(w, v, rng.range(0.0, 5.0), rng.unit()) else {
+        let Ok(p) = spatial::ContactProblem::new(w, v, rng.range(0.0, 5.0), rng.unit()) else {
             continue;
         };
         let sols = solutions(&p);

@@ -795,7 +795,7 @@ fn errors_name_their_field() {
 
 #[test]
 fn sequential_is_energetic_for_one_contact_everywhere() {
-    use impax::spatial::ContactProblem3;
+    use impax::spatial;
     let p = ContactProblem::from_entries(2.0, 0.5, 1.5, 0.3, -1.0, 0.3, 0.5).unwrap();
     let (s, e) = (
         LawId::Sequential.resolve(&p).unwrap(),
@@ -804,7 +804,7 @@ fn sequential_is_energetic_for_one_contact_everywhere() {
     assert_eq!(s.law, LawId::Sequential);
     assert_eq!(s.impulse, e.impulse);
     let p3 =
-        ContactProblem3::from_upper([2.0, 0.3, 0.1, 1.5, 0.2, 1.0], [0.5, 0.2, -1.0], 0.5, 0.6)
+        spatial::ContactProblem::from_upper([2.0, 0.3, 0.1, 1.5, 0.2, 1.0], [0.5, 0.2, -1.0], 0.5, 0.6)
             .unwrap();
     let (s, e) = (
         LawId::Sequential.resolve3(&p3).unwrap(),

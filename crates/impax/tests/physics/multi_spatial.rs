@@ -9,7 +9,7 @@ use super::support::contact_space;
 use impax::math::{SplitMix64, Vec3};
 use impax::multi::spatial::{self, MultiProblem};
 use impax::multi::MultiProblem as Planar;
-use impax::spatial::ContactProblem3;
+use impax::spatial::ContactProblem;
 use impax::LawId;
 use nalgebra::{DMatrix, DVector};
 
@@ -25,9 +25,9 @@ fn random_block(rng: &mut SplitMix64) -> (DMatrix<f64>, Vec3) {
     (w, v)
 }
 
-fn one(w: &DMatrix<f64>, v: Vec3, mu: f64, e: f64) -> ContactProblem3 {
+fn one(w: &DMatrix<f64>, v: Vec3, mu: f64, e: f64) -> ContactProblem {
     let m = impax::math::Mat3::from_fn(|i, j| w[(i, j)]);
-    ContactProblem3::new(m, v, mu, e).unwrap()
+    ContactProblem::new(m, v, mu, e).unwrap()
 }
 
 /// With one contact, the enumeration (modes and Newton on the slip angle) agrees with the

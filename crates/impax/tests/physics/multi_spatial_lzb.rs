@@ -24,7 +24,7 @@ use impax::math::{Mat3, SplitMix64, Vec3};
 use impax::multi::scenarios::BoxFlat;
 use impax::multi::spatial::{self, lzb, ContactPhaseKind, MultiDetail, MultiOutcome, MultiProblem};
 use impax::multi::MultiProblem as Planar;
-use impax::spatial::{ContactProblem3, Detail3, Phase3Kind};
+use impax::spatial::{ContactProblem, LawDetail, PhaseKind};
 use impax::LawId;
 use nalgebra::{DMatrix, DVector};
 
@@ -90,7 +90,7 @@ fn decoupled_contacts_are_their_own_energetic() {
         assert_ne!(o.verdict, Verdict::EnergyGained);
         for (j, (b, vj)) in blocks.iter().enumerate() {
             let one =
-                ContactProblem3::new(Mat3::from_fn(|r, c| b[(r, c)]), *vj, mu[j], e[j]).unwrap();
+                ContactProblem::new(Mat3::from_fn(|r, c| b[(r, c)]), *vj, mu[j], e[j]).unwrap();
             let r = impax::spatial::laws::resolve(LawId::Energetic, &one).unwrap();
             let c = &o.contacts[j];
             let pscale = r.impulse.norm();
@@ -106,7 +106,7 @@ fn decoupled_contacts_are_their_own_energetic() {
                 r
             );
             // The slip's halt: where (on the contact's own normal impulse) and on which ray.
-            if let Detail3::DarbouxKeller {
+            if let LawDetail::DarbouxKeller {
                 slip_halt: Some(halt),
                 ..
             } = r.detail
@@ -120,8 +120,8 @@ fn decoupled_contacts_are_their_own_energetic() {
                 // attracting ray its slip direction is still turning where its integration
                 // stops, e⁻⁴⁰ of the slip on, and it reports that direction).
                 if let (
-                    ContactPhaseKind::Impact(Phase3Kind::Slip { to, .. }),
-                    Phase3Kind::Slip { to: theirs, .. },
+                    ContactPhaseKind::Impact(PhaseKind::Slip { to, .. }),
+                    PhaseKind::Slip { to: theirs, .. },
                 ) = (first.kind, r.phases.as_slice()[0].kind)
                 {
                     let rays = impax::spatial::invariant_rays(&one);
@@ -145,12 +145,12 @@ fn decoupled_contacts_are_their_own_energetic() {
             // leaves rest at once along the ray the one-contact slip ends on.
             let theirs = r.phases.as_slice();
             let kinds: Vec<&str> = c.phases.iter().map(|x| x.kind.label()).collect();
-            let theirs_kinds: Vec<Phase3Kind> = theirs.iter().map(|x| x.kind).collect();
-            if let ([Phase3Kind::Slip { to, .. }], ["slip", "resumed-slip"]) =
+            let theirs_kinds: Vec<PhaseKind> = theirs.iter().map(|x| x.kind).collect();
+            if let ([PhaseKind::Slip { to, .. }], ["slip", "resumed-slip"]) =
                 (&theirs_kinds[..], &kinds[..])
             {
                 let to = *to;
-                let ContactPhaseKind::Impact(Phase3Kind::Resumed { angle }) = c.phases[1].kind
+                let ContactPhaseKind::Impact(PhaseKind::Resumed { angle }) = c.phases[1].kind
                 else {
                     unreachable!()
                 };

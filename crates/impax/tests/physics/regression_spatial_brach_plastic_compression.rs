@@ -14,12 +14,12 @@
 //! Found by `spatial_planar_embedding` (53 of the 10,000 planar problems) and
 //! `spatial_properties::plastic_impacts_end_at_the_end_of_compression`.
 
-use impax::spatial::ContactProblem3;
+use impax::spatial::ContactProblem;
 use impax::LawId;
 
 #[test]
 fn plastic_brach_ends_at_the_end_of_compression() {
-    let p = ContactProblem3::from_upper([1.0, 0.0, 0.1, 1.0, 0.0, 1.0], [0.0, 0.0, -0.7], 1.0, 0.0)
+    let p = ContactProblem::from_upper([1.0, 0.0, 0.1, 1.0, 0.0, 1.0], [0.0, 0.0, -0.7], 1.0, 0.0)
         .unwrap();
     let o = LawId::Brach.resolve3(&p).unwrap();
     let pc = o
@@ -46,7 +46,7 @@ fn plastic_sticking_brach_ends_at_the_end_of_compression() {
         0.6076392086965461,
         0.241674497009648,
     ];
-    let p = impax::spatial::ContactProblem3::from_upper(
+    let p = impax::spatial::ContactProblem::from_upper(
         w,
         [-5.085453246422038, 6.745601455720763, -0.01],
         1.2013314902089984,

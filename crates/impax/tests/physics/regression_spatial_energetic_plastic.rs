@@ -28,11 +28,11 @@
 //! `spatial_properties::plastic_impacts_end_at_the_end_of_compression`.
 
 use impax::planar::Verdict;
-use impax::spatial::ContactProblem3;
+use impax::spatial::ContactProblem;
 use impax::LawId;
 
-fn energetic(w: [f64; 6], v: [f64; 3], mu: f64) -> impax::spatial::Outcome3 {
-    let p = ContactProblem3::from_upper(w, v, mu, 0.0).unwrap();
+fn energetic(w: [f64; 6], v: [f64; 3], mu: f64) -> impax::spatial::Outcome {
+    let p = ContactProblem::from_upper(w, v, mu, 0.0).unwrap();
     LawId::Energetic
         .resolve3(&p)
         .unwrap_or_else(|b| panic!("{b} for {p:?}"))

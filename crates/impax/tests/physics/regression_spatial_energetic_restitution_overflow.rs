@@ -11,13 +11,13 @@
 //! `p = (NaN, NaN, inf)` as `Ok`. Found by
 //! `spatial_validation::no_law_panics_on_extreme_valid_problems`.
 
-use impax::spatial::ContactProblem3;
+use impax::spatial::ContactProblem;
 use impax::LawId;
 
 #[test]
 fn large_energetic_impact_is_finite() {
     let s = 1e-100;
-    let p = ContactProblem3::from_upper([s, 0.0, 0.0, s, 0.0, s], [0.0, 0.0, -1e100], 2.0, 1.0)
+    let p = ContactProblem::from_upper([s, 0.0, 0.0, s, 0.0, s], [0.0, 0.0, -1e100], 2.0, 1.0)
         .unwrap();
     let o = LawId::Energetic.resolve3(&p).unwrap();
     assert_eq!(

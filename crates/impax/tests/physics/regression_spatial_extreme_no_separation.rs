@@ -21,11 +21,11 @@
 //! Found by `spatial_validation::no_law_panics_on_extreme_valid_problems`, whose sweep now
 //! covers these ranges.
 
-use impax::spatial::ContactProblem3;
+use impax::spatial::ContactProblem;
 use impax::LawId;
 
 fn check(w: [f64; 6], v: [f64; 3], mu: f64, expect: [f64; 3]) {
-    let p = ContactProblem3::from_upper(w, v, mu, 0.5).unwrap();
+    let p = ContactProblem::from_upper(w, v, mu, 0.5).unwrap();
     let o = LawId::Newton
         .resolve3(&p)
         .unwrap_or_else(|b| panic!("{b} for {p:?}"));

@@ -19,7 +19,7 @@
 //! `spatial_properties::frictionless_laws_give_the_normal_impulse` and
 //! `spatial_invariants::resumption_direction_solves_the_shifted_system_and_is_the_centrifugal_ray`.
 
-use impax::spatial::{resumption_direction, ContactProblem3};
+use impax::spatial::{resumption_direction, ContactProblem};
 use impax::LawId;
 
 const W: [f64; 6] = [1.0, 0.0, 0.5, 1.0, 0.0, 1.0];
@@ -27,7 +27,7 @@ const W: [f64; 6] = [1.0, 0.0, 0.5, 1.0, 0.0, 1.0];
 #[test]
 fn frictionless_darboux_keller_laws_resume_slip_from_rest() {
     for v in [[0.0, 0.0, -1.0], [-0.25, 0.0, -1.0]] {
-        let p = ContactProblem3::from_upper(W, v, 0.0, 0.5).unwrap();
+        let p = ContactProblem::from_upper(W, v, 0.0, 0.5).unwrap();
         for law in [LawId::Newton, LawId::Poisson, LawId::Energetic] {
             let o = law
                 .resolve3(&p)
@@ -45,7 +45,7 @@ fn frictionless_darboux_keller_laws_resume_slip_from_rest() {
 
 #[test]
 fn frictionless_resumption_direction_is_the_coupling() {
-    let p = ContactProblem3::from_upper(W, [0.0, 0.0, -1.0], 0.0, 0.5).unwrap();
+    let p = ContactProblem::from_upper(W, [0.0, 0.0, -1.0], 0.0, 0.5).unwrap();
     let (s, rate) = resumption_direction(&p).expect("stick is impossible, slip resumes");
     assert!(
         (s.x - 1.0).abs() <= 1e-15 && s.y.abs() <= 1e-15,

@@ -12,7 +12,7 @@
 
 use impax::math::{Mat3, Vec3};
 use impax::planar::Verdict;
-use impax::spatial::ContactProblem3;
+use impax::spatial::ContactProblem;
 use impax::LawId;
 
 #[test]
@@ -33,7 +33,7 @@ fn an_elastic_frictionless_impact_does_not_gain_energy() {
         5.049285103674212e-130,
         -1.00000000372529,
     );
-    let p = ContactProblem3::new(w, v, 9.143899130258199e-100, 1.0).unwrap();
+    let p = ContactProblem::new(w, v, 9.143899130258199e-100, 1.0).unwrap();
     for law in [LawId::Newton, LawId::Poisson, LawId::Energetic] {
         let o = law.resolve3(&p).unwrap();
         assert_ne!(o.verdict, Verdict::EnergyGained, "{law}: {o:?}");
@@ -54,7 +54,7 @@ fn a_real_gain_of_newtons_rule_is_still_flagged() {
     let (wtt, wtn, wnn) = (1.0 + 3.0 * s * s, -3.0 * s * c, 1.0 + 3.0 * c * c);
     let w = Mat3::new(wtt, 0.0, wtn, 0.0, 1.0 + 3.0, 0.0, wtn, 0.0, wnn);
     let v = Vec3::new(0.5, 0.0, -1.0);
-    let p = ContactProblem3::new(w, v, 0.8, 1.0).unwrap();
+    let p = ContactProblem::new(w, v, 0.8, 1.0).unwrap();
     let newton = LawId::Newton.resolve3(&p).unwrap();
     let energetic = LawId::Energetic.resolve3(&p).unwrap();
     assert_eq!(energetic.verdict, Verdict::Consistent);

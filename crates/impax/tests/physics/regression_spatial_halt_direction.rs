@@ -15,19 +15,19 @@
 //! along `φ = 0`. Expected `to = 0` (within 1e-6); got `to = 0.2139` rad (12.3°). Found by
 //! `spatial_properties::rotation_of_the_tangent_plane`.
 
-use impax::spatial::{invariant_rays, ContactProblem3, Phase3Kind};
+use impax::spatial::{invariant_rays, ContactProblem, PhaseKind};
 use impax::LawId;
 
 #[test]
 fn the_slip_halts_along_a_centripetal_ray() {
     let p =
-        ContactProblem3::from_upper([6.0, 0.0, 0.7, 6.0, 0.0, 1.0], [-0.4, 0.9, -1.5], 1.45, 0.5)
+        ContactProblem::from_upper([6.0, 0.0, 0.7, 6.0, 0.0, 1.0], [-0.4, 0.9, -1.5], 1.45, 0.5)
             .unwrap();
     let rays = invariant_rays(&p);
     let o = LawId::Newton.resolve3(&p).unwrap();
     let ph = o.phases.as_slice();
     assert_eq!(ph.len(), 2, "the slip halts: {}", o.phases.summary());
-    let Phase3Kind::Slip { to, .. } = ph[0].kind else {
+    let PhaseKind::Slip { to, .. } = ph[0].kind else {
         panic!("{}", o.phases.summary())
     };
     let gap = rays

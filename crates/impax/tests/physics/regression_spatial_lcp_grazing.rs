@@ -33,12 +33,12 @@ use crate::support::rotation;
 use impax::math::{Mat3, SplitMix64, Vec2, Vec3};
 use impax::planar::BreakdownReason;
 use impax::spatial::lcp::{solutions, LcpSolution3};
-use impax::spatial::{ContactProblem3, Phase3Kind};
+use impax::spatial::{ContactProblem, PhaseKind};
 use impax::LawId;
 
 /// The largest violation of the conditions by `s`: impulses relative to `|p|`, `v⁻ + W p`
 /// relative to `|v⁻| + |W||p|`; and the reported velocity against `v⁻ + W p` the same way.
-fn residual(p: &ContactProblem3, s: &LcpSolution3) -> f64 {
+fn residual(p: &ContactProblem, s: &LcpSolution3) -> f64 {
     let imp = s.impulse;
     let v = p.velocity();
     let direct = v + p.w() * imp;
@@ -54,11 +54,11 @@ fn residual(p: &ContactProblem3, s: &LcpSolution3) -> f64 {
     // The cone.
     r = r.max((pt.norm() - mu * pn).max(0.0) / pscale);
     match s.kind {
-        Phase3Kind::Stick => {
+        PhaseKind::Stick => {
             assert_eq!(s.velocity_after.xy(), Vec2::zeros());
             r.max(direct.xy().norm() / vscale)
         }
-        Phase3Kind::Slip { to, .. } => {
+        PhaseKind::Slip { to, .. } => {
             // p_t = −μ p_n v̂_t⁺ for the reported v_t⁺, and the slip direction is `to`.
             let vt = s.velocity_after.xy();
             assert!(vt.norm() > 0.0, "{s:?}");
@@ -74,7 +74,7 @@ fn residual(p: &ContactProblem3, s: &LcpSolution3) -> f64 {
 
 #[test]
 fn the_issue_problem_has_its_solution() {
-    let p = ContactProblem3::from_upper(
+    let p = ContactProblem::from_upper(
         [
             614327.3694481789,
             341336.2451532919,
@@ -99,7 +99,7 @@ fn the_issue_problem_has_its_solution() {
         0.209_871_826_278_980_47,
         0.361_858_320_181_445_2,
     );
-    let Phase3Kind::Slip { to, .. } = s.kind else {
+    let PhaseKind::Slip { to, .. } = s.kind else {
         panic!("{s:?}")
     };
     assert!(
@@ -150,7 +150,7 @@ fn grazing_strongly_coupled_problems_always_have_a_solution() {
         let phi = rng.range(0.0, std::f64::consts::TAU);
         let m = rng.range(0.1, 2.0);
         let v = Vec3::new(m * phi.cos(), m * phi.sin(), -m * rng.decades(-12.0, -3.0));
-        let Ok(p) = ContactProblem3::new(w, v, rng.range(0.05, 2.0), rng.unit()) else {
+        let Ok(p) = ContactProblem::new(w, v, rng.range(0.05, 2.0), rng.unit()) else {
             panic!("condition {big:e} refused: {w:?}");
         };
         let sols = solutions(&p);
@@ -159,7 +159,7 @@ fn grazing_strongly_coupled_problems_always_have_a_solution() {
             let r = residual(&p, s);
             worst = worst.max(r);
             assert!(r <= 1e-12, "residual {r:e} for {p:?}: {s:?}");
-            slips += usize::from(matches!(s.kind, Phase3Kind::Slip { .. }));
+            slips += usize::from(matches!(s.kind, PhaseKind::Slip { .. }));
         }
         match LawId::Lcp.resolve3(&p) {
             Ok(o) => assert_eq!(o.impulse, sols[0].impulse),

@@ -10,12 +10,12 @@
 //! result (compression ends: `k_n ≈ 2.68 > 0` along the resumed ray) with `p_c = p_n` at
 //! `e = 0`. Found by `spatial_properties::plastic_impacts_end_at_the_end_of_compression`;
 //! `spatial_properties::marginal_stick_resolves` now samples the band `|ε| ∈ [1e-12, 1e-2]`.
-use impax::spatial::ContactProblem3;
+use impax::spatial::ContactProblem;
 use impax::LawId;
 
 #[test]
 fn marginal_stick_resolves() {
-    let p = ContactProblem3::from_upper(
+    let p = ContactProblem::from_upper(
         [
             0.9492171678682793,
             1.1112952706915435,

@@ -37,13 +37,13 @@
 use impax::math::SplitMix64;
 use impax::planar::{Inconsistency, Verdict};
 use impax::spatial::laws::hodograph;
-use impax::spatial::{ContactProblem3, Detail3, Outcome3};
+use impax::spatial::{ContactProblem, LawDetail, Outcome};
 use impax::LawId;
 
 const DK: [LawId; 3] = [LawId::Newton, LawId::Poisson, LawId::Energetic];
 
-fn issue_problem() -> ContactProblem3 {
-    ContactProblem3::from_upper(
+fn issue_problem() -> ContactProblem {
+    ContactProblem::from_upper(
         [
             1.2008324287749725,
             0.7591989489860935,
@@ -64,7 +64,7 @@ fn issue_problem() -> ContactProblem3 {
 }
 
 /// `16 ε (|v_n⁻| + (|W| |p|)_n)`: the round-off of `v_n⁻ + (W p)_n`.
-fn round_off(p: &ContactProblem3, o: &Outcome3) -> f64 {
+fn round_off(p: &ContactProblem, o: &Outcome) -> f64 {
     16.0 * f64::EPSILON * (p.velocity().z.abs() + (p.w().abs() * o.impulse.abs()).z)
 }
 
@@ -91,7 +91,7 @@ fn the_issue_problem_ends_separating() {
     let o = LawId::Poisson.resolve3(&p).unwrap();
     assert_eq!(o.verdict, Verdict::Consistent);
     assert!(o.velocity_after.z > 0.0, "v_n⁺ = {}", o.velocity_after.z);
-    let Detail3::DarbouxKeller {
+    let LawDetail::DarbouxKeller {
         slip_halt: Some(halt),
         second_compression: Some(p2),
         ..
@@ -151,7 +151,7 @@ fn the_new_inconsistency_has_an_id_and_a_message() {
 
 /// A random problem: `W = L Lᵀ + δ I` (coupled, anisotropic), `v_t⁻` of every size and
 /// direction, `μ` up to 20 (a high friction makes jamb frequent), `e ∈ [0, 1]`.
-fn random_problem(rng: &mut SplitMix64) -> ContactProblem3 {
+fn random_problem(rng: &mut SplitMix64) -> ContactProblem {
     loop {
         let mut l = [[0.0; 3]; 3];
         for (i, row) in l.iter_mut().enumerate() {
@@ -177,7 +177,7 @@ fn random_problem(rng: &mut SplitMix64) -> ContactProblem3 {
         };
         let e = if rng.unit() < 0.2 { 1.0 } else { rng.unit() };
         let upper = [w(0, 0), w(0, 1), w(0, 2), w(1, 1), w(1, 2), w(2, 2)];
-        if let Ok(p) = ContactProblem3::from_upper(upper, v, mu, e) {
+        if let Ok(p) = ContactProblem::from_upper(upper, v, mu, e) {
             return p;
         }
     }
@@ -204,7 +204,7 @@ fn no_darboux_keller_law_ends_approaching_unflagged() {
                     "{law}: v_n⁺ = {vn:e} unflagged for {p:?}"
                 );
             }
-            let Detail3::DarbouxKeller {
+            let LawDetail::DarbouxKeller {
                 second_compression: Some(_),
                 ..
             } = o.detail

@@ -1,6 +1,6 @@
 //! Regression: valid spatial `W` refused as "not positive definite".
 //!
-//! Bug: `ContactProblem3::new` tested the leading principal minors against the products of
+//! Bug: `ContactProblem::new` tested the leading principal minors against the products of
 //! the diagonal entries (`det W ≤ 1e-14 W11 W22 W33`). A well-conditioned but anisotropic `W`
 //! rotated away from the axes has a nearly rank-one pattern of entries, so that ratio is tiny
 //! although every eigenvalue is comfortably positive. Eigenvalues `(1e8, 1, 1)`, rotated:
@@ -35,7 +35,7 @@
 use crate::support::rotation;
 use impax::math::{Mat3, SplitMix64, Vec3};
 use impax::planar::Verdict;
-use impax::spatial::{ContactProblem3, PIVOT_TOL};
+use impax::spatial::{ContactProblem, PIVOT_TOL};
 use impax::{Error, LawId};
 
 const LAWS: [LawId; 6] = LawId::SPATIAL;
@@ -48,7 +48,7 @@ fn rotated(q: &Mat3, lambda: Vec3) -> Mat3 {
 
 /// Every law on `p`: the energy identity three ways to `tol` of the size of its terms,
 /// `energetic` never gaining energy, the Darboux–Keller laws never breaking down.
-fn check_laws(p: &ContactProblem3, tol: f64) -> f64 {
+fn check_laws(p: &ContactProblem, tol: f64) -> f64 {
     let mut worst = 0.0f64;
     for law in LAWS {
         let o = match law.resolve3(p) {
@@ -82,7 +82,7 @@ fn check_laws(p: &ContactProblem3, tol: f64) -> f64 {
 
 #[test]
 fn the_issue_case_is_accepted_and_resolved() {
-    let p = ContactProblem3::from_upper(
+    let p = ContactProblem::from_upper(
         [
             30087737.68985801,
             36569166.62089544,
@@ -104,7 +104,7 @@ fn every_rotation_of_eigenvalues_1e8_1_1_is_accepted() {
     let mut rng = SplitMix64(0x1e8);
     for _ in 0..2000 {
         let w = rotated(&rotation(&mut rng), Vec3::new(1e8, 1.0, 1.0));
-        let p = ContactProblem3::new(w, Vec3::new(0.3, -0.2, -1.0), rng.range(0.0, 2.0), 0.5)
+        let p = ContactProblem::new(w, Vec3::new(0.3, -0.2, -1.0), rng.range(0.0, 2.0), 0.5)
             .unwrap_or_else(|e| panic!("{e} for {w:?}"));
         check_laws(&p, 1e-9);
     }
@@ -131,7 +131,7 @@ fn the_accepted_range_is_what_the_laws_resolve_consistently() {
         };
         let v = Vec3::new(m * phi.cos(), m * phi.sin(), -rng.range(0.01, 2.0));
         let (mu, e) = (rng.range(0.0, 2.0), rng.unit());
-        match ContactProblem3::new(w, v, mu, e) {
+        match ContactProblem::new(w, v, mu, e) {
             Ok(p) => {
                 accepted += 1;
                 if kappa * PIVOT_TOL > 1.0 {
@@ -155,7 +155,7 @@ fn the_accepted_range_is_what_the_laws_resolve_consistently() {
 #[test]
 fn refusals_say_why_with_numbers() {
     let msg = |u: [f64; 6]| {
-        let e = ContactProblem3::from_upper(u, [0.4, -0.3, -1.0], 0.5, 0.5).unwrap_err();
+        let e = ContactProblem::from_upper(u, [0.4, -0.3, -1.0], 0.5, 0.5).unwrap_err();
         assert!(matches!(e, Error::NotPositiveDefinite { .. }), "{e:?}");
         assert_eq!(e.field(), "w");
         e.to_string()
@@ -183,7 +183,7 @@ fn refusals_say_why_with_numbers() {
     // Condition 1e13, rotated: numerically singular for the spatial laws, with the numbers.
     let mut rng = SplitMix64(7);
     let w = rotated(&rotation(&mut rng), Vec3::new(2.0, 1.0, 2e-13));
-    let e = ContactProblem3::new(w, Vec3::new(0.4, -0.3, -1.0), 0.5, 0.5).unwrap_err();
+    let e = ContactProblem::new(w, Vec3::new(0.4, -0.3, -1.0), 0.5, 0.5).unwrap_err();
     let m = e.to_string();
     assert!(
         m.contains("numerically singular: its L D Lᵀ pivot")

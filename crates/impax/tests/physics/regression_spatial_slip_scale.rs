@@ -42,7 +42,7 @@
 //!   scale for factors from 1e-300 to 1e300.
 
 use impax::math::{Mat3, SplitMix64, Vec3};
-use impax::spatial::{sticking_ratio, ContactProblem3, Outcome3, Resolution3, SpatialOptions};
+use impax::spatial::{sticking_ratio, ContactProblem, Outcome, Resolution, SpatialOptions};
 use impax::LawId;
 
 const DK: [LawId; 3] = [LawId::Newton, LawId::Poisson, LawId::Energetic];
@@ -64,17 +64,17 @@ fn random_w(rng: &mut SplitMix64) -> Mat3 {
 }
 
 /// The size of the terms of `v⁻ + W p` (its round-off scale), per component.
-fn velocity_scale(p: &ContactProblem3, o: &Outcome3) -> f64 {
+fn velocity_scale(p: &ContactProblem, o: &Outcome) -> f64 {
     (p.velocity().abs() + p.w().abs() * o.impulse.abs()).max()
 }
 
 #[test]
 fn the_issue_cases() {
-    let law_results = |p: &ContactProblem3| DK.map(|law| law.resolve3(p));
+    let law_results = |p: &ContactProblem| DK.map(|law| law.resolve3(p));
     // A slip of 1e-200: the zero-slip result.
     let w = [1.0, 0.0, 0.0, 1.0, 0.0, 1.0];
-    let tiny = ContactProblem3::from_upper(w, [0.0, 1e-200, -1.0], 0.5, 0.6).unwrap();
-    let zero = ContactProblem3::from_upper(w, [0.0, 0.0, -1.0], 0.5, 0.6).unwrap();
+    let tiny = ContactProblem::from_upper(w, [0.0, 1e-200, -1.0], 0.5, 0.6).unwrap();
+    let zero = ContactProblem::from_upper(w, [0.0, 0.0, -1.0], 0.5, 0.6).unwrap();
     for (a, b) in law_results(&tiny).iter().zip(law_results(&zero)) {
         let (a, b) = (a.as_ref().unwrap(), b.unwrap());
         assert!(
@@ -88,7 +88,7 @@ fn the_issue_cases() {
         assert!((a.impulse.z - 1.6).abs() <= 1e-15 * 1.6);
     }
     // A grazing impact: v_n⁺ = −e v_n⁻ = 7e-301, and Whittaker's impulse.
-    let grazing = ContactProblem3::from_upper(
+    let grazing = ContactProblem::from_upper(
         [3.5, 0.0, 0.0, 3.5, 0.0, 1.0],
         [0.5, 0.0, -1e-300],
         0.4,
@@ -114,16 +114,16 @@ fn tiny_slips_give_the_zero_slip_result_where_stick_is_stable() {
     for _ in 0..200 {
         let w = random_w(&mut rng);
         let vn = -rng.range(0.1, 2.0);
-        let probe = ContactProblem3::new(w, Vec3::new(0.0, 0.0, vn), 1.0, 0.5).unwrap();
+        let probe = ContactProblem::new(w, Vec3::new(0.0, 0.0, vn), 1.0, 0.5).unwrap();
         // Stick stable: μ above the sticking ratio.
         let mu = sticking_ratio(&probe).norm() * rng.range(1.01, 3.0) + 0.01;
         let e = rng.unit();
-        let zero = ContactProblem3::new(w, Vec3::new(0.0, 0.0, vn), mu, e).unwrap();
+        let zero = ContactProblem::new(w, Vec3::new(0.0, 0.0, vn), mu, e).unwrap();
         let base = DK.map(|law| law.resolve3(&zero).unwrap());
         for k in (20..=300).step_by(10) {
             let phi = rng.range(0.0, std::f64::consts::TAU);
             let s = 10f64.powi(-k);
-            let p = ContactProblem3::new(w, Vec3::new(s * phi.cos(), s * phi.sin(), vn), mu, e)
+            let p = ContactProblem::new(w, Vec3::new(s * phi.cos(), s * phi.sin(), vn), mu, e)
                 .unwrap();
             for (law, b) in DK.iter().zip(&base) {
                 let a = law
@@ -165,7 +165,7 @@ fn slips_far_above_the_normal_velocity_are_resolved_accurately() {
         for k in 0..=300 {
             let phi = rng.range(0.0, std::f64::consts::TAU);
             let vn = -10f64.powi(-k) * rng.range(0.1, 2.0);
-            let p = ContactProblem3::new(w, Vec3::new(phi.cos(), phi.sin(), vn), mu, e).unwrap();
+            let p = ContactProblem::new(w, Vec3::new(phi.cos(), phi.sin(), vn), mu, e).unwrap();
             for law in DK {
                 let a = law
                     .resolve3(&p)
@@ -213,7 +213,7 @@ fn slips_far_above_the_normal_velocity_are_resolved_accurately() {
 
 // ---- Scale invariance (mirrors tests/regression_scale_invariance.rs) ----
 
-fn random_problem(rng: &mut SplitMix64) -> Option<ContactProblem3> {
+fn random_problem(rng: &mut SplitMix64) -> Option<ContactProblem> {
     let w = random_w(rng);
     let phi = rng.range(0.0, std::f64::consts::TAU);
     let m = if rng.unit() < 0.1 {
@@ -227,11 +227,11 @@ fn random_problem(rng: &mut SplitMix64) -> Option<ContactProblem3> {
     } else {
         rng.range(0.0, 2.0)
     };
-    ContactProblem3::new(w, v, mu, rng.unit()).ok()
+    ContactProblem::new(w, v, mu, rng.unit()).ok()
 }
 
-fn scaled(p: &ContactProblem3, sv: f64, sw: f64) -> Option<ContactProblem3> {
-    ContactProblem3::new(p.w() * sw, p.velocity() * sv, p.friction(), p.restitution()).ok()
+fn scaled(p: &ContactProblem, sv: f64, sw: f64) -> Option<ContactProblem> {
+    ContactProblem::new(p.w() * sw, p.velocity() * sv, p.friction(), p.restitution()).ok()
 }
 
 /// Whether `x · k` stays a normal number (or zero) with room to spare.
@@ -240,7 +240,7 @@ fn representable(x: f64, k: f64) -> bool {
 }
 
 /// Every number of the outcome, scaled by the change of units, is representable.
-fn fits(o: &Outcome3, kp: f64, kv: f64) -> bool {
+fn fits(o: &Outcome, kp: f64, kv: f64) -> bool {
     let kw = kp * kv;
     o.impulse.iter().all(|&x| representable(x, kp))
         && o.velocity_after.iter().all(|&x| representable(x, kv))
@@ -258,9 +258,9 @@ fn fits(o: &Outcome3, kp: f64, kv: f64) -> bool {
 #[allow(clippy::too_many_arguments)]
 fn agree(
     law: LawId,
-    p: &ContactProblem3,
-    a: &Resolution3,
-    b: &Resolution3,
+    p: &ContactProblem,
+    a: &Resolution,
+    b: &Resolution,
     kp: f64,
     kv: f64,
     tol: f64,

@@ -12,13 +12,13 @@
 //! `energy_change = +inf` must come with `Verdict::EnergyGained`. Found by
 //! `spatial_validation::no_law_panics_on_extreme_valid_problems`.
 
-use impax::spatial::ContactProblem3;
+use impax::spatial;
 use impax::LawId;
 
 #[test]
 fn an_overflowing_gain_is_a_breakdown() {
     let p =
-        ContactProblem3::from_upper([1.0, 0.0, 0.0, 1.0, 0.0, 1.0], [1.0, 0.0, -1.0], 1e200, 1.0)
+        spatial::ContactProblem::from_upper([1.0, 0.0, 0.0, 1.0, 0.0, 1.0], [1.0, 0.0, -1.0], 1e200, 1.0)
             .unwrap();
     match LawId::Whittaker.resolve3(&p) {
         Err(b) => assert_eq!(b.reason.id(), "overflow", "{b}"),
@@ -29,7 +29,7 @@ fn an_overflowing_gain_is_a_breakdown() {
     }
     // A large but representable gain stays a result, and a gain.
     let p =
-        ContactProblem3::from_upper([1.0, 0.0, 0.0, 1.0, 0.0, 1.0], [1.0, 0.0, -1.0], 1e100, 1.0)
+        spatial::ContactProblem::from_upper([1.0, 0.0, 0.0, 1.0, 0.0, 1.0], [1.0, 0.0, -1.0], 1e100, 1.0)
             .unwrap();
     let o = LawId::Whittaker.resolve3(&p).expect("representable");
     assert!(o.energy_change.is_finite() && o.energy_change > 1e199);

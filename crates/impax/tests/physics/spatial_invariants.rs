@@ -23,7 +23,7 @@
 
 use impax::math::SplitMix64;
 use impax::spatial::{
-    invariant_rays, resumption_direction, sticking_ratio, ContactProblem3, InvariantRays, RayKind,
+    invariant_rays, resumption_direction, sticking_ratio, ContactProblem, InvariantRays, RayKind,
 };
 use std::f64::consts::{PI, TAU};
 
@@ -39,7 +39,7 @@ struct Field {
 }
 
 impl Field {
-    fn of(p: &ContactProblem3) -> Self {
+    fn of(p: &ContactProblem) -> Self {
         let m = p.w();
         Field {
             a: [[m[(0, 0)], m[(0, 1)]], [m[(1, 0)], m[(1, 1)]]],
@@ -106,7 +106,7 @@ impl Field {
 }
 
 /// A random problem: `W_tt = R diag(d1, d2) Rᵀ`, `w_tn = ρ √w_nn W_tt^{1/2} û`.
-fn random_problem(rng: &mut SplitMix64) -> ContactProblem3 {
+fn random_problem(rng: &mut SplitMix64) -> ContactProblem {
     let d1 = rng.decades(-1.0, 1.0);
     let d2 = d1 * rng.decades(0.0, 2.0);
     let th = rng.range(0.0, PI);
@@ -134,7 +134,7 @@ fn random_problem(rng: &mut SplitMix64) -> ContactProblem3 {
     } else {
         rng.range(0.0, 2.0)
     };
-    ContactProblem3::from_upper([a00, a01, w[0], a11, w[1], wnn], [0.3, -0.2, -1.0], mu, 0.5)
+    ContactProblem::from_upper([a00, a01, w[0], a11, w[1], wnn], [0.3, -0.2, -1.0], mu, 0.5)
         .expect("valid by construction")
 }
 
@@ -261,14 +261,14 @@ fn invariant_rays_are_the_roots_of_f_found_by_a_dense_scan() {
 #[test]
 fn special_structures_have_the_expected_rays() {
     // Isotropic W_tt, w_tn = 0 (a sphere): every direction is invariant.
-    let p = ContactProblem3::from_upper([3.5, 0.0, 0.0, 3.5, 0.0, 1.0], [0.5, 0.2, -1.0], 0.4, 0.5)
+    let p = ContactProblem::from_upper([3.5, 0.0, 0.0, 3.5, 0.0, 1.0], [0.5, 0.2, -1.0], 0.4, 0.5)
         .unwrap();
     assert_eq!(invariant_rays(&p), InvariantRays::All);
     // w_tn = 0, anisotropic: the eigen-directions of W_tt, all centripetal.
     let th: f64 = 0.3;
     let (s, c) = th.sin_cos();
     let (d1, d2) = (1.0, 4.0);
-    let p = ContactProblem3::from_upper(
+    let p = ContactProblem::from_upper(
         [
             c * c * d1 + s * s * d2,
             c * s * (d1 - d2),
@@ -300,7 +300,7 @@ fn special_structures_have_the_expected_rays() {
         );
     }
     // μ = 0: the rays ±ŵ_tn, centrifugal along +ŵ_tn.
-    let p = ContactProblem3::from_upper([2.0, 0.3, 0.3, 1.0, 0.4, 1.0], [0.5, 0.2, -1.0], 0.0, 0.5)
+    let p = ContactProblem::from_upper([2.0, 0.3, 0.3, 1.0, 0.4, 1.0], [0.5, 0.2, -1.0], 0.0, 0.5)
         .unwrap();
     let rays = invariant_rays(&p);
     let rays = rays.as_slice();

@@ -8,10 +8,10 @@
 //! * `rtol = NaN` gives the default result bit for bit.
 
 use impax::math::SplitMix64;
-use impax::spatial::{ContactProblem3, Detail3, SpatialOptions};
+use impax::spatial::{ContactProblem, LawDetail, SpatialOptions};
 use impax::LawId;
 
-fn problems(n: usize) -> Vec<ContactProblem3> {
+fn problems(n: usize) -> Vec<ContactProblem> {
     let mut rng = SplitMix64(0x5EED_0003);
     let mut out = Vec::with_capacity(n);
     while out.len() < n {
@@ -29,7 +29,7 @@ fn problems(n: usize) -> Vec<ContactProblem3> {
         ];
         let mu = rng.range(0.0, 1.5);
         let e = rng.unit();
-        if let Ok(p) = ContactProblem3::from_upper(
+        if let Ok(p) = ContactProblem::from_upper(
             [w(0, 0), w(0, 1), w(0, 2), w(1, 1), w(1, 2), w(2, 2)],
             v,
             mu,
@@ -41,9 +41,9 @@ fn problems(n: usize) -> Vec<ContactProblem3> {
     out
 }
 
-fn steps(d: &Detail3) -> u32 {
+fn steps(d: &LawDetail) -> u32 {
     match d {
-        Detail3::DarbouxKeller { steps, .. } => *steps,
+        LawDetail::DarbouxKeller { steps, .. } => *steps,
         _ => 0,
     }
 }

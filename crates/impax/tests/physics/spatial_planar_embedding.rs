@@ -1,6 +1,6 @@
 //! Planar problems embedded in 3D agree with the planar closed form.
 //!
-//! `ContactProblem3::from_planar(p, w22)` puts a planar problem in the `(t1, n)` plane with a
+//! `spatial::ContactProblem::from_planar(p, w22)` puts a planar problem in the `(t1, n)` plane with a
 //! decoupled second tangent. Nothing can then happen along `t2`, so every 3D law must give
 //! the planar law's result (`LawId::resolve`) with zeros along `t2`:
 //!
@@ -22,7 +22,7 @@
 
 use impax::math::SplitMix64;
 use impax::planar::{ContactProblem, Outcome, PhaseKind, SlipDirection};
-use impax::spatial::{ContactProblem3, Outcome3, Phase3Kind};
+use impax::spatial;
 use impax::LawId;
 use std::f64::consts::PI;
 
@@ -81,19 +81,19 @@ fn random_planar(rng: &mut SplitMix64) -> ContactProblem {
 /// Whether a 3D phase corresponds to a planar one. `after_halt`: the phase follows a halt,
 /// where a planar slip is the 3D resumed slip; `at_rest`: it starts from `v_t⁻ = 0`, where
 /// a planar slip is the 3D resumed slip (Darboux–Keller) or a slip (algebraic laws).
-fn phase_matches(planar: PhaseKind, spatial: Phase3Kind, after_halt: bool, at_rest: bool) -> bool {
+fn phase_matches(planar: PhaseKind, spatial: spatial::PhaseKind, after_halt: bool, at_rest: bool) -> bool {
     let on_axis = |a: f64, dir: SlipDirection| match dir {
         SlipDirection::Positive => a == 0.0,
         SlipDirection::Negative => (a.abs() - PI).abs() <= 1e-15,
         SlipDirection::None => false,
     };
     match (planar, spatial) {
-        (PhaseKind::Stick, Phase3Kind::Stick) => true,
-        (PhaseKind::Slip(SlipDirection::None), Phase3Kind::NoSlip) => true,
-        (PhaseKind::Slip(d), Phase3Kind::Slip { from, to }) if !after_halt => {
+        (PhaseKind::Stick, spatial::PhaseKind::Stick) => true,
+        (PhaseKind::Slip(SlipDirection::None), spatial::PhaseKind::NoSlip) => true,
+        (PhaseKind::Slip(d), spatial::PhaseKind::Slip { from, to }) if !after_halt => {
             on_axis(from, d) && on_axis(to, d)
         }
-        (PhaseKind::Slip(d), Phase3Kind::Resumed { angle }) if after_halt || at_rest => {
+        (PhaseKind::Slip(d), spatial::PhaseKind::Resumed { angle }) if after_halt || at_rest => {
             on_axis(angle, d)
         }
         _ => false,
@@ -102,7 +102,7 @@ fn phase_matches(planar: PhaseKind, spatial: Phase3Kind, after_halt: bool, at_re
 
 /// Deviations `[impulse, velocity, compression impulse, W_c, W_r, W_t, ΔT, phase ends]`,
 /// or a description of a structural mismatch.
-fn compare(problem: &ContactProblem, p2: &Outcome, p3: &Outcome3) -> Result<[f64; 8], String> {
+fn compare(problem: &ContactProblem, p2: &Outcome, p3: &spatial::Outcome) -> Result<[f64; 8], String> {
     let w = problem.w();
     let wn = w.norm();
     let v = problem.velocity();
@@ -199,7 +199,7 @@ fn planar_problems_embedded_in_3d_agree_with_the_planar_closed_form_for_all_five
                     let mut worst = [[(0.0f64, 0usize); 8]; 5];
                     let mut breakdowns = 0;
                     for (i, (p, w22)) in cases.iter().enumerate().skip(k).step_by(threads) {
-                        let p3 = ContactProblem3::from_planar(p, *w22).expect("valid embedding");
+                        let p3 = spatial::ContactProblem::from_planar(p, *w22).expect("valid embedding");
                         for (li, law) in LAWS.iter().enumerate() {
                             match (law.resolve(p), law.resolve3(&p3)) {
                                 (Ok(a), Ok(b)) => match compare(p, &a, &b) {

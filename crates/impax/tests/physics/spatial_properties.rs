@@ -34,7 +34,7 @@
 
 use impax::math::{Mat3, Vec3};
 use impax::planar::Verdict;
-use impax::spatial::{sticking_ratio, ContactProblem3, Outcome3, Phase3Kind};
+use impax::spatial::{sticking_ratio, ContactProblem, Outcome, PhaseKind};
 use impax::LawId;
 use proptest::prelude::*;
 // Failures are not persisted (`failure_persistence: None`): the problems are printed in the
@@ -89,7 +89,7 @@ struct Pin {
     plastic: bool,
 }
 
-fn build((w, v): (RawW, RawV), pin: Pin) -> ContactProblem3 {
+fn build((w, v): (RawW, RawV), pin: Pin) -> ContactProblem {
     let (x1, xa, th, xn, rho, ang) = w;
     let (xv, phi, vn, mu, e) = v;
     let d1 = 10f64.powf(x1);
@@ -122,7 +122,7 @@ fn build((w, v): (RawW, RawV), pin: Pin) -> ContactProblem3 {
         mu.clamp(0.0, 2.0)
     };
     let e = if pin.plastic { 0.0 } else { e.clamp(0.0, 1.0) };
-    ContactProblem3::from_upper(
+    ContactProblem::from_upper(
         [a00, a01, wt[0], a11, wt[1], wnn],
         [m * phi.cos(), m * phi.sin(), vn],
         mu,
@@ -131,14 +131,14 @@ fn build((w, v): (RawW, RawV), pin: Pin) -> ContactProblem3 {
     .expect("valid by construction")
 }
 
-fn problem_with(pin: Pin) -> impl Strategy<Value = ContactProblem3> {
+fn problem_with(pin: Pin) -> impl Strategy<Value = ContactProblem> {
     (raw_w(), raw_v()).prop_map(move |r| build(r, pin))
 }
 
 /// Problems on either side of the stick limit by a hair: `μ = |W_tt⁻¹ w_tn| (1 + ε)`,
 /// `|ε| ∈ [1e-12, 1e-2]` of either sign, `e = 0` (there the slip nearly freezes: the
 /// centripetal and centrifugal rays nearly coincide and the field nearly vanishes on them).
-fn marginal_problem() -> impl Strategy<Value = ContactProblem3> {
+fn marginal_problem() -> impl Strategy<Value = ContactProblem> {
     (
         problem_with(Pin {
             plastic: true,
@@ -151,46 +151,46 @@ fn marginal_problem() -> impl Strategy<Value = ContactProblem3> {
             let limit = sticking_ratio(&p).norm();
             let eps = 10f64.powf(x).copysign(if above { 1.0 } else { -1.0 });
             (limit > 1e-6)
-                .then(|| ContactProblem3::new(*p.w(), p.velocity(), limit * (1.0 + eps), 0.0).ok())
+                .then(|| ContactProblem::new(*p.w(), p.velocity(), limit * (1.0 + eps), 0.0).ok())
                 .flatten()
         })
 }
 
-fn problem() -> impl Strategy<Value = ContactProblem3> {
+fn problem() -> impl Strategy<Value = ContactProblem> {
     problem_with(Pin::default())
 }
 
 // ---------------------------------------------------------------------------------------
 // Helpers
 
-fn abs_w(p: &ContactProblem3) -> Mat3 {
+fn abs_w(p: &ContactProblem) -> Mat3 {
     p.w().abs()
 }
 
 /// `v⁻·p + ½ pᵀ W p`, recomputed here.
-fn energy_of(p: &ContactProblem3, q: Vec3) -> f64 {
+fn energy_of(p: &ContactProblem, q: Vec3) -> f64 {
     p.velocity().dot(&q) + 0.5 * q.dot(&(p.w() * q))
 }
 
 /// The size of the terms of `ΔT`: `|v⁻|·|p| + ½ |p|ᵀ|W||p|`.
-fn energy_scale(p: &ContactProblem3, q: Vec3) -> f64 {
+fn energy_scale(p: &ContactProblem, q: Vec3) -> f64 {
     let qa = q.abs();
     p.velocity().abs().dot(&qa) + 0.5 * qa.dot(&(abs_w(p) * qa))
 }
 
 /// The size of the terms of `v⁻ + W p`.
-fn velocity_scale(p: &ContactProblem3, q: Vec3) -> f64 {
+fn velocity_scale(p: &ContactProblem, q: Vec3) -> f64 {
     (p.velocity().abs() + abs_w(p) * q.abs()).max()
 }
 
 /// The energy-gain bound (see the header).
-fn gain_bound(p: &ContactProblem3, o: &Outcome3) -> f64 {
+fn gain_bound(p: &ContactProblem, o: &Outcome) -> f64 {
     let terms = (p.velocity().abs() + o.velocity_after.abs()).dot(&o.impulse.abs());
     1e-12 * p.approach_energy() + 16.0 * f64::EPSILON * terms
 }
 
 /// The checks made on every `energetic` resolution.
-fn check_energetic(p: &ContactProblem3) -> Result<(), TestCaseError> {
+fn check_energetic(p: &ContactProblem) -> Result<(), TestCaseError> {
     let o = LawId::Energetic
         .resolve3(p)
         .map_err(|b| TestCaseError::fail(format!("energetic broke down ({b}) for {p:?}")))?;
@@ -220,7 +220,7 @@ fn check_energetic(p: &ContactProblem3) -> Result<(), TestCaseError> {
 }
 
 /// Energy identity, `v⁺ = v⁻ + W p`, `p_n ≥ 0`, and (Darboux–Keller laws) the work signs.
-fn check_identities(p: &ContactProblem3, o: &Outcome3) -> Result<(), TestCaseError> {
+fn check_identities(p: &ContactProblem, o: &Outcome) -> Result<(), TestCaseError> {
     let law = o.law;
     let scale = energy_scale(p, o.impulse);
     let tol = if law.is_darboux_keller() { 1e-9 } else { 1e-12 };
@@ -354,10 +354,10 @@ proptest! {
             for (i, (x, y)) in pa.iter().zip(pb).enumerate() {
                 let halted = i + 1 < pa.len();
                 let ok = match (x.kind, y.kind) {
-                    (Phase3Kind::Slip { from: f1, to: t1 }, Phase3Kind::Slip { from: f2, to: t2 }) => {
+                    (PhaseKind::Slip { from: f1, to: t1 }, PhaseKind::Slip { from: f2, to: t2 }) => {
                         turned(f1, f2) && (halted || turned(t1, t2))
                     }
-                    (Phase3Kind::Resumed { angle: a1 }, Phase3Kind::Resumed { angle: a2 }) => turned(a1, a2),
+                    (PhaseKind::Resumed { angle: a1 }, PhaseKind::Resumed { angle: a2 }) => turned(a1, a2),
                     (k1, k2) => k1 == k2,
                 };
                 prop_assert!(ok, "{}: phases {:?} vs rotated {:?} (θ = {}) for {:?}", law, x, y, theta, p);
@@ -378,7 +378,7 @@ proptest! {
         for law in LAWS {
             let o = law.resolve3(&p).map_err(|b| TestCaseError::fail(format!("{b} for {p:?}")))?;
             for ph in o.phases.as_slice() {
-                if let Phase3Kind::Slip { from, to } = ph.kind {
+                if let PhaseKind::Slip { from, to } = ph.kind {
                     prop_assert!(from == to, "{}: slip turned from {} to {} ({}) for {:?}",
                         law, from, to, o.phases.summary(), p);
                 }

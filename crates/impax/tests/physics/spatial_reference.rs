@@ -61,7 +61,7 @@
 //! time is the library's own integration (about 5 ms per law and problem unoptimised).
 
 use impax::math::SplitMix64;
-use impax::spatial::{ContactProblem3, Detail3, Outcome3, Phase3Kind};
+use impax::spatial::{ContactProblem, LawDetail, Outcome, PhaseKind};
 use impax::LawId;
 use std::f64::consts::{PI, TAU};
 
@@ -99,7 +99,7 @@ struct Data {
 }
 
 impl Data {
-    fn of(p: &ContactProblem3) -> Self {
+    fn of(p: &ContactProblem) -> Self {
         let m = p.w();
         let v = p.velocity();
         Data {
@@ -788,7 +788,7 @@ fn centripetal_rays(d: &Data) -> Vec<f64> {
     out
 }
 
-fn random_problem(rng: &mut SplitMix64) -> ContactProblem3 {
+fn random_problem(rng: &mut SplitMix64) -> ContactProblem {
     let d1 = rng.decades(-1.0, 1.0);
     let aniso = if rng.unit() < 0.15 {
         1.0
@@ -878,7 +878,7 @@ fn random_problem(rng: &mut SplitMix64) -> ContactProblem3 {
         let phi = rng.range(0.0, TAU);
         [mag * phi.cos(), mag * phi.sin()]
     };
-    ContactProblem3::from_upper([a00, a01, w[0], a11, w[1], wnn], [vt[0], vt[1], vn], mu, e)
+    ContactProblem::from_upper([a00, a01, w[0], a11, w[1], wnn], [vt[0], vt[1], vn], mu, e)
         .expect("valid by construction")
 }
 
@@ -948,7 +948,7 @@ const WORST_NAMES: [&str; 9] = [
     "second compression",
 ];
 
-fn check(case: usize, problem: &ContactProblem3, t: &mut Tally) {
+fn check(case: usize, problem: &ContactProblem, t: &mut Tally) {
     let d = Data::of(problem);
     let ends = match reference(&d) {
         Ok(e) => e,
@@ -974,7 +974,7 @@ fn check(case: usize, problem: &ContactProblem3, t: &mut Tally) {
                 continue;
             }
         };
-        let (r, o): (LawEnd, Outcome3) = r;
+        let (r, o): (LawEnd, Outcome) = r;
         classify(&r, t);
         compare(case, *law, problem, &d, &r, &o, t);
     }
@@ -1008,10 +1008,10 @@ fn classify(r: &LawEnd, t: &mut Tally) {
 fn compare(
     case: usize,
     law: LawId,
-    problem: &ContactProblem3,
+    problem: &ContactProblem,
     d: &Data,
     r: &LawEnd,
-    o: &Outcome3,
+    o: &Outcome,
     t: &mut Tally,
 ) {
     let s = &r.st;
@@ -1039,7 +1039,7 @@ fn compare(
     devs[5] = (o.work.friction - s.wt).abs() / escale;
     devs[6] = (o.energy_change - (s.wn + s.wt)).abs() / escale;
     let (halt, second) = match o.detail {
-        Detail3::DarbouxKeller {
+        LawDetail::DarbouxKeller {
             slip_halt,
             second_compression,
             ..
@@ -1082,8 +1082,8 @@ fn compare(
     // The regime after the halt.
     if let (Some(_), Some(ph)) = (r.halt, o.phases.as_slice().get(1)) {
         let ok = match (ph.kind, r.after) {
-            (Phase3Kind::Stick, After::Stick) => true,
-            (Phase3Kind::Resumed { angle }, After::Resumed(b)) => {
+            (PhaseKind::Stick, After::Stick) => true,
+            (PhaseKind::Resumed { angle }, After::Resumed(b)) => {
                 let dd = (angle - b).rem_euclid(TAU);
                 dd.min(TAU - dd) <= 1e-7
             }
@@ -1105,11 +1105,11 @@ fn compare(
 #[test]
 fn darboux_keller_3d_agrees_with_an_independent_rk4_reference_on_2000_problems() {
     let mut rng = SplitMix64(0x05EA_71A1_3D3D);
-    let mut problems: Vec<ContactProblem3> =
+    let mut problems: Vec<ContactProblem> =
         (0..PROBLEMS).map(|_| random_problem(&mut rng)).collect();
     problems.extend(
         JAMB.iter()
-            .map(|&(w, v, mu, e)| ContactProblem3::from_upper(w, v, mu, e).expect("valid")),
+            .map(|&(w, v, mu, e)| ContactProblem::from_upper(w, v, mu, e).expect("valid")),
     );
     let threads = std::thread::available_parallelism()
         .map_or(1, |n| n.get())

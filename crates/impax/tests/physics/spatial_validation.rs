@@ -1,6 +1,6 @@
-//! Input validation of `ContactProblem3` and robustness of every law on extreme problems.
+//! Input validation of `spatial::ContactProblem` and robustness of every law on extreme problems.
 //!
-//! * every invalid input to `ContactProblem3::new`, `from_upper`, `from_planar` and
+//! * every invalid input to `spatial::ContactProblem::new`, `from_upper`, `from_planar` and
 //!   `rotated` returns the right `impax::Error` variant, naming the field (in the variant
 //!   and at the start of its message): a NaN or infinite entry of `W` (all nine positions:
 //!   `w[t1,t2]` …), of `v` (`v[t1]`, `v[t2]`, `v[n]`), `friction`, `restitution`;
@@ -22,7 +22,7 @@
 
 use impax::math::{Mat3, Vec3};
 use impax::planar::ContactProblem;
-use impax::spatial::ContactProblem3;
+use impax::spatial;
 use impax::{Error, LawId};
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
@@ -52,20 +52,20 @@ fn non_finite_entries_are_named() {
             for j in 0..3 {
                 let mut w = w0();
                 w[(i, j)] = bad;
-                let e = ContactProblem3::new(w, v0(), 0.5, 0.5).unwrap_err();
+                let e = spatial::ContactProblem::new(w, v0(), 0.5, 0.5).unwrap_err();
                 assert!(matches!(e, Error::NotFinite { .. }), "{e:?}");
                 assert_field(&e, &format!("w[{},{}]", NAMES[i], NAMES[j]));
             }
             let mut v = v0();
             v[i] = bad;
-            let e = ContactProblem3::new(w0(), v, 0.5, 0.5).unwrap_err();
+            let e = spatial::ContactProblem::new(w0(), v, 0.5, 0.5).unwrap_err();
             assert!(matches!(e, Error::NotFinite { .. }), "{e:?}");
             assert_field(&e, &format!("v[{}]", NAMES[i]));
         }
-        let e = ContactProblem3::new(w0(), v0(), bad, 0.5).unwrap_err();
+        let e = spatial::ContactProblem::new(w0(), v0(), bad, 0.5).unwrap_err();
         assert!(matches!(e, Error::NotFinite { .. }), "{e:?}");
         assert_field(&e, "friction");
-        let e = ContactProblem3::new(w0(), v0(), 0.5, bad).unwrap_err();
+        let e = spatial::ContactProblem::new(w0(), v0(), 0.5, bad).unwrap_err();
         assert!(matches!(e, Error::NotFinite { .. }), "{e:?}");
         assert_field(&e, "restitution");
         // from_upper: the upper-triangle entry k lands at (i, j) and (j, i); the first one
@@ -74,16 +74,16 @@ fn non_finite_entries_are_named() {
         for (k, &(i, j)) in at.iter().enumerate() {
             let mut u = [2.0, 0.3, 0.2, 1.5, -0.1, 1.0];
             u[k] = bad;
-            let e = ContactProblem3::from_upper(u, [0.4, -0.3, -1.0], 0.5, 0.5).unwrap_err();
+            let e = spatial::ContactProblem::from_upper(u, [0.4, -0.3, -1.0], 0.5, 0.5).unwrap_err();
             assert!(matches!(e, Error::NotFinite { .. }), "{e:?}");
             assert_field(&e, &format!("w[{},{}]", NAMES[i], NAMES[j]));
         }
         // from_planar: the second tangent's entry.
         let pl = ContactProblem::from_entries(2.0, 0.3, 1.0, 0.4, -1.0, 0.5, 0.5).unwrap();
-        let e = ContactProblem3::from_planar(&pl, bad).unwrap_err();
+        let e = spatial::ContactProblem::from_planar(&pl, bad).unwrap_err();
         assert_field(&e, "w[t2,t2]");
         // rotated by a non-finite angle.
-        let p = ContactProblem3::new(w0(), v0(), 0.5, 0.5).unwrap();
+        let p = spatial::ContactProblem::new(w0(), v0(), 0.5, 0.5).unwrap();
         let e = p.rotated(bad).unwrap_err();
         assert!(matches!(e, Error::NotFinite { .. }), "{e:?}");
     }
@@ -94,7 +94,7 @@ fn non_symmetric_matrices_are_rejected_with_both_entries() {
     for (i, j) in [(0, 1), (0, 2), (1, 2)] {
         let mut w = w0();
         w[(i, j)] += 1e-6;
-        let e = ContactProblem3::new(w, v0(), 0.5, 0.5).unwrap_err();
+        let e = spatial::ContactProblem::new(w, v0(), 0.5, 0.5).unwrap_err();
         match &e {
             Error::NotSymmetric { upper, lower, .. } => {
                 assert_eq!((*upper, *lower), (w[(i, j)], w[(j, i)]), "{e:?}");
@@ -106,7 +106,7 @@ fn non_symmetric_matrices_are_rejected_with_both_entries() {
     // Round-off asymmetry (1e-15 relative) is accepted.
     let mut w = w0();
     w[(0, 2)] *= 1.0 + 1e-15;
-    assert!(ContactProblem3::new(w, v0(), 0.5, 0.5).is_ok());
+    assert!(spatial::ContactProblem::new(w, v0(), 0.5, 0.5).is_ok());
 }
 
 #[test]
@@ -122,7 +122,7 @@ fn matrices_that_are_not_positive_definite_are_rejected() {
         [1.0, 0.0, 0.0, 1.0, 1.0, 1.0 + 1e-16], // numerically singular
     ];
     for u in bad {
-        let e = ContactProblem3::from_upper(u, [0.4, -0.3, -1.0], 0.5, 0.5).unwrap_err();
+        let e = spatial::ContactProblem::from_upper(u, [0.4, -0.3, -1.0], 0.5, 0.5).unwrap_err();
         assert!(
             matches!(e, Error::NotPositiveDefinite { .. }),
             "{u:?}: {e:?}"
@@ -131,7 +131,7 @@ fn matrices_that_are_not_positive_definite_are_rejected() {
     }
     let pl = ContactProblem::from_entries(2.0, 0.3, 1.0, 0.4, -1.0, 0.5, 0.5).unwrap();
     for w22 in [0.0, -1.0] {
-        let e = ContactProblem3::from_planar(&pl, w22).unwrap_err();
+        let e = spatial::ContactProblem::from_planar(&pl, w22).unwrap_err();
         assert!(matches!(e, Error::NotPositiveDefinite { .. }), "{e:?}");
         assert_field(&e, "w");
     }
@@ -140,7 +140,7 @@ fn matrices_that_are_not_positive_definite_are_rejected() {
 #[test]
 fn out_of_range_velocity_and_coefficients_are_named() {
     for vn in [0.0, -0.0, 1e-300, 1.0] {
-        let e = ContactProblem3::new(w0(), Vec3::new(0.4, -0.3, vn), 0.5, 0.5).unwrap_err();
+        let e = spatial::ContactProblem::new(w0(), Vec3::new(0.4, -0.3, vn), 0.5, 0.5).unwrap_err();
         match &e {
             Error::NotApproaching { value, .. } => assert_eq!(value.to_bits(), vn.to_bits()),
             other => panic!("v_n = {vn}: {other:?}"),
@@ -148,7 +148,7 @@ fn out_of_range_velocity_and_coefficients_are_named() {
         assert_field(&e, "v");
     }
     for mu in [-1e-300, -0.5, -1e300] {
-        let e = ContactProblem3::new(w0(), v0(), mu, 0.5).unwrap_err();
+        let e = spatial::ContactProblem::new(w0(), v0(), mu, 0.5).unwrap_err();
         assert!(
             matches!(e, Error::OutOfRange { value, .. } if value == mu),
             "{e:?}"
@@ -156,7 +156,7 @@ fn out_of_range_velocity_and_coefficients_are_named() {
         assert_field(&e, "friction");
     }
     for r in [-1e-300, -0.1, 1.0 + f64::EPSILON, 2.0] {
-        let e = ContactProblem3::new(w0(), v0(), 0.5, r).unwrap_err();
+        let e = spatial::ContactProblem::new(w0(), v0(), 0.5, r).unwrap_err();
         assert!(
             matches!(e, Error::OutOfRange { value, .. } if value == r),
             "{e:?}"
@@ -169,18 +169,18 @@ fn out_of_range_velocity_and_coefficients_are_named() {
         (Mat3::identity() * 1e-100, Vec3::new(1e105, 0.0, -1e105)),
         (Mat3::identity(), Vec3::new(1e300, 1e300, -1e300)),
     ] {
-        let e = ContactProblem3::new(w, v, 0.5, 0.5).unwrap_err();
+        let e = spatial::ContactProblem::new(w, v, 0.5, 0.5).unwrap_err();
         assert!(matches!(e, Error::OutOfRange { .. }), "{e:?}");
         assert_field(&e, "v");
     }
     // Valid limits.
     for (mu, r) in [(0.0, 0.0), (0.0, 1.0), (2.0, 1.0), (-0.0, 0.5)] {
         assert!(
-            ContactProblem3::new(w0(), v0(), mu, r).is_ok(),
+            spatial::ContactProblem::new(w0(), v0(), mu, r).is_ok(),
             "μ = {mu}, e = {r}"
         );
     }
-    assert!(ContactProblem3::new(w0(), Vec3::new(0.0, 0.0, -1.0), 0.5, 0.5).is_ok());
+    assert!(spatial::ContactProblem::new(w0(), Vec3::new(0.0, 0.0, -1.0), 0.5, 0.5).is_ok());
 }
 
 /// Upper triangles of `W`: near-singular through the coupling (Schur complement ~1e-6),
@@ -230,7 +230,7 @@ fn no_law_panics_on_extreme_valid_problems() {
                 let mu = mus[k % mus.len()];
                 let e = es[(k / mus.len()) % es.len()];
                 for (mu, e) in [(mu, e), (mus[(k + 3) % mus.len()], es[(k + 1) % es.len()])] {
-                    let p = match ContactProblem3::from_upper(u, v, mu, e) {
+                    let p = match spatial::ContactProblem::from_upper(u, v, mu, e) {
                         Ok(p) => p,
                         Err(_) => {
                             invalid += 1;

@@ -32,7 +32,7 @@ fn state(s: &BodyState3) -> Value {
 }
 
 pub(crate) fn entry(
-    problem: &impax::spatial::ContactProblem3,
+    problem: &impax::spatial::ContactProblem,
     law: LawId,
     r: &Result<BodyOutcome3, Breakdown>,
     t0: f64,

@@ -7,7 +7,7 @@ use crate::output::fmt::{signed, Plain, Table};
 use crate::output::json;
 use crate::sources::scenario::parse_laws;
 use impax::spatial::{
-    invariant_rays, sticking_ratio, ContactProblem3, Detail3, InvariantRays, Phase3Kind,
+    invariant_rays, sticking_ratio, ContactProblem, LawDetail, InvariantRays, PhaseKind,
 };
 use impax::LawId;
 use serde_json::{json, Value};
@@ -15,9 +15,9 @@ use serde_json::{json, Value};
 /// The JSON entry of a spatial outcome (the planar entry's keys, plus `hodograph` for the
 /// Darboux–Keller laws and the problem's `invariant_rays`).
 fn spatial_entry(
-    problem: &ContactProblem3,
+    problem: &ContactProblem,
     law: LawId,
-    r: &impax::spatial::Resolution3,
+    r: &impax::spatial::Resolution,
     rays: &Value,
 ) -> Value {
     let mut m = serde_json::Map::new();
@@ -95,7 +95,7 @@ fn spatial_entry(
 
 /// Every solution of the spatial LCP (least kinetic energy after first): `kind` (`stick`
 /// or `slip`), `slip_angle_deg` (slip only), `impulse`, `velocity_after`, `energy_change`.
-pub(crate) fn lcp_solutions(problem: &ContactProblem3) -> Value {
+pub(crate) fn lcp_solutions(problem: &ContactProblem) -> Value {
     Value::Array(
         impax::spatial::lcp::solutions(problem)
             .iter()
@@ -106,7 +106,7 @@ pub(crate) fn lcp_solutions(problem: &ContactProblem3) -> Value {
                     "velocity_after": json::vec3(s.velocity_after),
                     "energy_change": json::num(s.energy_change),
                 });
-                if let Phase3Kind::Slip { to, .. } = s.kind {
+                if let PhaseKind::Slip { to, .. } = s.kind {
                     e["slip_angle_deg"] = json!(to.to_degrees());
                 }
                 e
@@ -121,7 +121,7 @@ pub fn run(args: &ResolveArgs, out: &mut Vec<u8>) -> CliResult<()> {
     let v = parse_numbers("v", &args.v, 3, "V1,V2,VN (spatial W has 6 numbers)")?;
     let mu = finite_flag("friction", single("friction", &args.friction)?)?;
     let e = finite_flag("restitution", single("restitution", &args.restitution)?)?;
-    let problem = ContactProblem3::from_upper(
+    let problem = ContactProblem::from_upper(
         [w[0], w[1], w[2], w[3], w[4], w[5]],
         [v[0], v[1], v[2]],
         mu,
@@ -188,7 +188,7 @@ pub fn run(args: &ResolveArgs, out: &mut Vec<u8>) -> CliResult<()> {
                     if let Some(i) = o.inconsistency {
                         notes.push(format!("{law}: {i}"));
                     }
-                    if let Detail3::DarbouxKeller {
+                    if let LawDetail::DarbouxKeller {
                         second_compression: Some(p),
                         ..
                     } = o.detail

@@ -48,7 +48,7 @@ use super::{MultiProblem, MultiResolution};
 use crate::law::{Breakdown, BreakdownReason, Inconsistency, LawId, WorkSplit};
 use crate::math::Vec3;
 use crate::multi::VELOCITY_ROUND_OFF;
-use crate::spatial::Phase3Kind;
+use crate::spatial::PhaseKind;
 use nalgebra::{DMatrix, DVector};
 use std::f64::consts::{PI, TAU};
 
@@ -326,9 +326,9 @@ fn solve_mode(s: &Setup, modes: &[Mode], thorough: bool) -> Vec<Candidate> {
     for &j in &slips {
         let block = impax_block(s, j);
         let vj = Vec3::new(s.v[3 * j], s.v[3 * j + 1], s.v[3 * j + 2]);
-        if let Ok(one) = crate::spatial::ContactProblem3::new(block, vj, s.mu[j], 0.0) {
+        if let Ok(one) = crate::spatial::ContactProblem::new(block, vj, s.mu[j], 0.0) {
             for sol in crate::spatial::lcp::solutions(&one) {
-                if let Phase3Kind::Slip { to, .. } = sol.kind {
+                if let PhaseKind::Slip { to, .. } = sol.kind {
                     alone[j] = to;
                     break;
                 }
@@ -540,7 +540,7 @@ fn tidy(s: &Setup, c: &Candidate) -> LcpSolution {
                     pt2 *= f;
                 }
                 (
-                    ContactPhaseKind::Impact(Phase3Kind::Stick),
+                    ContactPhaseKind::Impact(PhaseKind::Stick),
                     Vec3::new(pt1, pt2, pn),
                     Vec3::new(0.0, 0.0, s.b[j]),
                 )
@@ -550,7 +550,7 @@ fn tidy(s: &Setup, c: &Candidate) -> LcpSolution {
                 let sigma = (cs * c.v[3 * j] + sn * c.v[3 * j + 1]).max(0.0);
                 let angle = sn.atan2(cs);
                 (
-                    ContactPhaseKind::Impact(Phase3Kind::Slip {
+                    ContactPhaseKind::Impact(PhaseKind::Slip {
                         from: angle,
                         to: angle,
                     }),
@@ -561,10 +561,10 @@ fn tidy(s: &Setup, c: &Candidate) -> LcpSolution {
             Mode::Free => {
                 let (vt1, vt2) = (c.v[3 * j], c.v[3 * j + 1]);
                 let kind = if vt1 == 0.0 && vt2 == 0.0 {
-                    Phase3Kind::NoSlip
+                    PhaseKind::NoSlip
                 } else {
                     let a = vt2.atan2(vt1);
-                    Phase3Kind::Slip { from: a, to: a }
+                    PhaseKind::Slip { from: a, to: a }
                 };
                 (
                     ContactPhaseKind::Impact(kind),

@@ -7,7 +7,7 @@ use crate::law::{Breakdown, Inconsistency, LawId, Verdict, WorkSplit};
 use crate::math::{Units, Vec3};
 use crate::multi::outcome::Ending;
 use crate::multi::{LzbPrimary, VELOCITY_ROUND_OFF};
-use crate::spatial::{Detail3, Outcome3, Phase3Kind};
+use crate::spatial::{LawDetail, Outcome, PhaseKind};
 use nalgebra::{DMatrix, DVector};
 use std::fmt;
 
@@ -23,7 +23,7 @@ pub enum ContactPhaseKind {
     Off,
     /// A regime of the one-contact vocabulary: stick, slip (with its direction, radians in
     /// the tangent plane, `atan2(v_t2, v_t1)`), resumed slip, no slip.
-    Impact(Phase3Kind),
+    Impact(PhaseKind),
 }
 
 impl ContactPhaseKind {
@@ -121,7 +121,7 @@ pub struct BinaryImpact {
     /// Its velocity before this impact.
     pub velocity_before: Vec3,
     /// The one-contact outcome on the contact's own block.
-    pub outcome: Outcome3,
+    pub outcome: Outcome,
 }
 
 /// Law-specific detail.
@@ -157,7 +157,7 @@ pub enum MultiDetail {
     /// A one-contact law on a problem with one contact: its own detail.
     OneContact {
         /// The law's detail.
-        detail: Detail3,
+        detail: LawDetail,
         /// The normal impulse at the end of compression, if reached on the law's path.
         compression_impulse: Option<f64>,
     },
@@ -220,7 +220,7 @@ impl MultiOutcome {
     }
 
     /// A one-contact outcome as the outcome of a problem with one contact.
-    pub fn from_outcome(o: &Outcome3) -> Self {
+    pub fn from_outcome(o: &Outcome) -> Self {
         let contact = ContactResult {
             impulse: o.impulse,
             velocity_after: o.velocity_after,

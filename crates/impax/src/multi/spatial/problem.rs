@@ -4,7 +4,7 @@ use crate::error::Result;
 use crate::math::{Mat3, Units, Vec3};
 use crate::multi::problem::HERTZ_EXPONENT;
 use crate::multi::validate::{check, exponent as exponent_checked, stiffnesses, Checked};
-use crate::spatial::ContactProblem3;
+use crate::spatial::ContactProblem;
 use nalgebra::{DMatrix, DVector};
 
 /// A validated spatial impact problem with `K ≥ 1` contacts: the planar
@@ -12,11 +12,11 @@ use nalgebra::{DMatrix, DVector};
 ///
 /// Contact-major: `v = (v_t1,1, v_t2,1, v_n,1, …, v_t1,K, v_t2,K, v_n,K)` and `W` (`3K × 3K`)
 /// ordered the same way; contact `j`'s own `3 × 3` block is that of the one-contact
-/// [`ContactProblem3`]. Errors name rows and columns `t1_1, t2_1, n_1, t1_2, …`
+/// [`ContactProblem`]. Errors name rows and columns `t1_1, t2_1, n_1, t1_2, …`
 /// (`w[t1_1,n_2]`) and velocities `v[t1,2]`, `v[n,2]` (component, contact counted from 1).
 ///
 /// The checks are the planar problem's: every entry finite; `W` symmetric to round-off;
-/// each contact's own block positive definite (as [`ContactProblem3::new`]); `W` positive
+/// each contact's own block positive definite (as [`ContactProblem::new`]); `W` positive
 /// *semi*definite (redundant contacts: a box lying flat on four corners has twelve contact
 /// rows and six degrees of freedom); `v⁻` in the range of a singular `W` up to
 /// [`RANGE_TOL`](crate::multi::RANGE_TOL) of `|v⁻|`; `μ_j ≥ 0`, `e_j ∈ [0, 1]`; at least one
@@ -78,7 +78,7 @@ impl MultiProblem {
     }
 
     /// The one-contact problem as a problem with `K = 1`.
-    pub fn from_contact(problem: &ContactProblem3) -> Result<Self> {
+    pub fn from_contact(problem: &ContactProblem) -> Result<Self> {
         let w = problem.w();
         let v = problem.velocity();
         Self::new(
@@ -164,8 +164,8 @@ impl MultiProblem {
 
     /// Contact `j` alone: the one-contact problem of its own block, velocity and coefficients
     /// (an error if it does not approach).
-    pub fn contact(&self, j: usize) -> Result<ContactProblem3> {
-        ContactProblem3::new(
+    pub fn contact(&self, j: usize) -> Result<ContactProblem> {
+        ContactProblem::new(
             self.block(j),
             self.contact_velocity(j),
             self.friction(j),

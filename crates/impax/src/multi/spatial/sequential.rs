@@ -34,7 +34,7 @@ use super::problem::coupling;
 use super::{MultiProblem, MultiResolution};
 use crate::law::{Breakdown, BreakdownReason, LawId, WorkSplit};
 use crate::math::{Mat3, Vec3};
-use crate::spatial::{ContactProblem3, Outcome3};
+use crate::spatial::{ContactProblem, Outcome};
 
 pub use crate::multi::sequential::{APPROACH_ROUND_OFF, MAX_IMPACTS};
 
@@ -70,7 +70,7 @@ pub fn resolve(problem: &MultiProblem) -> MultiResolution {
             });
         }
         let alone =
-            ContactProblem3::new(blocks[j], v[j], problem.friction(j), problem.restitution(j))
+            ContactProblem::new(blocks[j], v[j], problem.friction(j), problem.restitution(j))
                 .map_err(|_| Breakdown {
                     law,
                     reason: BreakdownReason::Overflow,
@@ -103,7 +103,7 @@ pub fn resolve(problem: &MultiProblem) -> MultiResolution {
         impacts.push(BinaryImpact {
             contact: j,
             velocity_before: before,
-            outcome: Outcome3 { law, ..out },
+            outcome: Outcome { law, ..out },
         });
     }
     for (c, vj) in contacts.iter_mut().zip(&v) {

@@ -335,18 +335,18 @@ fn root_between(
 pub(super) mod tests {
     use super::*;
     use crate::math::SplitMix64;
-    use crate::spatial::{invariant_rays, ContactProblem3};
+    use crate::spatial::{invariant_rays, ContactProblem};
 
     /// A random direction field (`W_tt` of condition up to 100, any coupling and `μ`), with
     /// its problem.
-    pub(in super::super) fn random_field(g: &mut SplitMix64) -> (ContactProblem3, Field) {
+    pub(in super::super) fn random_field(g: &mut SplitMix64) -> (ContactProblem, Field) {
         let (a, c) = (g.decades(-1.0, 1.0), g.decades(-1.0, 1.0));
         let b = g.range(-0.9, 0.9) * (a * c).sqrt();
         let (w1, w2) = (g.range(-1.0, 1.0), g.range(-1.0, 1.0));
         let mu = g.decades(-1.5, 0.5);
         // w_nn above the Schur complement's bound w_tᵀ W_tt⁻¹ w_t.
         let wnn = 1.0 + (c * w1 * w1 - 2.0 * b * w1 * w2 + a * w2 * w2) / (a * c - b * b);
-        let p = ContactProblem3::from_upper([a, b, w1, c, w2, wnn], [0.1, 0.2, -1.0], mu, 0.5)
+        let p = ContactProblem::from_upper([a, b, w1, c, w2, wnn], [0.1, 0.2, -1.0], mu, 0.5)
             .expect("SPD by construction");
         let field = Field::new(&p.wtt(), p.wtn(), mu);
         (p, field)

@@ -16,20 +16,20 @@ use super::Termination;
 use crate::law::BreakdownReason;
 use crate::math::{norm_of, Mat2, Vec2};
 use crate::spatial::invariant::resumption_direction;
-use crate::spatial::outcome::{Phase3Kind, Phases3};
-use crate::spatial::ContactProblem3;
+use crate::spatial::outcome::{PhaseKind, Phases};
+use crate::spatial::ContactProblem;
 
 /// The frictionless path (`μ = 0`): `p = p_n (0, 0, 1)`, `v_n` linear, and the three
 /// terminations coincide at `p_f = (1 + e) p_c`, `p_c = −v_n⁻/w_nn`; `v_t = v_t⁻ + w_tn p_n`
 /// runs straight, through zero if it points against `w_tn`. Records the end of compression
 /// in `ev`; returns the end point, the phases and where the slip passed through zero.
 pub(super) fn frictionless(
-    problem: &ContactProblem3,
+    problem: &ContactProblem,
     ev: &mut Events,
-) -> (Point, Phases3, Option<f64>) {
+) -> (Point, Phases, Option<f64>) {
     let (wtn, wnn) = (problem.wtn(), problem.wnn());
     let (e, v0) = (problem.restitution(), problem.velocity());
-    let mut phases = Phases3::new();
+    let mut phases = Phases::new();
     let pc = -v0.z / wnn;
     let pf = (1.0 + e) * pc;
     let vt = v0.xy() + wtn * pf;
@@ -39,23 +39,23 @@ pub(super) fn frictionless(
     if through_zero && halt < pf {
         // The slip runs straight through zero and continues along w_tn.
         let a = vt0.y.atan2(vt0.x);
-        phases.push(Phase3Kind::Slip { from: a, to: a }, halt);
+        phases.push(PhaseKind::Slip { from: a, to: a }, halt);
     }
     let kind = if through_zero && halt < pf {
-        Phase3Kind::Resumed {
+        PhaseKind::Resumed {
             angle: wtn.y.atan2(wtn.x),
         }
     } else if v0.x != 0.0 || v0.y != 0.0 {
-        Phase3Kind::Slip {
+        PhaseKind::Slip {
             from: v0.y.atan2(v0.x),
             to: vt.y.atan2(vt.x),
         }
     } else if wtn.norm() > 0.0 {
-        Phase3Kind::Resumed {
+        PhaseKind::Resumed {
             angle: wtn.y.atan2(wtn.x),
         }
     } else {
-        Phase3Kind::Stick
+        PhaseKind::Stick
     };
     phases.push(kind, pf);
     ev.pc = Some(pc);
@@ -76,12 +76,12 @@ pub(super) fn frictionless(
 /// stick if `|W_tt⁻¹ w_tn| ≤ μ` (the ratio and the slope of stick from `W = L D Lᵀ`: the slope
 /// is the last pivot, accurate where `w_nn + w_tn·λ` would cancel in an ill-conditioned `W`),
 /// otherwise the resumed slip along the centrifugal invariant ray, to the termination.
-pub(super) fn stick_or_resumed(problem: &ContactProblem3) -> Result<Linear, BreakdownReason> {
+pub(super) fn stick_or_resumed(problem: &ContactProblem) -> Result<Linear, BreakdownReason> {
     let mu = problem.friction();
     let (lambda, stick_slope) = problem.stick();
     Ok(if lambda.norm() <= mu {
         Linear {
-            kind: Phase3Kind::Stick,
+            kind: PhaseKind::Stick,
             ratio: lambda,
             slope: stick_slope,
             dir: Vec2::zeros(),
@@ -92,7 +92,7 @@ pub(super) fn stick_or_resumed(problem: &ContactProblem3) -> Result<Linear, Brea
     } else {
         let (s, rate) = resumption_direction(problem).ok_or(BreakdownReason::NoSeparation)?;
         Linear {
-            kind: Phase3Kind::Resumed {
+            kind: PhaseKind::Resumed {
                 angle: s.y.atan2(s.x),
             },
             ratio: -mu * s,
@@ -129,7 +129,7 @@ pub(super) fn rigid_slip(
     }
     let dir = pt.vt / sigma;
     let piece = Linear {
-        kind: Phase3Kind::Slip { from: 0.0, to: 0.0 },
+        kind: PhaseKind::Slip { from: 0.0, to: 0.0 },
         ratio: -mu * dir,
         slope: wnn - mu * wtn.dot(&dir),
         dir,
@@ -156,7 +156,7 @@ pub(super) fn rigid_slip(
 /// ```
 pub(super) struct Linear {
     /// The phase the piece is (stick, resumed slip; a slip in closed form reports its own).
-    pub kind: Phase3Kind,
+    pub kind: PhaseKind,
     /// `dp_t/dp_n`.
     pub ratio: Vec2,
     /// `dv_n/dp_n` on the piece, `w_nn + w_tn·ratio`.

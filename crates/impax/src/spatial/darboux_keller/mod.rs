@@ -99,8 +99,8 @@ mod tau;
 
 use self::events::Events;
 use self::state::{Point, Scales, SlipEnd};
-use super::outcome::{Phase3Kind, Phases3};
-use super::ContactProblem3;
+use super::outcome::{PhaseKind, Phases};
+use super::ContactProblem;
 use crate::law::BreakdownReason;
 use crate::math::{norm_of, Mat2, Vec3};
 #[cfg(doc)]
@@ -135,8 +135,8 @@ pub const RTOL: f64 = 1e-12;
 /// Options of the spatial Darboux–Keller integration.
 ///
 /// ```
-/// use impax::{LawId, spatial::{ContactProblem3, SpatialOptions}};
-/// let p = ContactProblem3::from_upper([2.0, 0.6, 0.3, 1.0, -0.2, 1.5], [0.3, 0.8, -1.0], 0.8, 0.7)
+/// use impax::{LawId, spatial::{ContactProblem, SpatialOptions}};
+/// let p = ContactProblem::from_upper([2.0, 0.6, 0.3, 1.0, -0.2, 1.5], [0.3, 0.8, -1.0], 0.8, 0.7)
 ///     .unwrap();
 /// let fine = LawId::Energetic.resolve3_with(&p, &SpatialOptions { rtol: 1e-13 }).unwrap();
 /// let default = LawId::Energetic.resolve3(&p).unwrap();
@@ -185,7 +185,7 @@ pub struct PathEnd {
     pub friction_work: f64,
     /// The phases of the path: initial slip, stick or resumed slip, each with the normal
     /// impulse at its end.
-    pub phases: Phases3,
+    pub phases: Phases,
     /// Where the initial slip halted.
     pub slip_halt: Option<f64>,
     /// Where a second compression began.
@@ -201,16 +201,16 @@ pub struct PathEnd {
 ///
 /// ```
 /// use impax::spatial::darboux_keller::{integrate, Termination};
-/// use impax::spatial::{ContactProblem3, SpatialOptions};
+/// use impax::spatial::{ContactProblem, SpatialOptions};
 /// let w = [2.0, 0.6, 0.3, 1.0, -0.2, 1.5];
 /// let opts = SpatialOptions::default();
 /// // Without friction every termination is p_f = (1 + e) p_c with p_c = −v_n⁻/w_nn.
-/// let p = ContactProblem3::from_upper(w, [0.3, 0.8, -1.0], 0.0, 0.5).unwrap();
+/// let p = ContactProblem::from_upper(w, [0.3, 0.8, -1.0], 0.0, 0.5).unwrap();
 /// let end = integrate(&p, Termination::Newton, &opts, &mut |_, _| {}).unwrap();
 /// assert!((end.impulse.z - 1.5 / 1.5).abs() < 1e-15);
 /// // With friction, Stronge's: W_n = (1 − e²) W_c at the end, and the energy change
 /// // ΔT = W_n + W_t is a loss.
-/// let p = ContactProblem3::from_upper(w, [0.3, 0.8, -1.0], 0.8, 0.7).unwrap();
+/// let p = ContactProblem::from_upper(w, [0.3, 0.8, -1.0], 0.8, 0.7).unwrap();
 /// let mut points = 0;
 /// let end = integrate(&p, Termination::Energetic, &opts, &mut |_, _| points += 1).unwrap();
 /// let (wc, wn) = (end.compression_work, end.normal_work);
@@ -228,7 +228,7 @@ pub struct PathEnd {
 /// above or below the normal velocity neither swamps nor is swamped by it; a slip too fast
 /// for the impact to turn is the straight path in closed form.
 pub fn integrate(
-    problem: &ContactProblem3,
+    problem: &ContactProblem,
     term: Termination,
     opts: &SpatialOptions,
     observe: &mut impl FnMut(f64, Vec3),
@@ -240,7 +240,7 @@ pub fn integrate(
 /// false), the points inside a panel of the angle variable carry `p_n` only where an event
 /// reads it, and the cumulative integral for it is formed only there.
 pub(crate) fn integrate_with(
-    problem: &ContactProblem3,
+    problem: &ContactProblem,
     term: Termination,
     opts: &SpatialOptions,
     observing: bool,
@@ -275,7 +275,7 @@ pub(crate) fn integrate_with(
 /// [`integrate_scaled`] on `problem` with velocities times `a` and `W` times `b` (powers of
 /// two: exact), the result scaled back.
 fn integrate_in_units(
-    problem: &ContactProblem3,
+    problem: &ContactProblem,
     a: f64,
     b: f64,
     term: Termination,
@@ -321,7 +321,7 @@ const HUGE_SLIP: f64 = 2.907_354_897_182_427_6e135;
 /// closed form, or the initial slip (a slip too fast to turn in closed form; too fast for
 /// these units handed back), then stick or the resumed slip.
 fn integrate_scaled(
-    problem: &ContactProblem3,
+    problem: &ContactProblem,
     term: Termination,
     opts: &SpatialOptions,
     observing: bool,
@@ -341,7 +341,7 @@ fn integrate_scaled(
         observe(end.p, end.velocity());
         return Ok(Integrated::End(finish(&end, &ev, phases, slip_halt, 0)));
     }
-    let mut phases = Phases3::new();
+    let mut phases = Phases::new();
     let mut steps = 0u32;
     let mut slip_halt = None;
     let phi0 = v0.y.atan2(v0.x);
@@ -350,7 +350,7 @@ fn integrate_scaled(
     if pt.vt.x != 0.0 || pt.vt.y != 0.0 {
         if let Some(end) = linear::rigid_slip(&wtt, wtn, wnn, mu, scales, &mut pt, &mut ev)? {
             phases.push(
-                Phase3Kind::Slip {
+                PhaseKind::Slip {
                     from: phi0,
                     to: phi0,
                 },
@@ -376,7 +376,7 @@ fn integrate_scaled(
             SlipEnd::Terminated { phi } => (phi, false),
             SlipEnd::Halted { phi } => (phi, true),
         };
-        phases.push(Phase3Kind::Slip { from: phi0, to }, pt.p);
+        phases.push(PhaseKind::Slip { from: phi0, to }, pt.p);
         if !halted {
             return Ok(Integrated::End(finish(&pt, &ev, phases, None, steps)));
         }
@@ -395,7 +395,7 @@ fn integrate_scaled(
 }
 
 /// The result at the end point `pt` of the path.
-fn finish(pt: &Point, ev: &Events, phases: Phases3, slip_halt: Option<f64>, steps: u32) -> PathEnd {
+fn finish(pt: &Point, ev: &Events, phases: Phases, slip_halt: Option<f64>, steps: u32) -> PathEnd {
     let pc = ev.pc.filter(|&pc| pc <= pt.p);
     PathEnd {
         impulse: Vec3::new(pt.pt.x, pt.pt.y, pt.p),

@@ -27,7 +27,7 @@ use super::{log_sigma, p_n, tau};
 use crate::law::BreakdownReason;
 use crate::math::{norm_of, Mat2, Vec2, Vec3};
 use crate::spatial::invariant::resumption_direction;
-use crate::spatial::ContactProblem3;
+use crate::spatial::ContactProblem;
 
 /// The variable the slip is integrated in, outside the angle variable.
 #[derive(Clone, Copy, PartialEq, Eq)]
@@ -79,7 +79,7 @@ pub(super) struct Slip {
 }
 
 impl Slip {
-    fn new(problem: &ContactProblem3, sc: Scales, pt: &Point, observing: bool) -> Slip {
+    fn new(problem: &ContactProblem, sc: Scales, pt: &Point, observing: bool) -> Slip {
         let (wtt, wtn, mu) = (problem.wtt(), problem.wtn(), problem.friction());
         // The centrifugal invariant ray, if any: the direction of resumption (theory §2).
         let centrifugal = resumption_direction(problem).map(|(dir, rate)| Centrifugal {
@@ -140,7 +140,7 @@ impl Slip {
 /// law during the slip, or the halt. `pt`, `ev` and `steps` advance; `observe` sees every
 /// accepted point.
 pub(super) fn run(
-    problem: &ContactProblem3,
+    problem: &ContactProblem,
     sc: Scales,
     pt: &mut Point,
     ev: &mut Events,

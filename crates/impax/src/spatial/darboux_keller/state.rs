@@ -1,7 +1,7 @@
 //! What every stage of the integration reads and writes: the moving point of the path, the
 //! scales of the error control, the centrifugal invariant ray, and how the slip ended.
 
-use super::super::ContactProblem3;
+use super::super::ContactProblem;
 use crate::math::{norm_of, Vec2, Vec3};
 
 /// The moving point of the integration, whatever the independent variable: the normal
@@ -64,7 +64,7 @@ pub(super) struct Scales {
 
 impl Scales {
     /// The scales of `problem`, with the relative tolerance `rtol`.
-    pub(super) fn of(problem: &ContactProblem3, rtol: f64) -> Scales {
+    pub(super) fn of(problem: &ContactProblem, rtol: f64) -> Scales {
         let (wtt, wtn, wnn) = (problem.wtt(), problem.wtn(), problem.wnn());
         let (mu, e, v0) = (
             problem.friction(),
@@ -87,7 +87,7 @@ impl Scales {
 
 /// The centrifugal invariant ray: there is at most one, the solution `ŝ` of
 /// `(λ' I + μ W_tt) ŝ = w_tn` with `λ' > 0` ([`crate::spatial::resumption_direction`]), along
-/// which the slip grows at the rate `λ'` and `v_n` changes at `slope` ([`ContactProblem3`]'s
+/// which the slip grows at the rate `λ'` and `v_n` changes at `slope` ([`ContactProblem`]'s
 /// `resumed_slope`).
 #[derive(Clone, Copy)]
 pub(super) struct Centrifugal {

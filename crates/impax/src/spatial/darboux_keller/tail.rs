@@ -23,7 +23,7 @@ use crate::law::BreakdownReason;
 use crate::math::{norm_of, Vec2, Vec3};
 use crate::numerics::roots::illinois;
 use crate::spatial::invariant::polish_ray;
-use crate::spatial::outcome::Phase3Kind;
+use crate::spatial::outcome::PhaseKind;
 
 /// A slip settled on an invariant ray ([`Slip::settled_on_ray`]).
 #[derive(Clone, Copy)]
@@ -72,7 +72,7 @@ impl Slip {
         // From the unnormalised slip: bit-identical to φ0 when the tail starts at v⁻.
         let phi = pt.vt.y.atan2(pt.vt.x);
         let piece = Linear {
-            kind: Phase3Kind::Stick,
+            kind: PhaseKind::Stick,
             ratio: -mu * s,
             slope: wnn - mu * wtn.dot(&s),
             dir: s,
@@ -140,7 +140,7 @@ impl Slip {
     ) -> Result<SlipEnd, BreakdownReason> {
         let mu = self.mu;
         let piece = Linear {
-            kind: Phase3Kind::Stick,
+            kind: PhaseKind::Stick,
             ratio: -mu * c.dir,
             slope: c.slope,
             dir: c.dir,

@@ -1,7 +1,7 @@
 //! What each event changes — the normal and tangential regimes — and the record of each
 //! contact (works, phases) and of the primary contact.
 //!
-//! The phases use the one-contact vocabulary ([`Phase3Kind`]): a slip that was sliding when
+//! The phases use the one-contact vocabulary ([`PhaseKind`]): a slip that was sliding when
 //! the contact engaged is `slip(from → to)`, its direction at the start and at the end
 //! (the fixed direction it halted along); a slip that left rest (after a halt, a stick, at
 //! the start or joining at rest) is `resumed-slip(angle)`, the ray it left along (its
@@ -20,7 +20,7 @@ use crate::multi::lzb::common::{NormalWork, Primary};
 use crate::multi::spatial::{ContactPhaseKind, ContactResult};
 use crate::multi::LzbPrimary;
 use crate::numerics::dop853::Dense;
-use crate::spatial::Phase3Kind;
+use crate::spatial::PhaseKind;
 
 /// What the path ends with (canonical units).
 pub(super) struct End {
@@ -410,7 +410,7 @@ impl<'a> Path<'a> {
         };
         let now = (vt.norm() > approach).then(|| angle(vt));
         let kind = match label {
-            Label::Slip { from, to } => Phase3Kind::Slip {
+            Label::Slip { from, to } => PhaseKind::Slip {
                 from,
                 to: match (to, regime) {
                     (Some(to), _) => to,
@@ -418,13 +418,13 @@ impl<'a> Path<'a> {
                     _ => now.unwrap_or(from),
                 },
             },
-            Label::Resumed { angle } => Phase3Kind::Resumed { angle },
-            Label::Stick => Phase3Kind::Stick,
+            Label::Resumed { angle } => PhaseKind::Resumed { angle },
+            Label::Stick => PhaseKind::Stick,
             Label::Free { from } => match (from, now) {
-                (Some(from), Some(to)) => Phase3Kind::Slip { from, to },
-                (Some(from), None) => Phase3Kind::Slip { from, to: from },
-                (None, Some(angle)) => Phase3Kind::Resumed { angle },
-                (None, None) => Phase3Kind::Stick,
+                (Some(from), Some(to)) => PhaseKind::Slip { from, to },
+                (Some(from), None) => PhaseKind::Slip { from, to: from },
+                (None, Some(angle)) => PhaseKind::Resumed { angle },
+                (None, None) => PhaseKind::Stick,
             },
         };
         tr.result

@@ -43,7 +43,7 @@ use crate::law::BreakdownReason;
 use crate::math::{norm_of, Vec2, Vec3};
 use crate::numerics::chebyshev::{dot, lobatto, M, N};
 use crate::numerics::roots::newton_crossing;
-use crate::spatial::outcome::Phase3Kind;
+use crate::spatial::outcome::PhaseKind;
 
 /// The cumulative integrals of `dp_n`, `dW_n` and `dW_t/(−μ)` at a panel's nodes.
 type Dense = ([f64; M], [f64; M], [f64; M]);
@@ -191,7 +191,7 @@ impl Sweep {
             let s = fan.ahead.dir;
             let sigma = norm_of(pt.vt);
             let piece = Linear {
-                kind: Phase3Kind::Stick,
+                kind: PhaseKind::Stick,
                 ratio: -slip.mu * s,
                 slope: slip.wnn - slip.mu * slip.wtn.dot(&s),
                 dir: s,
