@@ -4,7 +4,7 @@
 
 use crate::convert::mat2;
 use crate::outcome::{Context, Outcome, Raw};
-use impax::bodies::{BodyState2, PlanarImpact, RigidBody2};
+use impax::planar::bodies::{self, BodyState, RigidBody};
 use impax::planar::ContactProblem;
 use impax::scenario::BuiltBody;
 use impax::LawId;
@@ -15,7 +15,7 @@ use pyo3::prelude::*;
 /// coefficients of the contact: the input of `compare` and of `resolve`.
 #[pyclass(frozen, module = "impax._impax")]
 pub struct BodyImpact {
-    impact: PlanarImpact,
+    impact: bodies::BodyImpact,
     problem: ContactProblem,
     t0: f64,
     description: String,
@@ -36,9 +36,9 @@ impl BodyImpact {
             ..
         } = built;
         let (impact, description) = match other {
-            None => (PlanarImpact::on_fixed_surface(body, state), description),
+            None => (bodies::BodyImpact::on_fixed_surface(body, state), description),
             Some(o) => (
-                PlanarImpact::between(body, state, o.body, o.state),
+                bodies::BodyImpact::between(body, state, o.body, o.state),
                 format!("{description} striking {}", o.description),
             ),
         };
@@ -147,8 +147,8 @@ impl BodyImpact {
 /// contact velocity `v_A − v_B`, impulse `p` on A and `−p` on B).
 #[pyclass(frozen, module = "impax._impax")]
 pub struct Body {
-    body: RigidBody2,
-    state: BodyState2,
+    body: RigidBody,
+    state: BodyState,
     description: String,
 }
 

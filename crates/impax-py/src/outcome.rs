@@ -4,7 +4,7 @@
 //! so that a loop over `impax.resolve` pays only for what it reads. `to_dict()` gives the
 //! entry of the CLI's `--json` output for the same impact, key for key.
 
-use impax::bodies::{BodyState2, EnergyParts};
+use impax::planar::bodies::{BodyState, EnergyParts};
 use impax::math::{Vec2, Vec3};
 use impax::planar::{Breakdown, Inconsistency, LawDetail, Outcome as Planar, SmithReading};
 use impax::spatial::{self, invariant_rays, InvariantRays};
@@ -27,9 +27,9 @@ pub enum Context {
     /// A planar body (or two) — `impax compare --json` of a body scenario.
     Body {
         /// Body A after (none on a breakdown).
-        body_after: Option<BodyState2>,
+        body_after: Option<BodyState>,
         /// Body B after, when there is a body B.
-        other_after: Option<BodyState2>,
+        other_after: Option<BodyState>,
         /// Whether there is a body B.
         two_bodies: bool,
         /// `ΔT` split into translational and rotational parts (paper A §5).
@@ -273,7 +273,7 @@ impl Outcome {
         Ok(Some(d))
     }
 
-    fn state_dict<'py>(py: Python<'py>, s: &BodyState2) -> PyResult<Bound<'py, PyDict>> {
+    fn state_dict<'py>(py: Python<'py>, s: &BodyState) -> PyResult<Bound<'py, PyDict>> {
         let d = PyDict::new(py);
         d.set_item("vx", num(s.velocity.x))?;
         d.set_item("vy", num(s.velocity.y))?;

@@ -4,7 +4,7 @@
 //! parallel with the GIL released.
 
 use crate::convert::{float_array, value_error};
-use impax::bodies::{self, BodyState2, RigidBody2, Side};
+use impax::planar::bodies::{self, BodyState, RigidBody, Side};
 use numpy::ndarray::ArrayViewD;
 use numpy::{PyArray2, PyArrayMethods};
 use pyo3::prelude::*;
@@ -72,7 +72,7 @@ fn param<'a>(view: &ArrayViewD<'_, f64>, s: &'a [f64]) -> Param<'a> {
     }
 }
 
-type Row = impax::Result<(RigidBody2, BodyState2)>;
+type Row = impax::Result<(RigidBody, BodyState)>;
 
 /// `(W, v)`: arrays of shape (N, 3) and (N, 2).
 type Rows<'py> = (Bound<'py, PyArray2<f64>>, Bound<'py, PyArray2<f64>>);
@@ -162,7 +162,7 @@ pub fn rod_rows<'py>(
         let body = bodies::rod(m.at(i), l.at(i), a.at(i), Side::Below)?;
         let (sd, cd) = d.at(i).sin_cos();
         let speed = sp.at(i);
-        Ok((body, BodyState2::new(speed * sd, -speed * cd, om.at(i))))
+        Ok((body, BodyState::new(speed * sd, -speed * cd, om.at(i))))
     })
 }
 

@@ -11,7 +11,7 @@
 
 use crate::body::{Body, BodyImpact};
 use crate::convert::{arg, lib, real, Numbers};
-use impax::bodies::Side;
+use impax::planar::bodies::Side;
 use impax::scenario::{AngleUnit, BodySpec, Shape, ShapeParam};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;

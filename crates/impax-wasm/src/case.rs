@@ -28,9 +28,9 @@
 //!                "angles_deg": [30, 0], "rates": [-1, 2]}}
 //! ```
 
-use impax::bodies::{self, BodyState2, PlanarImpact, Side};
 use impax::mechanism::builtin::{DoublePendulum, STANDARD_GRAVITY};
 use impax::mechanism::impact::MechanismImpact;
+use impax::planar::bodies::{self, BodyImpact, BodyState, Side};
 use impax::planar::ContactProblem;
 use impax::scenario::{AngleUnit, BodySpec, Shape, ShapeScalar};
 use serde::Deserialize;
@@ -117,7 +117,7 @@ pub struct MechanismSpec {
 #[derive(Debug, Clone)]
 pub struct BodyCase {
     /// The impact on the fixed floor.
-    pub impact: PlanarImpact,
+    pub impact: BodyImpact,
     /// The body as requested.
     pub spec: BodySpec,
     /// Its shape.
@@ -227,7 +227,7 @@ fn body_case(spec: &BodySpec) -> Result<BodyCase, String> {
     }
     let state = bodies::spin_state(v0, alpha.to_radians(), gamma, rho).map_err(text)?;
     Ok(BodyCase {
-        impact: PlanarImpact::on_fixed_surface(body, state),
+        impact: BodyImpact::on_fixed_surface(body, state),
         spec: spec.clone(),
         shape,
         speed: v0,
@@ -290,7 +290,7 @@ impl BodyCase {
     }
 
     /// The body's state before the impact.
-    pub fn state(&self) -> BodyState2 {
+    pub fn state(&self) -> BodyState {
         self.impact.body.1
     }
 }

@@ -21,8 +21,8 @@
 
 use crate::case::{Case, Request, BODY_PARAMETERS, MECHANISM_PARAMETERS};
 use impax::analysis::whittaker_sphere_thresholds;
-use impax::bodies::{self, PlanarImpact};
 use impax::mechanism::impact::MechanismImpact;
+use impax::planar::bodies::{self, BodyImpact};
 use impax::planar::Verdict;
 use impax::scenario::{Shape, ShapeScalar};
 use impax::LawId;
@@ -171,11 +171,7 @@ fn get(r: &Request, name: &str) -> Option<f64> {
 }
 
 /// `(ΔT/T0, class)` of one body point; `Err` for an invalid point.
-fn body_point(
-    r: &Request,
-    law: LawId,
-    base: Option<&PlanarImpact>,
-) -> Result<(f64, Class), String> {
+fn body_point(r: &Request, law: LawId, base: Option<&BodyImpact>) -> Result<(f64, Class), String> {
     let spec = r.body.as_ref().ok_or("request: no body")?;
     let impact = match base {
         // Only the motion changes: keep the body, set the state.
@@ -194,7 +190,7 @@ fn body_point(
                 rho,
             )
             .map_err(|e| e.to_string())?;
-            PlanarImpact::on_fixed_surface(base.body.0, state)
+            BodyImpact::on_fixed_surface(base.body.0, state)
         }
         None => match r.case()? {
             Case::Body(b) => b.impact,

@@ -218,7 +218,7 @@ fn body_animation(case: &BodyCase, problem: &ContactProblem) -> Value {
     if !matches!(outline[0], Outline::Circle { .. }) {
         duration = duration.min(0.5 / fastest.max(1e-300));
     }
-    let frames = |s: &impax::bodies::BodyState2, approach: bool| {
+    let frames = |s: &impax::planar::bodies::BodyState, approach: bool| {
         animation::to_json(&animation::half(&outline, duration, approach, |t| {
             vec![[
                 c0.x + s.velocity.x * t,

@@ -2,11 +2,11 @@
 //! `json`): every key is a documented contract (the book's reference, "JSON output"), so the
 //! front ends write outcomes only through these functions and add only their own keys.
 
-use crate::bodies::BodyOutcome;
 use crate::law::WorkSplit;
 use crate::math::{Vec2, Vec3};
 use crate::multi::spatial as multi3;
 use crate::multi::{ContactPhase, MultiDetail, MultiOutcome, MultiProblem, MultiResolution};
+use crate::planar::bodies::BodyOutcome;
 use crate::planar::{Breakdown, ContactProblem, LawDetail, Outcome, SmithReading};
 use crate::spatial::{self, PhaseKind};
 use serde_json::{json, Map, Value};
@@ -120,7 +120,7 @@ pub fn breakdown_fields(b: &Breakdown, velocity_key: &str, body: bool) -> Map<St
 /// A `compare` entry for one law applied to a body scenario.
 pub fn body_entry(r: &BodyOutcome, t0: f64, two_bodies: bool) -> Value {
     let mut m = outcome_fields(&r.outcome, "contact_velocity_after");
-    let state = |s: &crate::bodies::BodyState2| json!({ "vx": num(s.velocity.x), "vy": num(s.velocity.y), "omega": num(s.omega) });
+    let state = |s: &crate::planar::bodies::BodyState| json!({ "vx": num(s.velocity.x), "vy": num(s.velocity.y), "omega": num(s.omega) });
     m.insert("body_velocity_after".into(), state(&r.body_after));
     if two_bodies {
         m.insert(

@@ -31,7 +31,7 @@
 //! ([`law::Verdict`], [`law::Inconsistency`], [`law::Breakdown`], [`law::BreakdownReason`]),
 //! the work split, the outcomes with their phases and details ([`planar::Outcome`],
 //! [`spatial::Outcome`], [`multi::MultiOutcome`], [`bodies::BodyOutcome`],
-//! [`bodies3::BodyOutcome3`]), the problems ([`planar::ContactProblem`],
+//! [`spatial::bodies::BodyOutcome`]), the problems ([`planar::ContactProblem`],
 //! [`spatial::ContactProblem`], [`multi::MultiProblem`]) and the scenario
 //! ([`scenario::PlanarScenario`]); nalgebra's vectors with it. Ids are written as the ids the
 //! command line prints: a verdict as `"energy-gained"`, an enum with numbers as an object
@@ -66,8 +66,6 @@
 #![warn(missing_docs)]
 
 pub mod analysis;
-pub mod bodies;
-pub mod bodies3;
 pub mod error;
 #[cfg(feature = "serde")]
 mod forms;

@@ -6,14 +6,14 @@
 //!
 //! `cargo test -p impax --features serde --test serde`
 
-use impax::bodies::{sphere, spin_state, PlanarImpact, Side};
-use impax::bodies3::{BodyState3, SpatialImpact};
 use impax::law::{Breakdown, BreakdownReason, Inconsistency, Verdict, WorkSplit};
 use impax::math::{Mat2, Vec2, Vec3};
 use impax::multi::{MultiDetail, MultiProblem};
+use impax::planar::bodies::{sphere, spin_state, BodyImpact, Side};
 use impax::planar::{ContactProblem, LawDetail, Phases};
 use impax::scenario::{PlanarScenario, SEED_TOML};
 use impax::spatial;
+use impax::spatial::bodies::{BodyImpact, BodyState};
 use impax::LawId;
 use serde::de::DeserializeOwned;
 use serde::Serialize;
@@ -218,8 +218,7 @@ fn planar_outcomes_of_every_law_round_trip() {
     }
     for gamma in [-3.0, -0.5, 0.0, 1.0] {
         let body = sphere(1.0, 1.0, Side::Below).unwrap();
-        let impact =
-            PlanarImpact::on_fixed_surface(body, spin_state(1.0, 0.5, gamma, 1.0).unwrap());
+        let impact = BodyImpact::on_fixed_surface(body, spin_state(1.0, 0.5, gamma, 1.0).unwrap());
         let p = impact.problem(0.4, 0.7).unwrap();
         let o = impact.resolve(LawId::SmithCentre, &p).unwrap();
         seen.record(&round_trip(&o)["outcome"]);
@@ -302,9 +301,9 @@ fn spatial_outcomes_of_every_law_round_trip() {
         seen.breakdowns
     );
     // On bodies: a spinning sphere on a plane.
-    let body = impax::bodies3::sphere(1.0, 0.5, Side::Below).unwrap();
-    let state = BodyState3::new(Vec3::new(0.5, 0.2, -1.0), Vec3::new(1.0, -2.0, 0.3));
-    let impact = SpatialImpact::on_fixed_surface(body, state);
+    let body = impax::spatial::bodies::sphere(1.0, 0.5, Side::Below).unwrap();
+    let state = BodyState::new(Vec3::new(0.5, 0.2, -1.0), Vec3::new(1.0, -2.0, 0.3));
+    let impact = BodyImpact::on_fixed_surface(body, state);
     let p = impact.problem(0.3, 0.6).unwrap();
     for law in LawId::SPATIAL {
         round_trip(&impact.resolve(law, &p).unwrap());

@@ -2,7 +2,7 @@
 
 use crate::pipeline::space::Setup;
 use impax::analysis::{for_each_brief, resolve_problems, ImpactSummary, Tally};
-use impax::bodies::PlanarImpact;
+use impax::planar::bodies::BodyImpact;
 use impax::planar::ContactProblem;
 use impax::LawId;
 use std::cell::RefCell;
@@ -33,13 +33,13 @@ pub struct PointView<'a> {
     /// The energy scale `T0` of the point.
     pub t0: f64,
     /// The impact (kept only when asked for: body outputs, `smith-centre`).
-    pub impact: Option<&'a PlanarImpact>,
+    pub impact: Option<&'a BodyImpact>,
 }
 
 /// Evaluate the points of `range` and call `visit(index, values, point, summaries)` for each
 /// in order; `summaries[k]` is law `k` of `setup.laws` ([`ImpactSummary::INVALID`] for every
 /// law when the point is invalid, and then `point` is `None`). `keep_impacts` keeps each
-/// point's [`PlanarImpact`] for the visitor (always kept when `smith-centre` is swept).
+/// point's [`BodyImpact`] for the visitor (always kept when `smith-centre` is swept).
 pub fn chunk(
     setup: &Setup,
     range: Range<u64>,
@@ -95,7 +95,7 @@ struct Scratch {
     valid: Vec<bool>,
     problems: Vec<ContactProblem>,
     t0s: Vec<f64>,
-    impacts: Vec<PlanarImpact>,
+    impacts: Vec<BodyImpact>,
     summaries: Vec<ImpactSummary>,
 }
 

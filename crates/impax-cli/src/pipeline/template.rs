@@ -23,7 +23,7 @@
 use crate::input::{CliError, CliResult};
 use crate::sources::scenario::{build_body, parse_file, parse_laws, BodySpec};
 use crate::sources::Source;
-use impax::bodies::{self, BodyState2, PlanarImpact, RigidBody2, Side};
+use impax::planar::bodies::{self, BodyImpact, BodyState, RigidBody, Side};
 use impax::planar::{ContactProblem, InverseInertia};
 use impax::scenario::{Shape, ShapeScalar};
 use impax::LawId;
@@ -241,7 +241,7 @@ impl BodyParams {
 
     /// The body (the core's builder; errors name the field without a section, no
     /// allocation unless it fails).
-    fn body(&self) -> impax::Result<RigidBody2> {
+    fn body(&self) -> impax::Result<RigidBody> {
         self.spec.rigid_body("", self.side)
     }
 
@@ -250,7 +250,7 @@ impl BodyParams {
     /// `trig` remembers `(α in degrees, sin α, cos α)` of the last call: a grid whose α
     /// varies slowly computes each sine and cosine once.
     #[inline(always)]
-    fn state(&self, trig: &mut (f64, f64, f64)) -> impax::Result<BodyState2> {
+    fn state(&self, trig: &mut (f64, f64, f64)) -> impax::Result<BodyState> {
         match self.motion {
             Motion::Seed {
                 speed,
@@ -273,13 +273,13 @@ impl BodyParams {
                     let alpha = alpha_deg.to_radians();
                     *trig = (alpha_deg, alpha.sin(), alpha.cos());
                 }
-                Ok(BodyState2::new(
+                Ok(BodyState::new(
                     speed * trig.1,
                     -speed * trig.2,
                     spin_ratio * speed / self.radius(),
                 ))
             }
-            Motion::Direct { vx, vy, omega } => Ok(BodyState2::new(vx, vy, omega)),
+            Motion::Direct { vx, vy, omega } => Ok(BodyState::new(vx, vy, omega)),
         }
     }
 
@@ -293,8 +293,8 @@ impl BodyParams {
 /// The bodies and `W` of the current body parameters (rebuilt when one of them is set).
 #[derive(Debug, Clone, Copy)]
 struct Built {
-    body: RigidBody2,
-    other: Option<RigidBody2>,
+    body: RigidBody,
+    other: Option<RigidBody>,
     w: InverseInertia,
 }
 
@@ -447,7 +447,7 @@ impl Template {
         &mut self,
         problems: &mut Vec<ContactProblem>,
         t0s: &mut Vec<f64>,
-        impacts: Option<&mut Vec<PlanarImpact>>,
+        impacts: Option<&mut Vec<BodyImpact>>,
     ) -> impax::Result<()> {
         if self.built.is_none() {
             let body = self.body.body()?;
@@ -464,7 +464,7 @@ impl Template {
         };
         let state = self.body.state(&mut self.trig[0])?;
         if let (None, None) = (&self.other, &impacts) {
-            // One body and no impact kept: the same numbers as `PlanarImpact`'s
+            // One body and no impact kept: the same numbers as `BodyImpact`'s
             // `contact_velocity` and `energy_before`, without building it.
             let body = &built.body;
             let problem = ContactProblem::with_inertia(
@@ -474,7 +474,7 @@ impl Template {
                 self.restitution,
             )?;
             let t0 = crate::sources::scenario::reference_energy(
-                &impax::bodies::EnergyParts {
+                &impax::planar::bodies::EnergyParts {
                     translational: body.translational_energy(&state),
                     rotational: body.rotational_energy(&state),
                 },
@@ -486,9 +486,9 @@ impl Template {
         }
         let impact = match (&self.other, &built.other) {
             (Some(o), Some(ob)) => {
-                PlanarImpact::between(built.body, state, *ob, o.state(&mut self.trig[1])?)
+                BodyImpact::between(built.body, state, *ob, o.state(&mut self.trig[1])?)
             }
-            _ => PlanarImpact::on_fixed_surface(built.body, state),
+            _ => BodyImpact::on_fixed_surface(built.body, state),
         };
         let problem = ContactProblem::with_inertia(
             &built.w,

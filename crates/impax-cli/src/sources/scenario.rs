@@ -3,7 +3,7 @@
 
 use crate::cli::CompareArgs;
 use crate::input::{finite_flag, CliError, CliResult};
-use impax::bodies::{BodyState2, PlanarImpact, RigidBody2, Side};
+use impax::planar::bodies::{BodyImpact, BodyState, RigidBody, Side};
 use impax::LawId;
 
 pub use impax::scenario::{BodySpec, Scale};
@@ -12,7 +12,7 @@ use impax::scenario::{PlanarScenario, SEED_TOML};
 /// A resolved scenario.
 #[derive(Debug, Clone)]
 pub struct Scenario {
-    pub impact: PlanarImpact,
+    pub impact: BodyImpact,
     pub friction: f64,
     pub restitution: f64,
     pub laws: Vec<LawId>,
@@ -28,7 +28,7 @@ pub(crate) fn build_body(
     spec: &BodySpec,
     prefix: &str,
     side: Side,
-) -> CliResult<(RigidBody2, BodyState2, Scale, String)> {
+) -> CliResult<(RigidBody, BodyState, Scale, String)> {
     let b = spec.build(prefix, side)?;
     Ok((b.body, b.state, b.scale, b.description))
 }
@@ -132,7 +132,10 @@ pub fn load(args: &CompareArgs, file: Option<&super::File>) -> CliResult<Scenari
 /// lie within `[1e-290, 1e300]` so that `ΔT/T0` is a number to full precision (at
 /// `v0 = 1e-300` it underflows to 0 and the ratio would be NaN): an error names `field`
 /// (the flag or key that sets the velocity) otherwise.
-pub fn reference_energy(before: &impax::bodies::EnergyParts, field: &str) -> impax::Result<f64> {
+pub fn reference_energy(
+    before: &impax::planar::bodies::EnergyParts,
+    field: &str,
+) -> impax::Result<f64> {
     let t0 = if before.translational > 0.0 {
         before.translational
     } else {

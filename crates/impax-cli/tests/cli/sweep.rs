@@ -3,7 +3,7 @@
 
 use crate::support::{bad, impax, run_bytes};
 
-use impax::bodies::{sphere, spin_state, PlanarImpact, Side};
+use impax::planar::bodies::{sphere, spin_state, BodyImpact, Side};
 use impax::LawId;
 
 /// A CSV cell as a number (empty: NaN). The writer prints the shortest round-trip form, so
@@ -67,7 +67,7 @@ fn sweep_rows_equal_single_resolve_calls() {
             let gamma = (-2.0 * (6 - j) as f64 + 1.0 * j as f64) / 6.0;
             let body = sphere(1.0, 1.0, Side::Below).unwrap();
             let state = spin_state(1.0, alpha.to_radians(), gamma, 1.0).unwrap();
-            let impact = PlanarImpact::on_fixed_surface(body, state);
+            let impact = BodyImpact::on_fixed_surface(body, state);
             let problem = impact.problem(0.3, 0.7).unwrap();
             for law in LawId::ALL {
                 let r = &rows[k];
@@ -112,7 +112,7 @@ fn sweep_rows_equal_single_resolve_calls() {
 
 #[test]
 fn reduced_columns_take_the_same_numbers() {
-    // Without body columns the point is built without its `PlanarImpact`: same numbers.
+    // Without body columns the point is built without its `BodyImpact`: same numbers.
     let grid = [
         "sweep",
         "--grid",

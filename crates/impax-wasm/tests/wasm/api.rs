@@ -2,7 +2,7 @@
 //! clear errors for bad requests, the map against paper A eq. 13, and the C-ABI round trip.
 
 use impax::analysis::whittaker_sphere_thresholds;
-use impax::bodies::{self, PlanarImpact, Side};
+use impax::planar::bodies::{self, BodyImpact, Side};
 use impax::LawId;
 use serde_json::{json, Value};
 
@@ -31,7 +31,7 @@ fn seed_matches_the_library_for_every_law() {
     let ids: Vec<&str> = results.iter().map(|r| r["law"].as_str().unwrap()).collect();
     assert_eq!(ids, LawId::ALL.map(|l| l.as_str()).to_vec());
     let a = 30f64.to_radians();
-    let impact = PlanarImpact::on_fixed_surface(
+    let impact = BodyImpact::on_fixed_surface(
         bodies::sphere(1.0, 1.0, Side::Below).unwrap(),
         bodies::spin_state(1.0, a, 0.0, 1.0).unwrap(),
     );

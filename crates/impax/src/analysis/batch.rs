@@ -348,7 +348,7 @@ impl ImpactLaw for NeedsBody {
 /// Resolve validated problems with one law: `out[i]` summarises `law` on `problems[i]`.
 ///
 /// No allocation. Errors only if the lengths differ. `smith-centre` needs a body and gives
-/// [`Status::Breakdown`] here (use [`crate::bodies::PlanarImpact::resolve`]).
+/// [`Status::Breakdown`] here (use [`crate::planar::bodies::BodyImpact::resolve`]).
 pub fn resolve_problems(
     law: LawId,
     problems: &[ContactProblem],

@@ -2,6 +2,7 @@
 //!
 //! Data flows one way: [`ContactProblem`] → a law ([`laws`]) → [`Outcome`] or [`Breakdown`].
 
+pub mod bodies;
 pub mod laws;
 mod outcome;
 pub mod path;

@@ -3,9 +3,9 @@
 //! builder of planar bodies from that description, for every front end.
 
 use super::shape::{AngleUnit, Need, Shape, ShapeParam, ShapeScalar};
-use crate::bodies::{self, BodyState2, RigidBody2, Side};
 use crate::error::{Error, Num, Result};
 use crate::math::Vec2;
+use crate::planar::bodies::{self, BodyState, RigidBody, Side};
 use serde::Deserialize;
 
 /// A body of a planar scenario, as written in a file (`[body]`, `[other]`) or filled in by a
@@ -13,7 +13,7 @@ use serde::Deserialize;
 /// ([`Shape::parameters`]); [`BodySpec::build`] checks them.
 ///
 /// ```
-/// use impax::bodies::Side;
+/// use impax::planar::bodies::Side;
 /// use impax::scenario::BodySpec;
 /// let rod = BodySpec {
 ///     shape: "rod".into(),
@@ -93,9 +93,9 @@ pub struct Scale {
 #[derive(Debug, Clone, PartialEq)]
 pub struct BuiltBody {
     /// The body.
-    pub body: RigidBody2,
+    pub body: RigidBody,
     /// Its velocity and angular velocity before the impact.
-    pub state: BodyState2,
+    pub state: BodyState,
     /// How its results are normalised.
     pub scale: Scale,
     /// E.g. `sphere m = 1, r = 1, v0 = 1, α = 30°, γ = 0`.
@@ -255,7 +255,7 @@ impl BodySpec {
     /// # Errors
     /// An unknown shape, a parameter missing for the shape or not one of its parameters, a
     /// non-finite or out-of-range number — each naming `prefix.field`.
-    pub fn rigid_body(&self, prefix: &str, side: Side) -> Result<RigidBody2> {
+    pub fn rigid_body(&self, prefix: &str, side: Side) -> Result<RigidBody> {
         let m = finite_at(prefix, "mass", self.mass)?;
         let shape = self.parse_shape(prefix)?;
         self.check_parameters(prefix, shape)?;
@@ -274,7 +274,7 @@ impl BodySpec {
             }
             Shape::Rigid => {
                 let [rt, rn] = self.contact.unwrap_or([nan; 2]);
-                RigidBody2::new(m, self.inertia.unwrap_or(nan), Vec2::new(rt, rn))
+                RigidBody::new(m, self.inertia.unwrap_or(nan), Vec2::new(rt, rn))
             }
             Shape::Box => {
                 let angle = self.angle_radians(prefix)?;
@@ -396,7 +396,7 @@ impl BodySpec {
             let omega = finite_at(prefix, "omega", self.omega.unwrap_or(0.0))?;
             BuiltBody {
                 body,
-                state: BodyState2::new(vx, vy, omega),
+                state: BodyState::new(vx, vy, omega),
                 scale: Scale {
                     speed: 1.0,
                     length: 1.0,

@@ -1,9 +1,9 @@
 //! The planar body scenario: one body striking a fixed surface, or two free bodies.
 
 use super::body::{BodySpec, BuiltBody, Scale};
-use crate::bodies::{PlanarImpact, Side};
 use crate::error::{Error, Result};
 use crate::law::LawId;
+use crate::planar::bodies::{BodyImpact, Side};
 use serde::Deserialize;
 
 /// The seed's case (paper A): sphere, m = r = v0 = 1, α = 30°, e = 0.7, μ = 0.4, γ = 0.
@@ -50,7 +50,7 @@ pub struct PlanarScenario {
 #[derive(Debug, Clone)]
 pub struct BuiltPlanar {
     /// The impact of body A on the surface or on body B.
-    pub impact: PlanarImpact,
+    pub impact: BodyImpact,
     /// Body A as built.
     pub body: BuiltBody,
     /// Body B as built, if any.
@@ -114,11 +114,11 @@ impl PlanarScenario {
     pub fn build(&self) -> Result<BuiltPlanar> {
         let body = self.body.build("body", Side::Below)?;
         let (impact, other) = match &self.other {
-            None => (PlanarImpact::on_fixed_surface(body.body, body.state), None),
+            None => (BodyImpact::on_fixed_surface(body.body, body.state), None),
             Some(o) => {
                 let other = o.build("other", Side::Above)?;
                 (
-                    PlanarImpact::between(body.body, body.state, other.body, other.state),
+                    BodyImpact::between(body.body, body.state, other.body, other.state),
                     Some(other),
                 )
             }

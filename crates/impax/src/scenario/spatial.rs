@@ -1,5 +1,5 @@
 //! The spatial body scenario (`space = "3d"`): one body striking a fixed surface, or two free
-//! bodies — the shapes of [`crate::bodies3`] by name, and the one builder of a spatial body
+//! bodies — the shapes of [`crate::spatial::bodies`] by name, and the one builder of a spatial body
 //! from its description, for every front end.
 //!
 //! ```toml
@@ -23,10 +23,10 @@
 //! [other]                                # optional free body B, struck at its highest point
 //! ```
 
-use crate::bodies::Side;
-use crate::bodies3::{self, BodyState3, RigidBody3, SpatialImpact};
 use crate::error::{Error, Result};
 use crate::math::{Mat3, Quat, UnitQuat, Vec3};
+use crate::planar::bodies::Side;
+use crate::spatial::bodies::{self, BodyImpact, BodyState, RigidBody};
 use serde::Deserialize;
 
 /// A spatial body's shape, by the name files give it.
@@ -75,7 +75,7 @@ impl Shape3 {
 /// front end; [`BodySpec3::build`] checks it.
 ///
 /// ```
-/// use impax::bodies::Side;
+/// use impax::planar::bodies::Side;
 /// use impax::scenario::BodySpec3;
 /// let ball = BodySpec3 {
 ///     shape: "sphere".into(),
@@ -127,9 +127,9 @@ pub struct BodySpec3 {
 #[derive(Debug, Clone)]
 pub struct BuiltBody3 {
     /// The body.
-    pub body: RigidBody3,
+    pub body: RigidBody,
     /// Its motion before the impact.
-    pub state: BodyState3,
+    pub state: BodyState,
     /// A one-line description for tables (`sphere m = 1, r = 1, v = …, ω = …`).
     pub description: String,
 }
@@ -176,7 +176,7 @@ impl BodySpec3 {
     ///
     /// # Errors
     /// A field named inside `prefix` (`body.radius`): an unknown shape, a parameter the shape
-    /// needs and lacks, a value the shape's builder in [`crate::bodies3`] refuses, a
+    /// needs and lacks, a value the shape's builder in [`crate::spatial::bodies`] refuses, a
     /// non-finite velocity or angular velocity.
     pub fn build(&self, prefix: &str, side: Side) -> Result<BuiltBody3> {
         let q = self.orientation(prefix)?;
@@ -199,21 +199,21 @@ impl BodySpec3 {
             Shape3::Sphere => {
                 let r = need(self.radius, prefix, "radius", shape)?;
                 (
-                    bodies3::sphere(m, r, side),
+                    bodies::sphere(m, r, side),
                     format!("sphere m = {m}, r = {r}"),
                 )
             }
             Shape3::Ellipsoid => {
                 let a = need(self.semi_axes, prefix, "semi_axes", shape)?;
                 (
-                    bodies3::ellipsoid(m, a, q, side),
+                    bodies::ellipsoid(m, a, q, side),
                     format!("ellipsoid m = {m}, semi-axes {a:?}"),
                 )
             }
             Shape3::Box => {
                 let h = need(self.half_extents, prefix, "half_extents", shape)?;
                 (
-                    bodies3::cuboid(m, h, q, self.corner, side),
+                    bodies::cuboid(m, h, q, self.corner, side),
                     format!("box m = {m}, half-extents {h:?}"),
                 )
             }
@@ -221,7 +221,7 @@ impl BodySpec3 {
                 let r = need(self.radius, prefix, "radius", shape)?;
                 let h = need(self.half_height, prefix, "half_height", shape)?;
                 (
-                    bodies3::cylinder(m, r, h, q, side),
+                    bodies::cylinder(m, r, h, q, side),
                     format!("cylinder m = {m}, r = {r}, half-height {h}"),
                 )
             }
@@ -230,7 +230,7 @@ impl BodySpec3 {
                 let c = need(self.contact, prefix, "contact", shape)?;
                 let im = Mat3::from_fn(|r, col| i[r][col]);
                 (
-                    RigidBody3::new(m, im, q, Vec3::from(c)),
+                    RigidBody::new(m, im, q, Vec3::from(c)),
                     format!("rigid body m = {m}, contact {c:?}"),
                 )
             }
@@ -246,7 +246,7 @@ impl BodySpec3 {
         }
         Ok(BuiltBody3 {
             body,
-            state: BodyState3::new(Vec3::from(v), Vec3::from(w)),
+            state: BodyState::new(Vec3::from(v), Vec3::from(w)),
             description: format!("{desc}, v = {v:?}, ω = {w:?}"),
         })
     }
@@ -276,7 +276,7 @@ pub struct SpatialScenario {
 #[derive(Debug, Clone)]
 pub struct BuiltSpatial {
     /// The bodies before the impact.
-    pub impact: SpatialImpact,
+    pub impact: BodyImpact,
     /// `body A` or `body A striking body B`.
     pub description: String,
 }
@@ -312,13 +312,13 @@ impl SpatialScenario {
         let a = self.body.build("body", Side::Below)?;
         Ok(match &self.other {
             None => BuiltSpatial {
-                impact: SpatialImpact::on_fixed_surface(a.body, a.state),
+                impact: BodyImpact::on_fixed_surface(a.body, a.state),
                 description: a.description,
             },
             Some(o) => {
                 let b = o.build("other", Side::Above)?;
                 BuiltSpatial {
-                    impact: SpatialImpact::between(a.body, a.state, b.body, b.state),
+                    impact: BodyImpact::between(a.body, a.state, b.body, b.state),
                     description: format!("{} striking {}", a.description, b.description),
                 }
             }

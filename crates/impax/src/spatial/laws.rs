@@ -366,10 +366,7 @@ pub fn hodograph(problem: &ContactProblem, law: LawId) -> Result<Vec<[f64; 4]>, 
 impl LawId {
     /// Resolve a spatial (3D) contact-space problem with this law.
     #[inline]
-    pub fn resolve3(
-        self,
-        problem: &crate::spatial::ContactProblem,
-    ) -> crate::spatial::Resolution {
+    pub fn resolve3(self, problem: &crate::spatial::ContactProblem) -> crate::spatial::Resolution {
         crate::spatial::laws::resolve(self, problem)
     }
 

@@ -388,13 +388,9 @@ mod tests {
     /// and its derivative a central difference.
     #[test]
     fn coefficient_form_matches_the_definition() {
-        let p = ContactProblem::from_upper(
-            [2.0, 0.6, 0.3, 1.0, -0.2, 1.5],
-            [0.3, 0.8, -1.0],
-            0.8,
-            0.7,
-        )
-        .unwrap();
+        let p =
+            ContactProblem::from_upper([2.0, 0.6, 0.3, 1.0, -0.2, 1.5], [0.3, 0.8, -1.0], 0.8, 0.7)
+                .unwrap();
         let n = -(1.0 + p.restitution()) * p.velocity().z;
         let trig = Trig2::of(&p, n);
         for k in 0..97 {

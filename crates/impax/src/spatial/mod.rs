@@ -10,6 +10,7 @@
 //! assert!((out.impulse.x + 0.5 / 3.5).abs() < 1e-12);
 //! ```
 
+pub mod bodies;
 pub mod darboux_keller;
 pub mod invariant;
 pub mod laws;

@@ -2,9 +2,11 @@
 //! balance and energy split hold, the ellipsoid's contact point has the plane's normal, and a
 //! sphere in 3D reproduces the planar sphere.
 
-use impax::bodies::{self, Side};
-use impax::bodies3::{cuboid, cylinder, ellipsoid, sphere, BodyState3, RigidBody3, SpatialImpact};
 use impax::math::{Mat3, Vec3};
+use impax::planar::bodies::{self, Side};
+use impax::spatial::bodies::{
+    cuboid, cylinder, ellipsoid, sphere, BodyImpact, BodyState, RigidBody,
+};
 use impax::LawId;
 use nalgebra::UnitQuaternion;
 
@@ -12,13 +14,13 @@ fn q(roll: f64, pitch: f64, yaw: f64) -> UnitQuaternion<f64> {
     UnitQuaternion::from_euler_angles(roll, pitch, yaw)
 }
 
-fn bodies() -> Vec<RigidBody3> {
+fn bodies() -> Vec<RigidBody> {
     vec![
         sphere(2.0, 0.5, Side::Below).unwrap(),
         ellipsoid(1.5, [2.0, 1.0, 0.5], q(0.3, -0.7, 1.1), Side::Below).unwrap(),
         cuboid(3.0, [1.0, 0.6, 0.3], q(0.2, 0.4, 0.1), None, Side::Below).unwrap(),
         cylinder(1.0, 0.4, 1.0, q(0.5, 0.2, 0.0), Side::Below).unwrap(),
-        RigidBody3::new(
+        RigidBody::new(
             2.0,
             Mat3::new(1.0, 0.1, 0.0, 0.1, 2.0, 0.2, 0.0, 0.2, 2.5),
             q(1.0, 0.5, -0.3),
@@ -30,7 +32,7 @@ fn bodies() -> Vec<RigidBody3> {
 
 #[test]
 fn w_is_the_response_to_unit_impulses_and_momentum_balances() {
-    let state = BodyState3::new(Vec3::new(0.3, -0.2, -1.0), Vec3::new(0.5, 1.0, -2.0));
+    let state = BodyState::new(Vec3::new(0.3, -0.2, -1.0), Vec3::new(0.5, 1.0, -2.0));
     for b in bodies() {
         let w = b.inverse_inertia();
         assert!((w - w.transpose()).abs().max() < 1e-14);
@@ -93,7 +95,7 @@ fn degenerate_contacts_are_errors_not_numbers() {
     )
     .is_ok());
     // Principal moments that no rigid body has.
-    assert!(RigidBody3::new(
+    assert!(RigidBody::new(
         1.0,
         Mat3::from_diagonal(&Vec3::new(1.0, 1.0, 3.0)),
         UnitQuaternion::identity(),
@@ -108,17 +110,17 @@ fn sphere_in_3d_reproduces_the_planar_sphere() {
     let alpha = 30f64.to_radians();
     for gamma in [-1.5, -0.5, 0.0, 0.2, 1.0] {
         let s2 = bodies::spin_state(1.0, alpha, gamma, 1.0).unwrap();
-        let i2 = bodies::PlanarImpact::on_fixed_surface(
+        let i2 = bodies::BodyImpact::on_fixed_surface(
             bodies::sphere(1.0, 1.0, Side::Below).unwrap(),
             s2,
         );
         let p2 = i2.problem(0.4, 0.7).unwrap();
         // Planar ω (counter-clockwise in (t, n) = (x, z)) is a rotation about −y in 3D.
-        let s3 = BodyState3::new(
+        let s3 = BodyState::new(
             Vec3::new(s2.velocity.x, 0.0, s2.velocity.y),
             Vec3::new(0.0, -s2.omega, 0.0),
         );
-        let i3 = SpatialImpact::on_fixed_surface(sphere(1.0, 1.0, Side::Below).unwrap(), s3);
+        let i3 = BodyImpact::on_fixed_surface(sphere(1.0, 1.0, Side::Below).unwrap(), s3);
         let p3 = i3.problem(0.4, 0.7).unwrap();
         for law in [
             LawId::Whittaker,
@@ -152,9 +154,9 @@ fn sphere_in_3d_reproduces_the_planar_sphere() {
 fn two_bodies_share_the_impulse_and_conserve_momentum() {
     let a = ellipsoid(1.0, [1.0, 0.7, 0.5], q(0.2, 0.3, 0.4), Side::Below).unwrap();
     let b = cuboid(2.0, [1.0, 0.8, 0.6], q(-0.3, 0.2, 0.1), None, Side::Above).unwrap();
-    let sa = BodyState3::new(Vec3::new(0.4, 0.1, -1.0), Vec3::new(0.3, -0.5, 1.0));
-    let sb = BodyState3::new(Vec3::new(-0.1, 0.2, 0.3), Vec3::new(0.0, 0.4, -0.2));
-    let imp = SpatialImpact::between(a, sa, b, sb);
+    let sa = BodyState::new(Vec3::new(0.4, 0.1, -1.0), Vec3::new(0.3, -0.5, 1.0));
+    let sb = BodyState::new(Vec3::new(-0.1, 0.2, 0.3), Vec3::new(0.0, 0.4, -0.2));
+    let imp = BodyImpact::between(a, sa, b, sb);
     let p = imp.problem(0.5, 0.6).unwrap();
     for law in [LawId::Whittaker, LawId::Brach, LawId::Energetic] {
         let r = imp.resolve(law, &p).unwrap();

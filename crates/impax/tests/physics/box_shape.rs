@@ -5,8 +5,8 @@
 //! square at 45° strikes straight below its centre, a half-turn gives the same problem, a
 //! thin box is a rod, and an edge on the surface asks for the corner.
 
-use impax::bodies::{self, BodyState2, PlanarImpact, RigidBody2, Side};
 use impax::math::{Mat2, Vec2};
+use impax::planar::bodies::{self, BodyImpact, BodyState, RigidBody, Side};
 use impax::scenario::{BodySpec, PlanarScenario, Shape};
 
 /// `|x − y| ≤ tol` entry by entry.
@@ -41,16 +41,16 @@ fn box_spec(m: f64, half: [f64; 2], angle_deg: f64, corner: Option<[f64; 2]>) ->
 fn box_is_the_rigid_body_with_its_inertia_and_corner() {
     let (m, a, b) = (1.7, 1.2, 0.45);
     let inertia = m * (a * a + b * b) / 3.0;
-    let state = BodyState2::new(0.4, -1.3, 0.7);
+    let state = BodyState::new(0.4, -1.3, 0.7);
     for angle_deg in [-70.0, -20.0, 0.0, 15.0, 35.0, 80.0, 130.0] {
         for (sa, sb) in [(1.0, -1.0), (-1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
             let spec = box_spec(m, [a, b], angle_deg, Some([sa, sb]));
             let built = spec.build("body", Side::Below).unwrap();
             let r = corner(a, b, f64::to_radians(angle_deg), sa, sb);
-            let rigid = RigidBody2::new(m, inertia, r).unwrap();
+            let rigid = RigidBody::new(m, inertia, r).unwrap();
             let (x, y) = (
-                PlanarImpact::on_fixed_surface(built.body, built.state),
-                PlanarImpact::on_fixed_surface(rigid, state),
+                BodyImpact::on_fixed_surface(built.body, built.state),
+                BodyImpact::on_fixed_surface(rigid, state),
             );
             assert!(
                 close_mat(x.inverse_inertia(), y.inverse_inertia(), 1e-15),

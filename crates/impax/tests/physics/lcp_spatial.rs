@@ -16,8 +16,8 @@
 use impax::math::SplitMix64;
 use impax::math::{Mat3, Vec2, Vec3};
 use impax::planar::{ContactProblem, Inconsistency, PhaseKind, SlipDirection};
-use impax::spatial::lcp::{solutions, LcpSolution3};
 use impax::spatial;
+use impax::spatial::lcp::{solutions, LcpSolution3};
 use impax::LawId;
 use std::f64::consts::TAU;
 

@@ -2,7 +2,6 @@
 //! differences, equations of motion against energy conservation and the small-oscillation
 //! frequency, impacts against the momentum balance and the body solvers, conserved quantities.
 
-use impax::bodies::{self, BodyState2, PlanarImpact};
 use impax::math::Vec2;
 use impax::mechanism::builtin::{CartPendulum, DoublePendulum, RingPendulum, Rod, Sphere};
 use impax::mechanism::conserved::{self, Noether, QuantityKind, Symmetry, TrackOptions};
@@ -10,6 +9,7 @@ use impax::mechanism::dynamics;
 use impax::mechanism::impact::MechanismImpact;
 use impax::mechanism::{Dual64, Mechanism, Pose};
 use impax::ode::Tolerances;
+use impax::planar::bodies::{self, BodyImpact, BodyState};
 use impax::LawId;
 use nalgebra::DMatrix;
 use proptest::prelude::*;
@@ -296,9 +296,9 @@ fn mechanism_impact_of_a_sphere_equals_the_body_solver() {
     let alpha = 30f64.to_radians();
     let (q, u) = ([0.0, 1.0, 0.0], [alpha.sin(), -alpha.cos(), 0.0]);
     let imp = MechanismImpact::new(&sphere, &q, &u, 0).unwrap();
-    let body = PlanarImpact::on_fixed_surface(
-        bodies::sphere(1.0, 1.0, impax::bodies::Side::Below).unwrap(),
-        BodyState2 {
+    let body = BodyImpact::on_fixed_surface(
+        bodies::sphere(1.0, 1.0, impax::planar::bodies::Side::Below).unwrap(),
+        BodyState {
             velocity: Vec2::new(alpha.sin(), -alpha.cos()),
             omega: 0.0,
         },

@@ -803,9 +803,13 @@ fn sequential_is_energetic_for_one_contact_everywhere() {
     );
     assert_eq!(s.law, LawId::Sequential);
     assert_eq!(s.impulse, e.impulse);
-    let p3 =
-        spatial::ContactProblem::from_upper([2.0, 0.3, 0.1, 1.5, 0.2, 1.0], [0.5, 0.2, -1.0], 0.5, 0.6)
-            .unwrap();
+    let p3 = spatial::ContactProblem::from_upper(
+        [2.0, 0.3, 0.1, 1.5, 0.2, 1.0],
+        [0.5, 0.2, -1.0],
+        0.5,
+        0.6,
+    )
+    .unwrap();
     let (s, e) = (
         LawId::Sequential.resolve3(&p3).unwrap(),
         LawId::Energetic.resolve3(&p3).unwrap(),

@@ -129,9 +129,13 @@ fn one_contact_is_energetic() {
 #[test]
 fn one_contact_everywhere_and_the_law_tables() {
     use impax::spatial;
-    let p3 =
-        spatial::ContactProblem::from_upper([2.0, 0.3, 0.1, 1.5, 0.2, 1.0], [0.5, 0.2, -1.0], 0.5, 0.6)
-            .unwrap();
+    let p3 = spatial::ContactProblem::from_upper(
+        [2.0, 0.3, 0.1, 1.5, 0.2, 1.0],
+        [0.5, 0.2, -1.0],
+        0.5,
+        0.6,
+    )
+    .unwrap();
     let (l, e) = (
         LawId::Lzb.resolve3(&p3).unwrap(),
         LawId::Energetic.resolve3(&p3).unwrap(),

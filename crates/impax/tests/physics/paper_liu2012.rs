@@ -1,8 +1,8 @@
 //! The reproduction report of paper A (Liu 2012): every required row is there, the verdicts
 //! that the paper's arithmetic earns, and the engine-side facts behind them.
 
-use impax::bodies::{sphere, spin_state, PlanarImpact, Side};
 use impax::paper::liu2012::{markdown, report, Agreement, Row, Seed};
+use impax::planar::bodies::{sphere, spin_state, BodyImpact, Side};
 use impax::LawId;
 
 fn row<'a>(rows: &'a [Row], id: &str) -> &'a Row {
@@ -17,7 +17,7 @@ fn whittaker_energy(gamma: f64) -> f64 {
     let alpha = 30f64.to_radians();
     let body = sphere(1.0, 1.0, Side::Below).unwrap();
     let state = spin_state(1.0, alpha, gamma, 1.0).unwrap();
-    let impact = PlanarImpact::on_fixed_surface(body, state);
+    let impact = BodyImpact::on_fixed_surface(body, state);
     let problem = impact.problem(0.4, 0.7).unwrap();
     impact
         .resolve(LawId::Whittaker, &problem)

@@ -25,8 +25,8 @@
 //! both signs and sometimes exactly zero; `v_t ∈ [−2, 2]` (sometimes exactly 0),
 //! `v_n ∈ [−2, −0.01]`, `μ ∈ [0, 2]` (including 0 and 2), `e ∈ [0, 1]` (including 0 and 1).
 
-use impax::bodies::{BodyOutcome, BodyState2, PlanarImpact, RigidBody2};
 use impax::math::Vec2;
+use impax::planar::bodies::{BodyImpact, BodyOutcome, BodyState, RigidBody};
 use impax::planar::{ContactProblem, LawDetail, Outcome, Resolution};
 use impax::LawId;
 use proptest::prelude::*;
@@ -570,24 +570,24 @@ fn scaled(p: &ContactProblem, sw: f64, sv: f64) -> ContactProblem {
 
 /// A random body: `m ∈ [0.1, 10]`, `I ∈ [0.01, 10]`, contact `r = (r_t, r_n)` with
 /// `r_n < 0` (below the centre, body A) or `r_n > 0` (above, body B).
-fn body(below: bool) -> impl Strategy<Value = RigidBody2> {
+fn body(below: bool) -> impl Strategy<Value = RigidBody> {
     (-1.0f64..1.0, -2.0f64..1.0, -2.0f64..2.0, 0.05f64..2.0).prop_map(move |(lm, li, rt, rn)| {
         let rn = if below { -rn } else { rn };
-        RigidBody2::new(10f64.powf(lm), 10f64.powf(li), Vec2::new(rt, rn)).unwrap()
+        RigidBody::new(10f64.powf(lm), 10f64.powf(li), Vec2::new(rt, rn)).unwrap()
     })
 }
 
-fn state() -> impl Strategy<Value = BodyState2> {
-    (-2.0f64..2.0, -2.0f64..2.0, -2.0f64..2.0).prop_map(|(x, y, w)| BodyState2::new(x, y, w))
+fn state() -> impl Strategy<Value = BodyState> {
+    (-2.0f64..2.0, -2.0f64..2.0, -2.0f64..2.0).prop_map(|(x, y, w)| BodyState::new(x, y, w))
 }
 
 /// Contact-point velocity `v + ω × r = (v_x − ω r_n, v_y + ω r_t)`, computed here.
-fn point_velocity(b: &RigidBody2, s: &BodyState2) -> Vec2 {
+fn point_velocity(b: &RigidBody, s: &BodyState) -> Vec2 {
     let r = b.contact();
     Vec2::new(s.velocity.x - s.omega * r.y, s.velocity.y + s.omega * r.x)
 }
 
-fn kinetic(b: &RigidBody2, s: &BodyState2) -> (f64, f64) {
+fn kinetic(b: &RigidBody, s: &BodyState) -> (f64, f64) {
     (
         0.5 * b.mass() * (s.velocity.x.powi(2) + s.velocity.y.powi(2)),
         0.5 * b.inertia() * s.omega * s.omega,
@@ -597,9 +597,9 @@ fn kinetic(b: &RigidBody2, s: &BodyState2) -> (f64, f64) {
 /// Momentum balance on one body for the impulse `p` applied at its contact point.
 fn check_balance(
     law: LawId,
-    b: &RigidBody2,
-    before: &BodyState2,
-    after: &BodyState2,
+    b: &RigidBody,
+    before: &BodyState,
+    after: &BodyState,
     p: Vec2,
 ) -> Result<(), TestCaseError> {
     let r = b.contact();
@@ -632,7 +632,7 @@ fn condition_number(p: &ContactProblem) -> f64 {
     max / (det / max)
 }
 
-fn check_impact(impact: &PlanarImpact, mu: f64, e: f64) -> Result<usize, TestCaseError> {
+fn check_impact(impact: &BodyImpact, mu: f64, e: f64) -> Result<usize, TestCaseError> {
     let problem = impact.problem(mu, e).unwrap();
     // The problem is built from the bodies as theory §1 says.
     let (ba, sa) = &impact.body;
@@ -703,11 +703,11 @@ fn check_impact(impact: &PlanarImpact, mu: f64, e: f64) -> Result<usize, TestCas
 
 /// Adjust body A's normal velocity so that the contact approaches at `vn`.
 fn approaching(
-    a: &RigidBody2,
-    mut sa: BodyState2,
-    other: Option<(&RigidBody2, &BodyState2)>,
+    a: &RigidBody,
+    mut sa: BodyState,
+    other: Option<(&RigidBody, &BodyState)>,
     vn: f64,
-) -> BodyState2 {
+) -> BodyState {
     let vb = other.map_or(0.0, |(b, s)| point_velocity(b, s).y);
     sa.velocity.y = vn + vb - sa.omega * a.contact().x;
     sa
@@ -721,7 +721,7 @@ proptest! {
         a in body(true), sa in state(), vn in normal(), mu in friction(), e in restitution(),
     ) {
         let sa = approaching(&a, sa, None, vn);
-        let impact = PlanarImpact::on_fixed_surface(a, sa);
+        let impact = BodyImpact::on_fixed_surface(a, sa);
         let n = check_impact(&impact, mu, e)?;
         prop_assert!(n >= 3, "the Darboux–Keller laws always resolve");
     }
@@ -732,9 +732,9 @@ proptest! {
         vn in normal(), mu in friction(), e in restitution(),
     ) {
         let sa = approaching(&a, sa, Some((&b, &sb)), vn);
-        let impact = PlanarImpact::between(a, sa, b, sb);
+        let impact = BodyImpact::between(a, sa, b, sb);
         // W = W_A + W_B, each from theory §1, recomputed here.
-        let w_of = |body: &RigidBody2| {
+        let w_of = |body: &RigidBody| {
             let (m, i, r) = (body.mass(), body.inertia(), body.contact());
             (1.0 / m + r.y * r.y / i, -r.x * r.y / i, 1.0 / m + r.x * r.x / i)
         };

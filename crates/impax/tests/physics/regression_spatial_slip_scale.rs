@@ -123,8 +123,8 @@ fn tiny_slips_give_the_zero_slip_result_where_stick_is_stable() {
         for k in (20..=300).step_by(10) {
             let phi = rng.range(0.0, std::f64::consts::TAU);
             let s = 10f64.powi(-k);
-            let p = ContactProblem::new(w, Vec3::new(s * phi.cos(), s * phi.sin(), vn), mu, e)
-                .unwrap();
+            let p =
+                ContactProblem::new(w, Vec3::new(s * phi.cos(), s * phi.sin(), vn), mu, e).unwrap();
             for (law, b) in DK.iter().zip(&base) {
                 let a = law
                     .resolve3(&p)

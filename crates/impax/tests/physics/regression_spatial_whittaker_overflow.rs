@@ -17,9 +17,13 @@ use impax::LawId;
 
 #[test]
 fn an_overflowing_gain_is_a_breakdown() {
-    let p =
-        spatial::ContactProblem::from_upper([1.0, 0.0, 0.0, 1.0, 0.0, 1.0], [1.0, 0.0, -1.0], 1e200, 1.0)
-            .unwrap();
+    let p = spatial::ContactProblem::from_upper(
+        [1.0, 0.0, 0.0, 1.0, 0.0, 1.0],
+        [1.0, 0.0, -1.0],
+        1e200,
+        1.0,
+    )
+    .unwrap();
     match LawId::Whittaker.resolve3(&p) {
         Err(b) => assert_eq!(b.reason.id(), "overflow", "{b}"),
         Ok(o) => panic!(
@@ -28,9 +32,13 @@ fn an_overflowing_gain_is_a_breakdown() {
         ),
     }
     // A large but representable gain stays a result, and a gain.
-    let p =
-        spatial::ContactProblem::from_upper([1.0, 0.0, 0.0, 1.0, 0.0, 1.0], [1.0, 0.0, -1.0], 1e100, 1.0)
-            .unwrap();
+    let p = spatial::ContactProblem::from_upper(
+        [1.0, 0.0, 0.0, 1.0, 0.0, 1.0],
+        [1.0, 0.0, -1.0],
+        1e100,
+        1.0,
+    )
+    .unwrap();
     let o = LawId::Whittaker.resolve3(&p).expect("representable");
     assert!(o.energy_change.is_finite() && o.energy_change > 1e199);
     assert_eq!(o.verdict, impax::planar::Verdict::EnergyGained);

@@ -1,6 +1,6 @@
 //! The seed's sphere (paper A, Liu 2012, *On Kane's paradox of frictional impact*): every
 //! closed-form result of the paper, derived here independently of the library, against the
-//! engine driven through `impax::bodies`.
+//! engine driven through `impax::planar::bodies`.
 //!
 //! Sphere `m = 1`, `r = 1` (`J = 2/5 m r²`), speed `v0 = 1` at `α = 30°` from the normal,
 //! `e = 0.7`, `f = 0.4`, spin ratio `γ = ω0 r / v0` over a range on both sides of
@@ -26,7 +26,7 @@
 //! `v_x⁺ = 0.30 v0` and `ΔT/T0 = −0.67` come from the misprinted eq. 23 (the corrected
 //! formula gives 0.803 and +0.2424, Whittaker's value).
 
-use impax::bodies::{sphere, spin_state, BodyOutcome, PlanarImpact, Side};
+use impax::planar::bodies::{sphere, spin_state, BodyImpact, BodyOutcome, Side};
 use impax::planar::{Inconsistency, LawDetail, Verdict};
 use impax::LawId;
 
@@ -67,11 +67,11 @@ impl Seed {
     }
 }
 
-/// The engine on the seed through `impax::bodies`.
+/// The engine on the seed through `impax::planar::bodies`.
 fn engine(gamma: f64, law: LawId) -> BodyOutcome {
     let body = sphere(1.0, 1.0, Side::Below).unwrap();
     let state = spin_state(1.0, ALPHA_DEG.to_radians(), gamma, 1.0).unwrap();
-    let impact = PlanarImpact::on_fixed_surface(body, state);
+    let impact = BodyImpact::on_fixed_surface(body, state);
     let problem = impact.problem(F, E).unwrap();
     impact
         .resolve(law, &problem)

@@ -2,9 +2,9 @@
 //! e^(2k) h0, backspin reversal, the Zeno time of a bouncing ball, energy never rising under
 //! `energetic`, determinism, bad input.
 
-use impax::bodies::{self, BodyState2, PlanarImpact, Side};
 use impax::math::Vec2;
 use impax::mechanism::impact::MechanismImpact;
+use impax::planar::bodies::{self, BodyImpact, BodyState, Side};
 use impax::simulation::scenarios::{bouncing_ball, double_pendulum_drop, rod_drop};
 use impax::simulation::{simulate, EventKind, Mode, SimulationOptions, StopReason};
 use impax::LawId;
@@ -37,9 +37,9 @@ fn first_bounce_equals_the_single_impact_for_the_same_state() {
         );
         // The same state through the planar body solver (what `impax compare` uses).
         let u = &first.u_before;
-        let body = PlanarImpact::on_fixed_surface(
+        let body = BodyImpact::on_fixed_surface(
             bodies::sphere(1.0, r, Side::Below).unwrap(),
-            BodyState2 {
+            BodyState {
                 velocity: Vec2::new(u[0], u[1]),
                 omega: u[2],
             },

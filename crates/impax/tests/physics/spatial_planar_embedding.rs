@@ -81,7 +81,12 @@ fn random_planar(rng: &mut SplitMix64) -> ContactProblem {
 /// Whether a 3D phase corresponds to a planar one. `after_halt`: the phase follows a halt,
 /// where a planar slip is the 3D resumed slip; `at_rest`: it starts from `v_t⁻ = 0`, where
 /// a planar slip is the 3D resumed slip (Darboux–Keller) or a slip (algebraic laws).
-fn phase_matches(planar: PhaseKind, spatial: spatial::PhaseKind, after_halt: bool, at_rest: bool) -> bool {
+fn phase_matches(
+    planar: PhaseKind,
+    spatial: spatial::PhaseKind,
+    after_halt: bool,
+    at_rest: bool,
+) -> bool {
     let on_axis = |a: f64, dir: SlipDirection| match dir {
         SlipDirection::Positive => a == 0.0,
         SlipDirection::Negative => (a.abs() - PI).abs() <= 1e-15,
@@ -102,7 +107,11 @@ fn phase_matches(planar: PhaseKind, spatial: spatial::PhaseKind, after_halt: boo
 
 /// Deviations `[impulse, velocity, compression impulse, W_c, W_r, W_t, ΔT, phase ends]`,
 /// or a description of a structural mismatch.
-fn compare(problem: &ContactProblem, p2: &Outcome, p3: &spatial::Outcome) -> Result<[f64; 8], String> {
+fn compare(
+    problem: &ContactProblem,
+    p2: &Outcome,
+    p3: &spatial::Outcome,
+) -> Result<[f64; 8], String> {
     let w = problem.w();
     let wn = w.norm();
     let v = problem.velocity();
@@ -199,7 +208,8 @@ fn planar_problems_embedded_in_3d_agree_with_the_planar_closed_form_for_all_five
                     let mut worst = [[(0.0f64, 0usize); 8]; 5];
                     let mut breakdowns = 0;
                     for (i, (p, w22)) in cases.iter().enumerate().skip(k).step_by(threads) {
-                        let p3 = spatial::ContactProblem::from_planar(p, *w22).expect("valid embedding");
+                        let p3 =
+                            spatial::ContactProblem::from_planar(p, *w22).expect("valid embedding");
                         for (li, law) in LAWS.iter().enumerate() {
                             match (law.resolve(p), law.resolve3(&p3)) {
                                 (Ok(a), Ok(b)) => match compare(p, &a, &b) {

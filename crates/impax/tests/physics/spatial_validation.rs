@@ -74,7 +74,8 @@ fn non_finite_entries_are_named() {
         for (k, &(i, j)) in at.iter().enumerate() {
             let mut u = [2.0, 0.3, 0.2, 1.5, -0.1, 1.0];
             u[k] = bad;
-            let e = spatial::ContactProblem::from_upper(u, [0.4, -0.3, -1.0], 0.5, 0.5).unwrap_err();
+            let e =
+                spatial::ContactProblem::from_upper(u, [0.4, -0.3, -1.0], 0.5, 0.5).unwrap_err();
             assert!(matches!(e, Error::NotFinite { .. }), "{e:?}");
             assert_field(&e, &format!("w[{},{}]", NAMES[i], NAMES[j]));
         }

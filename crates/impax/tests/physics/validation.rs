@@ -1,8 +1,8 @@
 //! Input validation and robustness.
 //!
 //! * Every invalid input to `ContactProblem::new` / `from_entries` / `with_coefficients`, to
-//!   the body constructors (`RigidBody2::new`, `sphere`, `disc`, `rod`, `ellipse`,
-//!   `spin_state`), to `PlanarImpact::problem` and to `LawId::from_str` returns the right
+//!   the body constructors (`RigidBody::new`, `sphere`, `disc`, `rod`, `ellipse`,
+//!   `spin_state`), to `BodyImpact::problem` and to `LawId::from_str` returns the right
 //!   `impax::Error` variant, naming the offending field, and its message starts with that
 //!   field.
 //! * Valid but extreme problems (entries of `W` from 1e-150 to 1e150, nearly singular `W`,
@@ -10,10 +10,10 @@
 //!   outcome is finite with `p_n ≥ 0`, and each Darboux–Keller outcome meets its own
 //!   termination rule.
 
-use impax::bodies::{
-    disc, ellipse, rod, sphere, spin_state, BodyState2, PlanarImpact, RigidBody2, Side,
-};
 use impax::math::{Mat2, Vec2};
+use impax::planar::bodies::{
+    disc, ellipse, rod, sphere, spin_state, BodyImpact, BodyState, RigidBody, Side,
+};
 use impax::planar::ContactProblem;
 use impax::{Error, LawId};
 use std::panic::{catch_unwind, AssertUnwindSafe};
@@ -212,24 +212,24 @@ fn unknown_law_ids_are_rejected() {
 fn rigid_body_validation() {
     let r = Vec2::new(0.1, -1.0);
     for bad in [0.0, -1.0] {
-        expect_err(RigidBody2::new(bad, 1.0, r), "OutOfRange", "mass");
-        expect_err(RigidBody2::new(1.0, bad, r), "OutOfRange", "inertia");
+        expect_err(RigidBody::new(bad, 1.0, r), "OutOfRange", "mass");
+        expect_err(RigidBody::new(1.0, bad, r), "OutOfRange", "inertia");
     }
     for bad in [NAN, INF, -INF] {
-        expect_err(RigidBody2::new(bad, 1.0, r), "NotFinite", "mass");
-        expect_err(RigidBody2::new(1.0, bad, r), "NotFinite", "inertia");
+        expect_err(RigidBody::new(bad, 1.0, r), "NotFinite", "mass");
+        expect_err(RigidBody::new(1.0, bad, r), "NotFinite", "inertia");
         expect_err(
-            RigidBody2::new(1.0, 1.0, Vec2::new(bad, -1.0)),
+            RigidBody::new(1.0, 1.0, Vec2::new(bad, -1.0)),
             "NotFinite",
             "contact[t]",
         );
         expect_err(
-            RigidBody2::new(1.0, 1.0, Vec2::new(0.1, bad)),
+            RigidBody::new(1.0, 1.0, Vec2::new(0.1, bad)),
             "NotFinite",
             "contact[n]",
         );
     }
-    let b = RigidBody2::new(2.0, 0.5, r).unwrap();
+    let b = RigidBody::new(2.0, 0.5, r).unwrap();
     assert_eq!((b.mass(), b.inertia(), b.contact()), (2.0, 0.5, r));
 }
 
@@ -303,29 +303,29 @@ fn shape_validation() {
 fn impacts_validate_through_the_problem() {
     let body = sphere(1.0, 1.0, Side::Below).unwrap();
     // Moving away from the surface.
-    let leaving = PlanarImpact::on_fixed_surface(body, BodyState2::new(0.5, 1.0, 0.0));
+    let leaving = BodyImpact::on_fixed_surface(body, BodyState::new(0.5, 1.0, 0.0));
     expect_err(leaving.problem(0.3, 0.5), "NotApproaching", "v");
     // Resting contact (v_n = 0) is not an impact either.
-    let resting = PlanarImpact::on_fixed_surface(body, BodyState2::new(0.5, 0.0, 3.0));
+    let resting = BodyImpact::on_fixed_surface(body, BodyState::new(0.5, 0.0, 3.0));
     expect_err(resting.problem(0.3, 0.5), "NotApproaching", "v");
-    let hitting = PlanarImpact::on_fixed_surface(body, BodyState2::new(0.5, -1.0, 0.0));
+    let hitting = BodyImpact::on_fixed_surface(body, BodyState::new(0.5, -1.0, 0.0));
     expect_err(hitting.problem(-0.3, 0.5), "OutOfRange", "friction");
     expect_err(hitting.problem(0.3, 1.5), "OutOfRange", "restitution");
     expect_err(hitting.problem(0.3, NAN), "NotFinite", "restitution");
     // Two bodies: B moving down faster than A means separation.
     let other = sphere(1.0, 1.0, Side::Above).unwrap();
-    let apart = PlanarImpact::between(
+    let apart = BodyImpact::between(
         body,
-        BodyState2::new(0.0, -1.0, 0.0),
+        BodyState::new(0.0, -1.0, 0.0),
         other,
-        BodyState2::new(0.0, -2.0, 0.0),
+        BodyState::new(0.0, -2.0, 0.0),
     );
     expect_err(apart.problem(0.3, 0.5), "NotApproaching", "v");
-    let closing = PlanarImpact::between(
+    let closing = BodyImpact::between(
         body,
-        BodyState2::new(0.0, -1.0, 0.0),
+        BodyState::new(0.0, -1.0, 0.0),
         other,
-        BodyState2::new(0.0, 0.5, 0.0),
+        BodyState::new(0.0, 0.5, 0.0),
     );
     assert!(closing.problem(0.3, 0.5).is_ok());
 }

@@ -294,7 +294,7 @@ fn body_audit(file: &File, args: &AuditArgs) -> CliResult<Audit> {
     };
     let sc = crate::sources::scenario::load(&compare, Some(file))?;
     let problem = sc.impact.problem(sc.friction, sc.restitution)?;
-    let state = |s: &impax::bodies::BodyState2| vec![s.velocity.x, s.velocity.y, s.omega];
+    let state = |s: &impax::planar::bodies::BodyState| vec![s.velocity.x, s.velocity.y, s.omega];
     let mut names: Vec<String> = ["vx", "vy", "omega"].map(String::from).to_vec();
     let mut before = state(&sc.impact.body.1);
     if let Some(o) = &sc.impact.other {
@@ -342,7 +342,7 @@ fn spatial_audit(source: &str, text: &str, args: &AuditArgs) -> CliResult<Audit>
     let (ea, eb) = impact.energy_before();
     let t0 = ea.total() + eb.total();
     let two = impact.other.is_some();
-    let state = |s: &impax::bodies3::BodyState3| {
+    let state = |s: &impax::spatial::bodies::BodyState| {
         vec![
             s.velocity.x,
             s.velocity.y,

@@ -115,7 +115,7 @@ fn draw(
     problem: &impax::planar::ContactProblem,
     results: &[(
         impax::LawId,
-        Result<impax::bodies::BodyOutcome, impax::planar::Breakdown>,
+        Result<impax::planar::bodies::BodyOutcome, impax::planar::Breakdown>,
     )],
     path: &std::path::Path,
 ) -> CliResult<()> {
@@ -170,7 +170,7 @@ fn table(
     problem: &impax::planar::ContactProblem,
     results: &[(
         impax::LawId,
-        Result<impax::bodies::BodyOutcome, impax::planar::Breakdown>,
+        Result<impax::planar::bodies::BodyOutcome, impax::planar::Breakdown>,
     )],
 ) -> String {
     let s = sc.scale;

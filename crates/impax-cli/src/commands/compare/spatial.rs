@@ -8,10 +8,10 @@ use crate::input::{CliError, CliResult};
 use crate::output::fmt::{signed, Table};
 use crate::output::json::num;
 use crate::sources::scenario::parse_laws;
-use impax::bodies3::{BodyOutcome3, BodyState3, SpatialImpact};
 use impax::math::Vec3;
 use impax::planar::Breakdown;
 use impax::scenario::{BuiltSpatial, SpatialScenario};
+use impax::spatial::bodies::{BodyImpact, BodyOutcome, BodyState};
 use impax::LawId;
 use serde_json::{json, Value};
 
@@ -24,7 +24,7 @@ fn vec3(v: Vec3) -> Value {
     json!({ "t1": num(v.x), "t2": num(v.y), "n": num(v.z) })
 }
 
-fn state(s: &BodyState3) -> Value {
+fn state(s: &BodyState) -> Value {
     json!({
         "vx": num(s.velocity.x), "vy": num(s.velocity.y), "vz": num(s.velocity.z),
         "omega_x": num(s.omega.x), "omega_y": num(s.omega.y), "omega_z": num(s.omega.z),
@@ -34,7 +34,7 @@ fn state(s: &BodyState3) -> Value {
 pub(crate) fn entry(
     problem: &impax::spatial::ContactProblem,
     law: LawId,
-    r: &Result<BodyOutcome3, Breakdown>,
+    r: &Result<BodyOutcome, Breakdown>,
     t0: f64,
     two: bool,
 ) -> Value {
@@ -82,7 +82,7 @@ pub(crate) fn entry(
 }
 
 /// A 3D scenario text: the impact, its description and the file's coefficients and laws.
-pub(crate) fn load(source: &str, text: &str) -> CliResult<(SpatialImpact, String, Spec3)> {
+pub(crate) fn load(source: &str, text: &str) -> CliResult<(BodyImpact, String, Spec3)> {
     let spec: SpatialScenario = toml::from_str(text)
         .map_err(|e| CliError::input(format!("{source}: {}", e.message().replace('\n', " "))))?;
     let BuiltSpatial {
@@ -143,7 +143,7 @@ pub fn run(
         }
     }
     let t0 = crate::sources::scenario::reference_energy(
-        &impax::bodies::EnergyParts {
+        &impax::planar::bodies::EnergyParts {
             translational: ea.translational + eb.translational,
             rotational: ea.rotational + eb.rotational,
         },

@@ -7,7 +7,7 @@ use crate::output::fmt::{signed, Plain, Table};
 use crate::output::json;
 use crate::sources::scenario::parse_laws;
 use impax::spatial::{
-    invariant_rays, sticking_ratio, ContactProblem, LawDetail, InvariantRays, PhaseKind,
+    invariant_rays, sticking_ratio, ContactProblem, InvariantRays, LawDetail, PhaseKind,
 };
 use impax::LawId;
 use serde_json::{json, Value};

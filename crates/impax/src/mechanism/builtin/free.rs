@@ -1,5 +1,5 @@
 //! Free planar bodies as mechanisms (`q = (x, y, θ)`), the checks of the automatic
-//! mass matrix against `diag(m, m, I)` and of mechanism impacts against [`crate::bodies`].
+//! mass matrix against `diag(m, m, I)` and of mechanism impacts against [`crate::planar::bodies`].
 
 use super::{gravity, positive};
 use crate::error::Result;

@@ -19,7 +19,7 @@
 //!   `p_n = 2/7 · m v0 (γ + sin α)/f` and the sphere leaves rolling, losing energy.
 //!
 //! Every computed value comes from the engine (the seed's sphere built with
-//! [`crate::bodies`] and resolved by each law), and where the print differs, from the paper's
+//! [`crate::planar::bodies`] and resolved by each law), and where the print differs, from the paper's
 //! own formulas evaluated at the seed's numbers, to tell an arithmetic slip from a wrong
 //! formula. Printed values are transcribed data; nothing computed is hard-coded.
 //!
@@ -43,8 +43,8 @@ mod smith;
 mod two_phase;
 mod whittaker;
 
-use crate::bodies::{sphere, spin_state, BodyOutcome, PlanarImpact, Side};
 use crate::law::LawId;
+use crate::planar::bodies::{sphere, spin_state, BodyImpact, BodyOutcome, Side};
 use crate::planar::ContactProblem;
 use row::parse_printed;
 use serde::Serialize;
@@ -157,10 +157,10 @@ impl Seed {
     };
 
     /// The sphere with spin ratio `γ` (eq. 1) against the fixed plane.
-    pub fn impact(&self, gamma: f64) -> crate::Result<PlanarImpact> {
+    pub fn impact(&self, gamma: f64) -> crate::Result<BodyImpact> {
         let body = sphere(self.mass, self.radius, Side::Below)?;
         let state = spin_state(self.speed, self.alpha, gamma, self.radius)?;
-        Ok(PlanarImpact::on_fixed_surface(body, state))
+        Ok(BodyImpact::on_fixed_surface(body, state))
     }
 
     /// The contact-space problem at spin ratio `γ`.

@@ -4,9 +4,9 @@
 
 use super::row::{f6, number, s6, statement};
 use super::{Ctx, Row, Seed};
-use crate::bodies::{BodyOutcome, PlanarImpact};
 use crate::law::LawId;
 use crate::math::quadratic_roots;
+use crate::planar::bodies::{BodyImpact, BodyOutcome};
 use crate::planar::LawDetail;
 
 /// Both readings at `γ = 0` and at `γ = −sin α` (no slip before the impact).
@@ -40,7 +40,7 @@ fn roots_of(o: &BodyOutcome) -> usize {
 }
 
 /// Slip before the impact, `v_Px⁻ / v0`, from the engine's contact velocity.
-fn problem_slip(impact: &PlanarImpact, seed: &Seed) -> f64 {
+fn problem_slip(impact: &BodyImpact, seed: &Seed) -> f64 {
     impact.contact_velocity().x / seed.speed
 }
 

@@ -3,9 +3,9 @@
 
 use super::row::{f6, fmt, formula, number, s6, statement, FORMULA_TOL};
 use super::{Agreement, Ctx, Row};
-use crate::bodies::BodyOutcome;
 use crate::law::LawId;
 use crate::numerics::roots::bisection;
+use crate::planar::bodies::BodyOutcome;
 use crate::planar::{Inconsistency, Verdict};
 
 /// The root of `f` on the branch that starts at `edge` and extends in direction `dir`

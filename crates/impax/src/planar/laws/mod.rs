@@ -45,7 +45,7 @@ impl LawId {
     ///
     /// `smith-centre` needs a body's centre velocity, which contact space does not have: it
     /// returns [`BreakdownReason::NeedsBody`]. Use
-    /// [`crate::bodies::PlanarImpact::resolve`] (or [`crate::planar::laws::Smith::centre`]).
+    /// [`crate::planar::bodies::BodyImpact::resolve`] (or [`crate::planar::laws::Smith::centre`]).
     /// `sequential` and `lzb` with one contact are `energetic`, its outcome (or breakdown)
     /// labelled `sequential` or `lzb`.
     #[inline]

@@ -1,6 +1,6 @@
 //! Uniform rectangle (a box in the plane) striking with one corner.
 
-use super::rigid::{RigidBody2, Side};
+use super::rigid::{RigidBody, Side};
 use crate::error::{finite, Error, Result};
 use crate::math::Vec2;
 
@@ -20,7 +20,7 @@ use crate::math::Vec2;
 /// single point and the corner must be given.
 ///
 /// ```
-/// use impax::bodies::{rectangle, Side};
+/// use impax::planar::bodies::{rectangle, Side};
 /// // Tilted by 30°: the lowest corner is (−a, −b) in the body frame.
 /// let b = rectangle(1.0, [1.0, 0.5], 30f64.to_radians(), None, Side::Below).unwrap();
 /// let (s, c) = 30f64.to_radians().sin_cos();
@@ -37,7 +37,7 @@ pub fn rectangle(
     angle: f64,
     corner: Option<[f64; 2]>,
     side: Side,
-) -> Result<RigidBody2> {
+) -> Result<RigidBody> {
     let [a, b] = half_extents;
     for (field, x) in [("half_extents[0]", a), ("half_extents[1]", b)] {
         finite(field, x)?;
@@ -87,5 +87,5 @@ pub fn rectangle(
             best
         }
     };
-    RigidBody2::new(mass, mass * (a * a + b * b) / 3.0, contact)
+    RigidBody::new(mass, mass * (a * a + b * b) / 3.0, contact)
 }

@@ -38,14 +38,14 @@ impl Side {
 /// counter-clockwise angular velocity `ω`.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-pub struct BodyState2 {
+pub struct BodyState {
     /// Centre-of-mass velocity.
     pub velocity: Vec2,
     /// Angular velocity (counter-clockwise positive, `t × n = +1`).
     pub omega: f64,
 }
 
-impl BodyState2 {
+impl BodyState {
     /// A state from its components.
     pub fn new(vx: f64, vy: f64, omega: f64) -> Self {
         Self {
@@ -66,13 +66,13 @@ impl BodyState2 {
 /// m Δv = p,   I Δω = r × p = r_t p_n − r_n p_t.
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct RigidBody2 {
+pub struct RigidBody {
     mass: f64,
     inertia: f64,
     contact: Vec2,
 }
 
-impl RigidBody2 {
+impl RigidBody {
     /// Validate and build (`mass > 0`, `inertia > 0`, finite contact offset).
     pub fn new(mass: f64, inertia: f64, contact: Vec2) -> Result<Self> {
         finite("mass", mass)?;
@@ -131,7 +131,7 @@ impl RigidBody2 {
     /// (`4 ε (|a| + |b|)`) is returned as exactly zero, so that a state meant to have no
     /// slip (e.g. `γ = −sin α` for the seed's sphere, where `sin 30°` is not exactly ½ in
     /// floating point) is not given a spurious slip direction by round-off.
-    pub fn contact_velocity(&self, s: &BodyState2) -> Vec2 {
+    pub fn contact_velocity(&self, s: &BodyState) -> Vec2 {
         Vec2::new(
             sum_or_zero(s.velocity.x, -s.omega * self.contact.y),
             sum_or_zero(s.velocity.y, s.omega * self.contact.x),
@@ -139,20 +139,20 @@ impl RigidBody2 {
     }
 
     /// State after the impulse `p` acts at the contact point: `m Δv = p`, `I Δω = r × p`.
-    pub fn apply(&self, s: &BodyState2, p: Vec2) -> BodyState2 {
-        BodyState2 {
+    pub fn apply(&self, s: &BodyState, p: Vec2) -> BodyState {
+        BodyState {
             velocity: s.velocity + p / self.mass,
             omega: s.omega + cross2(self.contact, p) / self.inertia,
         }
     }
 
     /// Translational kinetic energy `½ m |v|²`.
-    pub fn translational_energy(&self, s: &BodyState2) -> f64 {
+    pub fn translational_energy(&self, s: &BodyState) -> f64 {
         0.5 * self.mass * s.velocity.norm_squared()
     }
 
     /// Rotational kinetic energy `½ I ω²`.
-    pub fn rotational_energy(&self, s: &BodyState2) -> f64 {
+    pub fn rotational_energy(&self, s: &BodyState) -> f64 {
         0.5 * self.inertia * s.omega * s.omega
     }
 }

@@ -6,16 +6,16 @@
 //! surface). Orientations are unit quaternions (body → world); inertia tensors and contact
 //! points are given in the body frame.
 //!
-//! * [`RigidBody3`]: any rigid body given mass, inertia tensor, orientation and contact
+//! * [`RigidBody`]: any rigid body given mass, inertia tensor, orientation and contact
 //!   point;
 //! * shapes: [`sphere`], [`ellipsoid`] (contact where its normal is the plane's — Liu 1997,
 //!   the seed's ref. 8), [`cuboid`] (a corner), [`cylinder`] (a rim point);
-//! * [`SpatialImpact`]: one body on a fixed plane, or two free bodies (`W = W_A + W_B`).
+//! * [`BodyImpact`]: one body on a fixed plane, or two free bodies (`W = W_A + W_B`).
 
 mod impact;
 mod rigid;
 mod shapes;
 
-pub use impact::{BodyOutcome3, SpatialImpact};
-pub use rigid::{BodyState3, EnergyParts3, RigidBody3};
+pub use impact::{BodyImpact, BodyOutcome};
+pub use rigid::{BodyState, EnergyParts, RigidBody};
 pub use shapes::{cuboid, cylinder, ellipsoid, sphere};

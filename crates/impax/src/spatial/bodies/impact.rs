@@ -1,40 +1,40 @@
 //! One body on a fixed plane, or two free bodies, in 3D.
 
-use super::rigid::{BodyState3, EnergyParts3, RigidBody3};
+use super::rigid::{BodyState, EnergyParts, RigidBody};
 use crate::error::Result;
 use crate::law::Breakdown;
 use crate::law::LawId;
 use crate::math::{Mat3, Vec3};
 use crate::spatial::{ContactProblem, Outcome};
 
-/// A law applied to a [`SpatialImpact`]: the contact-space outcome and the bodies after.
+/// A law applied to a [`BodyImpact`]: the contact-space outcome and the bodies after.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-pub struct BodyOutcome3 {
+pub struct BodyOutcome {
     /// Contact-space outcome.
     pub outcome: Outcome,
     /// Body A after.
-    pub body_after: BodyState3,
+    pub body_after: BodyState,
     /// Body B after, when there is one.
-    pub other_after: Option<BodyState3>,
+    pub other_after: Option<BodyState>,
     /// Change of kinetic energy of body A, split.
-    pub body_energy_change: EnergyParts3,
+    pub body_energy_change: EnergyParts,
     /// Change of kinetic energy of body B, split (zero without B).
-    pub other_energy_change: EnergyParts3,
+    pub other_energy_change: EnergyParts,
 }
 
 /// Body A striking a fixed plane (`z` up) or body B (impulse `p` on A, `−p` on B).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct SpatialImpact {
+pub struct BodyImpact {
     /// The striking body and its state.
-    pub body: (RigidBody3, BodyState3),
+    pub body: (RigidBody, BodyState),
     /// The struck body and its state, if free.
-    pub other: Option<(RigidBody3, BodyState3)>,
+    pub other: Option<(RigidBody, BodyState)>,
 }
 
-impl SpatialImpact {
+impl BodyImpact {
     /// One body against a fixed plane.
-    pub fn on_fixed_surface(body: RigidBody3, state: BodyState3) -> Self {
+    pub fn on_fixed_surface(body: RigidBody, state: BodyState) -> Self {
         Self {
             body: (body, state),
             other: None,
@@ -43,10 +43,10 @@ impl SpatialImpact {
 
     /// Two free bodies.
     pub fn between(
-        body: RigidBody3,
-        state: BodyState3,
-        other: RigidBody3,
-        other_state: BodyState3,
+        body: RigidBody,
+        state: BodyState,
+        other: RigidBody,
+        other_state: BodyState,
     ) -> Self {
         Self {
             body: (body, state),
@@ -96,11 +96,11 @@ impl SpatialImpact {
     }
 
     /// Kinetic energy before: body A, body B.
-    pub fn energy_before(&self) -> (EnergyParts3, EnergyParts3) {
+    pub fn energy_before(&self) -> (EnergyParts, EnergyParts) {
         (
             self.body.0.energy(&self.body.1),
             self.other
-                .map_or(EnergyParts3::default(), |(b, s)| b.energy(&s)),
+                .map_or(EnergyParts::default(), |(b, s)| b.energy(&s)),
         )
     }
 
@@ -109,7 +109,7 @@ impl SpatialImpact {
         &self,
         law: LawId,
         problem: &ContactProblem,
-    ) -> std::result::Result<BodyOutcome3, Breakdown> {
+    ) -> std::result::Result<BodyOutcome, Breakdown> {
         let outcome = law.resolve3(problem)?;
         let p = outcome.impulse;
         let a = self.body.0.apply(&self.body.1, p);
@@ -118,13 +118,13 @@ impl SpatialImpact {
         let ea1 = self.body.0.energy(&a);
         let eb1 = match (&self.other, &b) {
             (Some((body, _)), Some(s)) => body.energy(s),
-            _ => EnergyParts3::default(),
+            _ => EnergyParts::default(),
         };
-        let diff = |x: EnergyParts3, y: EnergyParts3| EnergyParts3 {
+        let diff = |x: EnergyParts, y: EnergyParts| EnergyParts {
             translational: x.translational - y.translational,
             rotational: x.rotational - y.rotational,
         };
-        Ok(BodyOutcome3 {
+        Ok(BodyOutcome {
             outcome,
             body_after: a,
             other_after: b,

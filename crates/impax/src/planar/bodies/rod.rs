@@ -1,6 +1,6 @@
 //! Uniform rod striking with one end.
 
-use super::rigid::{RigidBody2, Side};
+use super::rigid::{RigidBody, Side};
 use crate::error::{finite, Error, Result};
 use crate::math::Vec2;
 
@@ -10,11 +10,11 @@ use crate::math::Vec2;
 /// `I = m L²/12`; the contact point is `r = ∓(L/2)(cos θ, sin θ)`.
 ///
 /// ```
-/// use impax::bodies::{rod, Side};
+/// use impax::planar::bodies::{rod, Side};
 /// let b = rod(1.0, 2.0, 50f64.to_radians(), Side::Below).unwrap();
 /// assert!(b.contact().y < 0.0);
 /// ```
-pub fn rod(mass: f64, length: f64, angle: f64, side: Side) -> Result<RigidBody2> {
+pub fn rod(mass: f64, length: f64, angle: f64, side: Side) -> Result<RigidBody> {
     finite("length", length)?;
     finite("angle", angle)?;
     if length <= 0.0 {
@@ -36,5 +36,5 @@ pub fn rod(mass: f64, length: f64, angle: f64, side: Side) -> Result<RigidBody2>
         Side::Below => -half,
         Side::Above => half,
     };
-    RigidBody2::new(mass, mass * length * length / 12.0, r)
+    RigidBody::new(mass, mass * length * length / 12.0, r)
 }

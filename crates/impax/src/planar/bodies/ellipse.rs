@@ -1,6 +1,6 @@
 //! Uniform elliptical disc.
 
-use super::rigid::{RigidBody2, Side};
+use super::rigid::{RigidBody, Side};
 use crate::error::{finite, Error, Result};
 use crate::math::{Mat2, Vec2};
 
@@ -11,12 +11,12 @@ use crate::math::{Mat2, Vec2};
 /// normal is the surface's: with `M = R diag(a², b²) Rᵀ`, `r = M d / √(dᵀ M d)`.
 ///
 /// ```
-/// use impax::bodies::{ellipse, Side};
+/// use impax::planar::bodies::{ellipse, Side};
 /// // A circle of radius 1 touches at distance 1 below the centre.
 /// let b = ellipse(1.0, 1.0, 1.0, 0.3, Side::Below).unwrap();
 /// assert!((b.contact().y + 1.0).abs() < 1e-15 && b.contact().x.abs() < 1e-15);
 /// ```
-pub fn ellipse(mass: f64, a: f64, b: f64, angle: f64, side: Side) -> Result<RigidBody2> {
+pub fn ellipse(mass: f64, a: f64, b: f64, angle: f64, side: Side) -> Result<RigidBody> {
     for (field, x) in [("semi-axis-a", a), ("semi-axis-b", b)] {
         finite(field, x)?;
         if x <= 0.0 {
@@ -34,5 +34,5 @@ pub fn ellipse(mass: f64, a: f64, b: f64, angle: f64, side: Side) -> Result<Rigi
     let d: Vec2 = side.direction();
     let md = m * d;
     let r = md / d.dot(&md).sqrt();
-    RigidBody2::new(mass, mass * (a * a + b * b) / 4.0, r)
+    RigidBody::new(mass, mass * (a * a + b * b) / 4.0, r)
 }

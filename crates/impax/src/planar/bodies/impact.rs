@@ -1,6 +1,6 @@
 //! A planar impact of one body on a fixed surface, or of two free bodies.
 
-use super::rigid::{sum_or_zero, BodyState2, RigidBody2};
+use super::rigid::{sum_or_zero, BodyState, RigidBody};
 use crate::error::Result;
 use crate::law::{ImpactLaw, LawId};
 use crate::math::Vec2;
@@ -24,7 +24,7 @@ impl EnergyParts {
     }
 }
 
-/// The result of a law applied to a [`PlanarImpact`]: the contact-space outcome and what it
+/// The result of a law applied to a [`BodyImpact`]: the contact-space outcome and what it
 /// does to the bodies.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
@@ -32,9 +32,9 @@ pub struct BodyOutcome {
     /// The contact-space outcome.
     pub outcome: Outcome,
     /// Body A after the impact.
-    pub body_after: BodyState2,
+    pub body_after: BodyState,
     /// Body B after the impact (when there is one).
-    pub other_after: Option<BodyState2>,
+    pub other_after: Option<BodyState>,
     /// Change of kinetic energy split as in paper A §5: `ΔT = ΔT₁ + ΔT₂`.
     pub energy_change: EnergyParts,
 }
@@ -42,16 +42,16 @@ pub struct BodyOutcome {
 /// Body A striking a fixed surface, or body B (two free bodies: `W = W_A + W_B`, the
 /// relative contact velocity `v = v_A − v_B`, impulse `p` on A and `−p` on B).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct PlanarImpact {
+pub struct BodyImpact {
     /// The striking body and its state.
-    pub body: (RigidBody2, BodyState2),
+    pub body: (RigidBody, BodyState),
     /// The struck body and its state, if it is free (else the surface is fixed).
-    pub other: Option<(RigidBody2, BodyState2)>,
+    pub other: Option<(RigidBody, BodyState)>,
 }
 
-impl PlanarImpact {
+impl BodyImpact {
     /// One body against a fixed surface.
-    pub fn on_fixed_surface(body: RigidBody2, state: BodyState2) -> Self {
+    pub fn on_fixed_surface(body: RigidBody, state: BodyState) -> Self {
         Self {
             body: (body, state),
             other: None,
@@ -60,10 +60,10 @@ impl PlanarImpact {
 
     /// Two free bodies: `body` (A) strikes `other` (B), whose contact point is its own.
     pub fn between(
-        body: RigidBody2,
-        state: BodyState2,
-        other: RigidBody2,
-        other_state: BodyState2,
+        body: RigidBody,
+        state: BodyState,
+        other: RigidBody,
+        other_state: BodyState,
     ) -> Self {
         Self {
             body: (body, state),
@@ -81,7 +81,7 @@ impl PlanarImpact {
     }
 
     /// Relative contact velocity `v_A − v_B` at the contact point (a difference below its
-    /// rounding error is exactly zero, see [`RigidBody2::contact_velocity`]).
+    /// rounding error is exactly zero, see [`RigidBody::contact_velocity`]).
     pub fn contact_velocity(&self) -> Vec2 {
         let v = self.body.0.contact_velocity(&self.body.1);
         match &self.other {
@@ -108,7 +108,7 @@ impl PlanarImpact {
         self.energy_of(&self.body.1, self.other.as_ref().map(|o| &o.1))
     }
 
-    fn energy_of(&self, a: &BodyState2, b: Option<&BodyState2>) -> EnergyParts {
+    fn energy_of(&self, a: &BodyState, b: Option<&BodyState>) -> EnergyParts {
         let mut e = EnergyParts {
             translational: self.body.0.translational_energy(a),
             rotational: self.body.0.rotational_energy(a),
@@ -121,7 +121,7 @@ impl PlanarImpact {
     }
 
     /// States after the impulse `p` on A (and `−p` on B).
-    pub fn apply(&self, p: Vec2) -> (BodyState2, Option<BodyState2>) {
+    pub fn apply(&self, p: Vec2) -> (BodyState, Option<BodyState>) {
         let a = self.body.0.apply(&self.body.1, p);
         let b = self.other.map(|(body, s)| body.apply(&s, -p));
         (a, b)

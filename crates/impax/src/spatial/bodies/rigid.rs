@@ -7,14 +7,14 @@ use nalgebra::UnitQuaternion;
 /// Velocity state: centre-of-mass velocity and angular velocity, both in the world frame.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-pub struct BodyState3 {
+pub struct BodyState {
     /// Centre-of-mass velocity.
     pub velocity: Vec3,
     /// Angular velocity (world frame).
     pub omega: Vec3,
 }
 
-impl BodyState3 {
+impl BodyState {
     /// A state from its parts.
     pub fn new(velocity: Vec3, omega: Vec3) -> Self {
         Self { velocity, omega }
@@ -24,14 +24,14 @@ impl BodyState3 {
 /// Kinetic energy in translational `½ m |v|²` and rotational `½ ωᵀ I ω` parts.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-pub struct EnergyParts3 {
+pub struct EnergyParts {
     /// Translational part.
     pub translational: f64,
     /// Rotational part.
     pub rotational: f64,
 }
 
-impl EnergyParts3 {
+impl EnergyParts {
     /// Both parts.
     pub fn total(&self) -> f64 {
         self.translational + self.rotational
@@ -47,14 +47,14 @@ impl EnergyParts3 {
 /// with `r` the contact point from the centre of mass and `I` the inertia tensor, both in
 /// the world frame (`I = R I_body Rᵀ`, `r = R r_body`).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct RigidBody3 {
+pub struct RigidBody {
     mass: f64,
     inertia: Mat3,
     inertia_inv: Mat3,
     contact: Vec3,
 }
 
-impl RigidBody3 {
+impl RigidBody {
     /// Validate and build from the body-frame inertia tensor (symmetric positive definite),
     /// the orientation (body → world) and the body-frame contact point.
     pub fn new(
@@ -142,21 +142,21 @@ impl RigidBody3 {
     }
 
     /// Velocity of the material point at the contact, `v + ω × r`.
-    pub fn contact_velocity(&self, s: &BodyState3) -> Vec3 {
+    pub fn contact_velocity(&self, s: &BodyState) -> Vec3 {
         s.velocity + s.omega.cross(&self.contact)
     }
 
     /// State after the impulse `p` at the contact point.
-    pub fn apply(&self, s: &BodyState3, p: Vec3) -> BodyState3 {
-        BodyState3 {
+    pub fn apply(&self, s: &BodyState, p: Vec3) -> BodyState {
+        BodyState {
             velocity: s.velocity + p / self.mass,
             omega: s.omega + self.inertia_inv * self.contact.cross(&p),
         }
     }
 
     /// Kinetic energy split.
-    pub fn energy(&self, s: &BodyState3) -> EnergyParts3 {
-        EnergyParts3 {
+    pub fn energy(&self, s: &BodyState) -> EnergyParts {
+        EnergyParts {
             translational: 0.5 * self.mass * s.velocity.norm_squared(),
             rotational: 0.5 * s.omega.dot(&(self.inertia * s.omega)),
         }

@@ -1,9 +1,9 @@
 //! Spatial shapes: sphere, ellipsoid, cuboid corner, cylinder rim.
 
-use super::rigid::RigidBody3;
-use crate::bodies::Side;
+use super::rigid::RigidBody;
 use crate::error::{finite, Error, Result};
 use crate::math::{Mat3, Vec3};
+use crate::planar::bodies::Side;
 use nalgebra::UnitQuaternion;
 
 fn positive(field: &str, x: f64) -> Result<f64> {
@@ -30,15 +30,15 @@ fn toward(side: Side) -> Vec3 {
 /// A solid sphere: `I = 2/5 m r² 1`, contact at `∓r z`. On a plane `W = (1/m) diag(7/2, 7/2, 1)`.
 ///
 /// ```
-/// use impax::bodies::Side;
-/// use impax::bodies3::sphere;
+/// use impax::planar::bodies::Side;
+/// use impax::spatial::bodies::sphere;
 /// let w = sphere(1.0, 1.0, Side::Below).unwrap().inverse_inertia();
 /// assert!((w[(0, 0)] - 3.5).abs() < 1e-15 && (w[(2, 2)] - 1.0).abs() < 1e-15);
 /// ```
-pub fn sphere(mass: f64, radius: f64, side: Side) -> Result<RigidBody3> {
+pub fn sphere(mass: f64, radius: f64, side: Side) -> Result<RigidBody> {
     let r = positive("radius", radius)?;
     let m = positive("mass", mass)?;
-    RigidBody3::new(
+    RigidBody::new(
         m,
         Mat3::identity() * (0.4 * m * r * r),
         UnitQuaternion::identity(),
@@ -55,7 +55,7 @@ pub fn ellipsoid(
     semi_axes: [f64; 3],
     orientation: UnitQuaternion<f64>,
     side: Side,
-) -> Result<RigidBody3> {
+) -> Result<RigidBody> {
     let m = positive("mass", mass)?;
     let [a, b, c] = semi_axes;
     for (f, x) in [
@@ -73,7 +73,7 @@ pub fn ellipsoid(
     let r_world = mw * d / d.dot(&(mw * d)).sqrt();
     let inertia =
         Mat3::from_diagonal(&Vec3::new(b * b + c * c, a * a + c * c, a * a + b * b)) * (m / 5.0);
-    RigidBody3::new(m, inertia, orientation, rot.inverse() * r_world)
+    RigidBody::new(m, inertia, orientation, rot.inverse() * r_world)
 }
 
 /// A uniform cuboid with half-extents `(a, b, c)`: `I_body = m/3 diag(b² + c², a² + c², a² + b²)`.
@@ -86,7 +86,7 @@ pub fn cuboid(
     orientation: UnitQuaternion<f64>,
     corner: Option<[f64; 3]>,
     side: Side,
-) -> Result<RigidBody3> {
+) -> Result<RigidBody> {
     let m = positive("mass", mass)?;
     let [a, b, c] = half_extents;
     for (f, x) in [
@@ -140,7 +140,7 @@ pub fn cuboid(
     };
     let inertia =
         Mat3::from_diagonal(&Vec3::new(b * b + c * c, a * a + c * c, a * a + b * b)) * (m / 3.0);
-    RigidBody3::new(m, inertia, orientation, corner)
+    RigidBody::new(m, inertia, orientation, corner)
 }
 
 /// A uniform solid cylinder of radius `r` and half-height `h` along its body `z` axis:
@@ -153,7 +153,7 @@ pub fn cylinder(
     half_height: f64,
     orientation: UnitQuaternion<f64>,
     side: Side,
-) -> Result<RigidBody3> {
+) -> Result<RigidBody> {
     let m = positive("mass", mass)?;
     let r = positive("radius", radius)?;
     let h = positive("half_height", half_height)?;
@@ -178,5 +178,5 @@ pub fn cylinder(
     let contact = Vec3::new(0.0, 0.0, h * d_body.z.signum()) + perp * (r / pn);
     let it = m * (3.0 * r * r + 4.0 * h * h) / 12.0;
     let inertia = Mat3::from_diagonal(&Vec3::new(it, it, 0.5 * m * r * r));
-    RigidBody3::new(m, inertia, orientation, contact)
+    RigidBody::new(m, inertia, orientation, contact)
 }
