@@ -314,7 +314,7 @@ fn chunk_spatial(input: &Input<'_>, mut out: Out<'_>, start: usize) -> RowError 
             input.friction.at(i),
             input.restitution.at(i),
         ) {
-            Ok(p) => out.spatial(k, &input.law.resolve3(&p)),
+            Ok(p) => out.spatial(k, &input.law.resolve(&p)),
             Err(e) if input.raise => return Some((i, e)),
             Err(_) => out.blank(k, STATUS_INVALID),
         }

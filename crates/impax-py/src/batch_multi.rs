@@ -119,7 +119,7 @@ fn row(input: &Input, i: usize) -> Row {
     let text = |e: impax::Error| e.to_string();
     if d == 2 {
         let p = MultiProblem::new(w, v, mu, e).map_err(text)?;
-        match input.law.resolve_multi(&p).map_err(text)? {
+        match input.law.resolve(&p).map_err(text)? {
             Ok(o) => Ok((
                 o.contacts
                     .iter()

@@ -282,7 +282,7 @@ pub fn resolve(
         if let Some(eta) = force.exponent {
             problem = lib(problem.with_exponent(eta))?;
         }
-        lib(law.resolve_multi(&problem))?
+        lib(law.resolve(&problem))?
             .as_ref()
             .map(View::planar)
             .map_err(|b| (b.reason.id(), b.reason.to_string()))

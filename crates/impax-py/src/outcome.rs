@@ -104,7 +104,7 @@ impl Outcome {
     fn hodograph_points(&self) -> Option<Vec<[f64; 4]>> {
         match (&self.problem3, &self.raw) {
             (Some(p), Raw::Spatial(Ok(_))) if self.law.is_darboux_keller() => {
-                impax::spatial::laws::hodograph(p, self.law).ok()
+                impax::spatial::laws::hodograph(p, self.law, &impax::law::Options::default()).ok()
             }
             _ => None,
         }
@@ -550,7 +550,7 @@ impl Outcome {
             return Ok(None);
         };
         let list = PyList::empty(py);
-        for sol in impax::spatial::lcp::solutions(&p) {
+        for sol in impax::spatial::laws::lcp::solutions(&p) {
             let d = PyDict::new(py);
             d.set_item("kind", sol.kind.label())?;
             d.set_item("impulse", self.frame_dict(py, v3(sol.impulse))?)?;

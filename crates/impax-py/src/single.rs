@@ -98,7 +98,7 @@ fn one(
             ))?;
             Ok(Outcome {
                 law,
-                raw: Raw::Spatial(law.resolve3(&p)),
+                raw: Raw::Spatial(law.resolve(&p)),
                 approach_energy: p.approach_energy(),
                 context: Context::Contact,
                 problem3: Some(p),

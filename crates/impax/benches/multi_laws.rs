@@ -50,7 +50,7 @@ fn bench_multi(c: &mut Criterion) {
     let mut g = c.benchmark_group("rod-flat");
     for law in LawId::MULTI_CONTACT {
         g.bench_with_input(BenchmarkId::from_parameter(law), &r, |b, p| {
-            b.iter(|| black_box(law.resolve_multi(black_box(p))))
+            b.iter(|| black_box(law.resolve(black_box(p))))
         });
     }
     g.finish();
@@ -67,7 +67,7 @@ fn bench_multi(c: &mut Criterion) {
                 b.iter(|| {
                     let mut acc = 0.0;
                     for p in ps {
-                        if let Ok(Ok(o)) = law.resolve_multi(black_box(p)) {
+                        if let Ok(Ok(o)) = law.resolve(black_box(p)) {
                             acc += o.energy_change;
                         }
                     }

@@ -67,14 +67,14 @@ pub fn cases() -> Vec<(&'static str, ContactProblem)> {
 fn bench(c: &mut Criterion) {
     let mut g = c.benchmark_group("spatial-energetic");
     for (name, p) in cases() {
-        let o = LawId::Energetic.resolve3(&p).unwrap();
+        let o = LawId::Energetic.resolve(&p).unwrap();
         let steps = match o.detail {
             LawDetail::DarbouxKeller { steps, .. } => steps,
             _ => 0,
         };
         eprintln!("{name}: {} ({steps} steps)", o.phases.summary());
         g.bench_function(name, |b| {
-            b.iter(|| black_box(LawId::Energetic.resolve3(black_box(&p))))
+            b.iter(|| black_box(LawId::Energetic.resolve(black_box(&p))))
         });
     }
     g.finish();
@@ -82,7 +82,7 @@ fn bench(c: &mut Criterion) {
     let mut g = c.benchmark_group("spatial-lcp");
     for (name, p) in cases() {
         g.bench_function(name, |b| {
-            b.iter(|| black_box(LawId::Lcp.resolve3(black_box(&p))))
+            b.iter(|| black_box(LawId::Lcp.resolve(black_box(&p))))
         });
     }
     g.finish();

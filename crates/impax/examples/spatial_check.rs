@@ -32,7 +32,7 @@ fn main() {
             LawId::Brach,
         ] {
             let o2 = law.resolve(&p);
-            let o3 = law.resolve3(&p3);
+            let o3 = law.resolve(&p3);
             match (o2, o3) {
                 (Ok(x), Ok(y)) => {
                     let s = x.impulse.norm().max(1e-300);

@@ -1,6 +1,7 @@
 //! Tight loop over one spatial benchmark case for profiling (instruction counts under
 //! `valgrind --tool=callgrind`): `cargo run --release --example spatial_hot -- swirl-stick 1000 [rtol]`.
-use impax::spatial::{ContactProblem, LawDetail, SpatialOptions};
+use impax::law::Options;
+use impax::spatial::{ContactProblem, LawDetail};
 use impax::LawId;
 use std::hint::black_box;
 
@@ -34,13 +35,12 @@ fn main() {
     let mut args = std::env::args().skip(1);
     let name = args.next().unwrap_or_else(|| "swirl-stick".into());
     let n: usize = args.next().map_or(1000, |s| s.parse().expect("a count"));
-    let opts = SpatialOptions {
-        rtol: args.next().map_or(SpatialOptions::default().rtol, |s| {
-            s.parse().expect("a tolerance")
-        }),
-    };
+    let opts = Options::default().rtol(
+        args.next()
+            .map_or(Options::DEFAULT_RTOL, |s| s.parse().expect("a tolerance")),
+    );
     let p = case(&name);
-    let o = LawId::Energetic.resolve3_with(&p, &opts).expect("resolves");
+    let o = LawId::Energetic.resolve_with(&p, &opts).expect("resolves");
     let steps = match o.detail {
         LawDetail::DarbouxKeller { steps, .. } => steps,
         _ => 0,
@@ -48,7 +48,7 @@ fn main() {
     let t = std::time::Instant::now();
     let mut acc = 0.0;
     for _ in 0..n {
-        if let Ok(o) = LawId::Energetic.resolve3_with(black_box(&p), &opts) {
+        if let Ok(o) = LawId::Energetic.resolve_with(black_box(&p), &opts) {
             acc += o.energy_change;
         }
     }

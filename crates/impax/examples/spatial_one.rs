@@ -15,9 +15,9 @@ fn main() {
         args[10],
     )
     .expect("valid");
-    let h = laws::hodograph(&p, LawId::Energetic).expect("ok");
+    let h = laws::hodograph(&p, LawId::Energetic, &impax::law::Options::default()).expect("ok");
     for x in &h {
         println!("{:.17e} {:+.6e} {:+.6e} {:+.6e}", x[0], x[1], x[2], x[3]);
     }
-    println!("{:?}", LawId::Energetic.resolve3(&p));
+    println!("{:?}", LawId::Energetic.resolve(&p));
 }

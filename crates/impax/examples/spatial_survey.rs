@@ -36,7 +36,7 @@ fn draw(next: &mut impl FnMut() -> f64) -> Option<ContactProblem> {
 /// Whether the energetic slip turns by 80° or more without a halt and without `σ` falling
 /// below `0.3 σ⁻`.
 fn swirls_strongly(p: &ContactProblem) -> bool {
-    let Ok(o) = LawId::Energetic.resolve3(p) else {
+    let Ok(o) = LawId::Energetic.resolve(p) else {
         return false;
     };
     let [phase] = o.phases.as_slice() else {
@@ -49,7 +49,7 @@ fn swirls_strongly(p: &ContactProblem) -> bool {
     if turn.min(TAU - turn) < 80f64.to_radians() {
         return false;
     }
-    let Ok(path) = hodograph(p, LawId::Energetic) else {
+    let Ok(path) = hodograph(p, LawId::Energetic, &impax::law::Options::default()) else {
         return false;
     };
     let sigma = |r: &[f64; 4]| r[1].hypot(r[2]);
@@ -72,7 +72,7 @@ fn main() {
     let start = Instant::now();
     let (mut failed, mut acc) = (0usize, 0.0);
     for p in &problems {
-        match LawId::Energetic.resolve3(black_box(p)) {
+        match LawId::Energetic.resolve(black_box(p)) {
             Ok(o) => acc += o.energy_change,
             Err(_) => failed += 1,
         }
@@ -80,7 +80,7 @@ fn main() {
     let mean = start.elapsed().as_secs_f64() / n.max(1) as f64;
     let (mut slip, mut stick, mut resumed) = (0, 0, 0);
     for p in &problems {
-        if let Ok(o) = LawId::Energetic.resolve3(p) {
+        if let Ok(o) = LawId::Energetic.resolve(p) {
             match o.phases.as_slice().last().map(|ph| ph.kind) {
                 Some(PhaseKind::Stick) => stick += 1,
                 Some(PhaseKind::Resumed { .. }) => resumed += 1,
@@ -107,7 +107,7 @@ fn main() {
         let reps = 5000;
         let start = Instant::now();
         for _ in 0..reps {
-            black_box(LawId::Energetic.resolve3(black_box(&p)).ok());
+            black_box(LawId::Energetic.resolve(black_box(&p)).ok());
         }
         times.push(start.elapsed().as_secs_f64() / reps as f64 * 1e6);
     }

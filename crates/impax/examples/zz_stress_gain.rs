@@ -82,7 +82,7 @@ fn main() {
             continue;
         };
         for (i, law) in [LawId::Energetic, LawId::Poisson].iter().enumerate() {
-            if let Ok(o) = law.resolve3(&p) {
+            if let Ok(o) = law.resolve(&p) {
                 if o.verdict == Verdict::EnergyGained {
                     bad[4 + i] += 1;
                     if bad[4 + i] < 4 {

@@ -8,7 +8,7 @@
 use crate::math::{Mat2, Mat3, Vec2, Vec3};
 use crate::multi::MultiProblem;
 use crate::planar::{ContactProblem, Phase, Phases};
-use crate::spatial::{ContactProblem, Phase, Phases};
+use crate::spatial;
 use nalgebra::DMatrix;
 use serde::de::Error as _;
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
@@ -53,7 +53,7 @@ struct ContactProblem3Form {
     restitution: f64,
 }
 
-impl Serialize for ContactProblem {
+impl Serialize for spatial::ContactProblem {
     fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
         let w = self.w();
         ContactProblem3Form {
@@ -66,11 +66,11 @@ impl Serialize for ContactProblem {
     }
 }
 
-impl<'de> Deserialize<'de> for ContactProblem {
+impl<'de> Deserialize<'de> for spatial::ContactProblem {
     fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
         let f = ContactProblem3Form::deserialize(deserializer)?;
         let w = Mat3::from_fn(|i, j| f.w[i][j]);
-        ContactProblem::new(w, f.v, f.friction, f.restitution).map_err(D::Error::custom)
+        spatial::ContactProblem::new(w, f.v, f.friction, f.restitution).map_err(D::Error::custom)
     }
 }
 
@@ -162,23 +162,23 @@ impl<'de> Deserialize<'de> for Phases {
     }
 }
 
-impl Serialize for Phases {
+impl Serialize for spatial::Phases {
     fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
         serializer.collect_seq(self.as_slice())
     }
 }
 
-impl<'de> Deserialize<'de> for Phases {
+impl<'de> Deserialize<'de> for spatial::Phases {
     /// At most two phases (slip, then stick or resumed slip).
     fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-        let list = Vec::<Phase>::deserialize(deserializer)?;
+        let list = Vec::<spatial::Phase>::deserialize(deserializer)?;
         if list.len() > 2 {
             return Err(D::Error::custom(format!(
                 "phases: at most 2 phases, got {}",
                 list.len()
             )));
         }
-        let mut phases = Phases::new();
+        let mut phases = spatial::Phases::new();
         for p in list {
             phases.push(p.kind, p.ends_at);
         }

@@ -30,7 +30,7 @@
 //! ([`LawId`], written as its id: `"two-phase"`), the verdicts, inconsistencies and breakdowns
 //! ([`law::Verdict`], [`law::Inconsistency`], [`law::Breakdown`], [`law::BreakdownReason`]),
 //! the work split, the outcomes with their phases and details ([`planar::Outcome`],
-//! [`spatial::Outcome`], [`multi::MultiOutcome`], [`bodies::BodyOutcome`],
+//! [`spatial::Outcome`], [`multi::MultiOutcome`], [`planar::bodies::BodyOutcome`],
 //! [`spatial::bodies::BodyOutcome`]), the problems ([`planar::ContactProblem`],
 //! [`spatial::ContactProblem`], [`multi::MultiProblem`]) and the scenario
 //! ([`scenario::PlanarScenario`]); nalgebra's vectors with it. Ids are written as the ids the
@@ -69,6 +69,7 @@ pub mod analysis;
 pub mod error;
 #[cfg(feature = "serde")]
 mod forms;
+pub mod impact;
 #[cfg(feature = "json")]
 pub mod json;
 pub mod law;

@@ -13,7 +13,7 @@ use impax::planar::bodies::{sphere, spin_state, BodyImpact, Side};
 use impax::planar::{ContactProblem, LawDetail, Phases};
 use impax::scenario::{PlanarScenario, SEED_TOML};
 use impax::spatial;
-use impax::spatial::bodies::{BodyImpact, BodyState};
+use impax::spatial::bodies::BodyState;
 use impax::LawId;
 use serde::de::DeserializeOwned;
 use serde::Serialize;
@@ -269,7 +269,7 @@ fn spatial_outcomes_of_every_law_round_trip() {
                 let p = spatial::ContactProblem::from_upper(w, v, mu, e).unwrap();
                 round_trip(&p);
                 for &law in &laws {
-                    let r = law.resolve3(&p);
+                    let r = law.resolve(&p);
                     round_trip(&r);
                     match r {
                         Ok(o) => {
@@ -303,7 +303,7 @@ fn spatial_outcomes_of_every_law_round_trip() {
     // On bodies: a spinning sphere on a plane.
     let body = impax::spatial::bodies::sphere(1.0, 0.5, Side::Below).unwrap();
     let state = BodyState::new(Vec3::new(0.5, 0.2, -1.0), Vec3::new(1.0, -2.0, 0.3));
-    let impact = BodyImpact::on_fixed_surface(body, state);
+    let impact = impax::spatial::bodies::BodyImpact::on_fixed_surface(body, state);
     let p = impact.problem(0.3, 0.6).unwrap();
     for law in LawId::SPATIAL {
         round_trip(&impact.resolve(law, &p).unwrap());
@@ -339,7 +339,7 @@ fn outcomes_at_several_contacts_round_trip() {
         let v = round_trip(&p);
         assert_eq!(v["w"].as_array().unwrap().len(), 4);
         for law in LawId::MULTI_CONTACT {
-            match law.resolve_multi(&p).unwrap() {
+            match law.resolve(&p).unwrap() {
                 Ok(o) => {
                     let v = round_trip(&o);
                     seen.record(&v);
@@ -357,7 +357,7 @@ fn outcomes_at_several_contacts_round_trip() {
         let multi = MultiProblem::from_contact(p).unwrap();
         round_trip(&multi);
         for law in LawId::CONTACT_SPACE {
-            match law.resolve_multi(&multi).unwrap() {
+            match law.resolve(&multi).unwrap() {
                 Ok(o) => {
                     let v = round_trip(&o);
                     details.insert(id_of(&v["detail"]));

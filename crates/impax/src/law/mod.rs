@@ -1,14 +1,18 @@
 //! The vocabulary every law shares, planar and spatial alike: the stable ids ([`LawId`]),
 //! the capability trait ([`ImpactLaw`]), the energy audit ([`WorkSplit`]), the judgement of a
 //! result ([`Verdict`], [`Inconsistency`], the energy-gain test of [`energy`]) and the
-//! breakdowns ([`Breakdown`], [`BreakdownReason`]).
+//! breakdowns ([`Breakdown`], [`BreakdownReason`]); the kinds of contact-space problem
+//! ([`Problem`]: one contact in the plane or in space, several contacts in the plane or in
+//! space), which [`LawId::resolve`] takes alike, and the [`Options`] of a resolution.
 
 mod breakdown;
 pub mod energy;
+mod options;
 mod verdict;
 mod work;
 
 pub use breakdown::{Breakdown, BreakdownReason};
+pub use options::Options;
 pub use verdict::{Inconsistency, Verdict};
 pub(crate) use work::record_is_finite;
 pub use work::WorkSplit;
@@ -103,7 +107,7 @@ impl LawId {
         LawId::Lcp,
     ];
 
-    /// The laws defined for any number of contacts ([`LawId::resolve_multi`]), in
+    /// The laws defined for any number of contacts ([`LawId::resolve`]), in
     /// presentation order. (The one-contact tables [`LawId::ALL`], [`LawId::CONTACT_SPACE`]
     /// and [`LawId::SPATIAL`] leave `sequential` and `lzb` out: with one contact both are
     /// `energetic`.)
@@ -189,9 +193,62 @@ impl TryFrom<String> for LawId {
     }
 }
 
+/// A contact-space problem that the laws resolve by id: [`crate::planar::ContactProblem`],
+/// [`crate::spatial::ContactProblem`], and several contacts in the plane or in space
+/// ([`crate::multi::MultiProblem`], [`crate::multi::spatial::MultiProblem`]).
+///
+/// ```
+/// use impax::{law::Options, planar, spatial, LawId};
+/// // The seed's sphere (paper A: α = 30°, e = 0.7, f = 0.4), in the plane and in space.
+/// let a = 30f64.to_radians();
+/// let p2 = planar::ContactProblem::from_entries(3.5, 0.0, 1.0, a.sin(), -a.cos(), 0.4, 0.7)?;
+/// let p3 = spatial::ContactProblem::from_upper(
+///     [3.5, 0.0, 0.0, 3.5, 0.0, 1.0], [a.sin(), 0.0, -a.cos()], 0.4, 0.7)?;
+/// let planar = LawId::Energetic.resolve(&p2).unwrap();
+/// let spatial = LawId::Energetic.resolve_with(&p3, &Options::default()).unwrap();
+/// assert!((planar.energy_change - spatial.energy_change).abs() < 1e-12);
+/// # Ok::<(), impax::Error>(())
+/// ```
+pub trait Problem {
+    /// What a law gives for it: an outcome or a [`Breakdown`] (for several contacts, first an
+    /// [`crate::Error`] naming the field `law` when the law does not take them).
+    type Resolution;
+
+    /// Resolve it with the law `law` and the options `options`.
+    fn resolve_by(&self, law: LawId, options: &Options) -> Self::Resolution;
+}
+
+impl LawId {
+    /// Resolve a contact-space problem of any kind ([`Problem`]) with this law and the default
+    /// [`Options`].
+    ///
+    /// For one planar contact, `smith-centre` needs a body's centre velocity, which contact
+    /// space does not have: it returns [`BreakdownReason::NeedsBody`] (use
+    /// [`crate::planar::bodies::BodyImpact::resolve`] or
+    /// [`crate::planar::laws::Smith::centre`]); `two-phase`, `smith` and `smith-centre` are
+    /// planar only ([`BreakdownReason::PlanarOnly`] in space). `sequential` and `lzb` with one
+    /// contact are `energetic`, its outcome (or breakdown) labelled `sequential` or `lzb`. With
+    /// several contacts only the multi-contact laws apply ([`crate::multi::resolve`]).
+    #[inline]
+    pub fn resolve<P: Problem + ?Sized>(self, problem: &P) -> P::Resolution {
+        problem.resolve_by(self, &Options::default())
+    }
+
+    /// [`LawId::resolve`] with the options `options` (the tolerance of the integrating laws).
+    #[inline]
+    pub fn resolve_with<P: Problem + ?Sized>(
+        self,
+        problem: &P,
+        options: &Options,
+    ) -> P::Resolution {
+        problem.resolve_by(self, options)
+    }
+}
+
 /// An impact law: maps a contact-space problem to an outcome or a breakdown — the one trait
 /// of the planar laws ([`crate::planar::laws`]: `Problem = ContactProblem`,
-/// `Outcome = Outcome`, `Brief = OutcomeBrief`) and of any law on another kind of problem.
+/// `Outcome = Outcome`, `Brief = OutcomeBrief`), of the spatial ones ([`crate::spatial::laws`],
+/// whose brief is the outcome itself) and of any law on another kind of problem.
 ///
 /// Laws are pure functions of the problem: no I/O, no allocation.
 pub trait ImpactLaw {

@@ -243,3 +243,25 @@ impl<'a, M: Mechanism + ?Sized> MechanismImpact<'a, M> {
         })
     }
 }
+
+impl<M: Mechanism + ?Sized> crate::impact::Impact for MechanismImpact<'_, M> {
+    type Problem = ContactProblem;
+    type Impulse = Vec2;
+    type Velocities = Vec<f64>;
+
+    fn problem(&self, friction: f64, restitution: f64) -> Result<ContactProblem> {
+        MechanismImpact::problem(self, friction, restitution)
+    }
+
+    fn velocities_after(&self, p: &Vec2) -> Vec<f64> {
+        MechanismImpact::velocities_after(self, *p)
+    }
+
+    fn kinetic_energy(&self, u: &Vec<f64>) -> f64 {
+        MechanismImpact::kinetic_energy(self, u)
+    }
+
+    fn kinetic_energy_before(&self) -> f64 {
+        self.energy_before()
+    }
+}

@@ -20,7 +20,7 @@
 //! | `lzb` | [`lzb`] | Liu, Zhao & Brogliato's multiple impacts (2008, 2009): every contact a compliant element `F_j = κ_j δ_j^η` storing energy, the impulses distributed by the force law, energetic restitution and Coulomb friction at each contact, integrated to the end |
 //!
 //! Data flows one way: [`MultiProblem`] → [`lcp::resolve`] / [`sequential::resolve`] /
-//! [`lzb::resolve`] (or [`LawId::resolve_multi`]) → [`MultiOutcome`] or
+//! [`lzb::resolve`] (or [`LawId::resolve`]) → [`MultiOutcome`] or
 //! [`Breakdown`]. With one contact they reduce to the one-contact laws
 //! (`lcp` to [`crate::planar::laws::Lcp`], `sequential` and `lzb` to
 //! [`crate::planar::laws::Energetic`]).
@@ -37,7 +37,7 @@
 //!     &[0.8],
 //! )
 //! .unwrap();
-//! let out = LawId::Lcp.resolve_multi(&p).unwrap().unwrap();
+//! let out = LawId::Lcp.resolve(&p).unwrap().unwrap();
 //! for c in &out.contacts {
 //!     assert!((c.velocity_after.y - 0.8).abs() < 1e-12); // both ends leave at e |v_y|
 //!     assert!((c.impulse.y - 0.9).abs() < 1e-12);        // (1 + e) m |v_y| / 2 each
@@ -66,7 +66,7 @@ use crate::error::{Error, Result};
 use crate::law::LawId;
 use crate::law::{Breakdown, BreakdownReason};
 
-/// Resolve `problem` with `law` ([`LawId::resolve_multi`]): `lcp`, `sequential` and `lzb`
+/// Resolve `problem` with `law` (as [`LawId::resolve`] does): `lcp`, `sequential` and `lzb`
 /// for several contacts (`lcp` up to [`lcp::MAX_CONTACTS`], `lzb` up to
 /// [`lzb::MAX_CONTACTS`]); with `K = 1` every contact-space law, its one-contact outcome
 /// carried over ([`MultiOutcome::from_outcome`]). Errors name the field `law`: a one-contact
@@ -114,7 +114,9 @@ pub fn resolve(law: LawId, problem: &MultiProblem) -> Result<MultiResolution> {
     }
 }
 
-impl LawId {
+impl crate::law::Problem for MultiProblem {
+    type Resolution = Result<MultiResolution>;
+
     /// Resolve a planar problem with several contacts ([`crate::multi`]).
     ///
     /// `lcp`, `sequential` and `lzb` take several contacts (`lcp` at most
@@ -141,16 +143,15 @@ impl LawId {
     ///     &[0.5],
     /// )
     /// .unwrap();
-    /// let out = LawId::Lcp.resolve_multi(&p).unwrap().unwrap();
+    /// let out = LawId::Lcp.resolve(&p).unwrap().unwrap();
     /// assert!((out.contacts[0].velocity_after.y - 0.5).abs() < 1e-12); // −e v_n⁻
     /// assert!((out.contacts[1].velocity_after.y - 0.25).abs() < 1e-12);
-    /// assert!(LawId::Whittaker.resolve_multi(&p).is_err()); // a one-contact law
+    /// assert!(LawId::Whittaker.resolve(&p).is_err()); // a one-contact law
     /// ```
-    pub fn resolve_multi(
-        self,
-        problem: &crate::multi::MultiProblem,
-    ) -> Result<crate::multi::MultiResolution> {
-        crate::multi::resolve(self, problem)
+    ///
+    /// The planar laws are exact: `options` changes nothing.
+    fn resolve_by(&self, law: LawId, _options: &crate::law::Options) -> Result<MultiResolution> {
+        resolve(law, self)
     }
 }
 

@@ -373,9 +373,9 @@ impl MultiImpact {
     /// back to the generalized velocities.
     ///
     /// # Errors
-    /// As [`LawId::resolve_multi`] (a one-contact law with several contacts names `law`).
+    /// As [`LawId::resolve`] (a one-contact law with several contacts names `law`).
     pub fn resolve(&self, law: LawId, problem: &MultiProblem) -> Result<SystemOutcome> {
-        let resolution = law.resolve_multi(problem)?;
+        let resolution = law.resolve(problem)?;
         let (velocities_after, energy_change_from_velocities) = match &resolution {
             Ok(o) => {
                 let after = self.velocities_after(&o.impulses());

@@ -6,7 +6,7 @@
 //! // A planar problem embedded in 3D agrees with the planar closed form.
 //! let p = ContactProblem::from_upper([3.5, 0.0, 0.0, 3.5, 0.0, 1.0], [0.5, 0.0, -0.866], 0.4, 0.7)
 //!     .unwrap();
-//! let out = LawId::Energetic.resolve3(&p).unwrap();
+//! let out = LawId::Energetic.resolve(&p).unwrap();
 //! assert!((out.impulse.x + 0.5 / 3.5).abs() < 1e-12);
 //! ```
 
@@ -14,11 +14,9 @@ pub mod bodies;
 pub mod darboux_keller;
 pub mod invariant;
 pub mod laws;
-pub mod lcp;
 mod outcome;
 pub(crate) mod problem;
 
-pub use darboux_keller::SpatialOptions;
 pub use invariant::{
     invariant_rays, resumption_direction, sticking_ratio, InvariantRay, InvariantRays, RayKind,
 };

@@ -227,3 +227,12 @@ impl Outcome {
 
 /// What a spatial law returns.
 pub type Resolution = Result<Outcome, crate::law::Breakdown>;
+
+/// The brief of a spatial outcome is the outcome itself (it is `Copy`): what
+/// [`crate::law::ImpactLaw::resolve_brief`] gives for a spatial law.
+impl From<&Outcome> for Outcome {
+    #[inline]
+    fn from(o: &Outcome) -> Self {
+        *o
+    }
+}

@@ -17,7 +17,7 @@ use impax::math::SplitMix64;
 use impax::math::{Mat3, Vec2, Vec3};
 use impax::planar::{ContactProblem, Inconsistency, PhaseKind, SlipDirection};
 use impax::spatial;
-use impax::spatial::lcp::{solutions, LcpSolution3};
+use impax::spatial::laws::lcp::{solutions, LcpSolution};
 use impax::LawId;
 use std::f64::consts::TAU;
 
@@ -58,7 +58,7 @@ fn random_problem(rng: &mut SplitMix64, coupled: bool) -> spatial::ContactProble
 }
 
 /// The largest relative violation of the complementarity conditions by one solution.
-fn residual(p: &spatial::ContactProblem, s: &LcpSolution3) -> f64 {
+fn residual(p: &spatial::ContactProblem, s: &LcpSolution) -> f64 {
     let imp = s.impulse;
     let v = p.velocity();
     let vplus = p.velocity() + p.w() * imp;
@@ -107,7 +107,7 @@ fn every_solution_satisfies_the_conditions_and_one_always_exists() {
         for w in sols.windows(2) {
             assert!(w[0].energy_change <= w[1].energy_change);
         }
-        let o = LawId::Lcp.resolve3(&p).unwrap();
+        let o = LawId::Lcp.resolve(&p).unwrap();
         assert_eq!(o.impulse, sols[0].impulse);
         assert_eq!(
             o.detail,
@@ -230,7 +230,7 @@ fn planar_embedding_agrees_with_the_planar_law() {
             .unwrap();
         let p3 = spatial::ContactProblem::from_planar(&p, rng.range(0.1, 10.0)).unwrap();
         let o = LawId::Lcp.resolve(&p).unwrap();
-        let o3 = LawId::Lcp.resolve3(&p3).unwrap();
+        let o3 = LawId::Lcp.resolve(&p3).unwrap();
         assert_eq!(solutions(&p3).len(), 1, "{p3:?}");
         let scale = o.impulse.norm() + p.velocity().norm();
         let d = (o.impulse.x - o3.impulse.x)
@@ -288,7 +288,7 @@ fn a_problem_with_three_solutions() {
     let p = three_solution_problem();
     let sols = solutions(&p);
     assert_eq!(sols.len(), 3, "{sols:?}");
-    let o = LawId::Lcp.resolve3(&p).unwrap();
+    let o = LawId::Lcp.resolve(&p).unwrap();
     assert_eq!(o.impulse, sols[0].impulse);
     assert_eq!(
         o.inconsistency,

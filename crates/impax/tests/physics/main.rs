@@ -8,6 +8,7 @@ mod analysis;
 mod bodies3;
 mod box_shape;
 mod brute_force;
+mod impact_contract;
 mod lcp;
 mod lcp_spatial;
 mod mechanism_specs;

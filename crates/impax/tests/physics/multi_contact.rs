@@ -61,7 +61,7 @@ fn one_contact_lcp_is_the_planar_lcp_and_sequential_is_energetic() {
         .enumerate()
         {
             let r = reference.resolve(&one).expect("reference");
-            let m = law.resolve_multi(&multi).expect("valid").expect("outcome");
+            let m = law.resolve(&multi).expect("valid").expect("outcome");
             assert_eq!(m.law, law);
             let c = &m.contacts[0];
             let pscale = r.impulse.norm();
@@ -110,7 +110,7 @@ fn one_contact_laws_through_resolve_multi_with_one_contact() {
             .filter(|l| *l != LawId::Lcp)
         {
             let r = law.resolve(&one);
-            let m = law.resolve_multi(&multi).expect("one contact: every law");
+            let m = law.resolve(&multi).expect("one contact: every law");
             match (r, m) {
                 (Ok(r), Ok(m)) => {
                     assert_eq!(m.contacts[0].impulse, r.impulse);
@@ -640,7 +640,7 @@ fn sequential_never_gains_energy_and_no_consistent_result_approaches() {
         let k = 2 + trial % 3;
         let r = random_multi(&mut rng, k);
         for law in [LawId::Lcp, LawId::Sequential] {
-            let o = match law.resolve_multi(&r.problem).unwrap() {
+            let o = match law.resolve(&r.problem).unwrap() {
                 Ok(o) => o,
                 Err(b) => {
                     // lcp: no solution when redundant contacts wedge (above). sequential:
@@ -773,7 +773,7 @@ fn errors_name_their_field() {
     // The laws.
     let p = MultiProblem::from_upper(2, &rod, &v, &[0.5], &[0.5]).unwrap();
     for law in LawId::ALL.into_iter().filter(|l| !l.is_multi_contact()) {
-        let e = law.resolve_multi(&p).unwrap_err();
+        let e = law.resolve(&p).unwrap_err();
         assert_eq!(e.field(), "law");
         assert!(e.to_string().contains(law.as_str()), "{e}");
     }
@@ -784,13 +784,13 @@ fn errors_name_their_field() {
     let mut v = vec![0.0; 2 * k];
     v[1] = -1.0;
     let p = MultiProblem::new(w, &v, &[0.3], &[0.5]).unwrap();
-    let e = LawId::Lcp.resolve_multi(&p).unwrap_err();
+    let e = LawId::Lcp.resolve(&p).unwrap_err();
     assert!(e.to_string().contains("at most 6"), "{e}");
     assert_eq!(
         lcp::resolve(&p).unwrap_err().reason.id(),
         "too-many-contacts"
     );
-    assert!(LawId::Sequential.resolve_multi(&p).unwrap().is_ok());
+    assert!(LawId::Sequential.resolve(&p).unwrap().is_ok());
 }
 
 #[test]
@@ -811,8 +811,8 @@ fn sequential_is_energetic_for_one_contact_everywhere() {
     )
     .unwrap();
     let (s, e) = (
-        LawId::Sequential.resolve3(&p3).unwrap(),
-        LawId::Energetic.resolve3(&p3).unwrap(),
+        LawId::Sequential.resolve(&p3).unwrap(),
+        LawId::Energetic.resolve(&p3).unwrap(),
     );
     assert_eq!(s.law, LawId::Sequential);
     assert_eq!(s.impulse, e.impulse);

@@ -86,10 +86,7 @@ fn one_contact_is_energetic() {
                 .unwrap();
         }
         let r = LawId::Energetic.resolve(&one).expect("energetic");
-        let m = LawId::Lzb
-            .resolve_multi(&multi)
-            .expect("valid")
-            .expect("outcome");
+        let m = LawId::Lzb.resolve(&multi).expect("valid").expect("outcome");
         assert_eq!(m.law, LawId::Lzb);
         let c = &m.contacts[0];
         let pscale = r.impulse.norm();
@@ -137,8 +134,8 @@ fn one_contact_everywhere_and_the_law_tables() {
     )
     .unwrap();
     let (l, e) = (
-        LawId::Lzb.resolve3(&p3).unwrap(),
-        LawId::Energetic.resolve3(&p3).unwrap(),
+        LawId::Lzb.resolve(&p3).unwrap(),
+        LawId::Energetic.resolve(&p3).unwrap(),
     );
     assert_eq!(l.law, LawId::Lzb);
     assert_eq!(l.impulse, e.impulse);
@@ -661,7 +658,7 @@ fn bad_parameters_name_their_field() {
     let mut v = vec![0.0; 2 * k];
     v[1] = -1.0;
     let p = MultiProblem::new(w, &v, &[0.3], &[0.5]).unwrap();
-    let e = LawId::Lzb.resolve_multi(&p).unwrap_err();
+    let e = LawId::Lzb.resolve(&p).unwrap_err();
     assert_eq!(e.field(), "law");
     assert!(e.to_string().contains("at most 8"), "{e}");
     assert_eq!(

@@ -40,7 +40,7 @@ fn one_contact_lcp_agrees_with_the_spatial_lcp() {
         let (mu, e) = (rng.range(0.0, 1.5), rng.unit());
         let p = MultiProblem::new(w.clone(), &[v.x, v.y, v.z], &[mu], &[e]).unwrap();
         let multi = spatial::lcp::resolve(&p).unwrap();
-        let single = impax::spatial::lcp::resolve(&one(&w, v, mu, e)).unwrap();
+        let single = impax::LawId::Lcp.resolve(&one(&w, v, mu, e)).unwrap();
         let d = (multi.contacts[0].impulse - single.impulse).amax();
         assert!(
             d <= 1e-10 * single.impulse.amax().max(1e-300),
@@ -52,7 +52,7 @@ fn one_contact_lcp_agrees_with_the_spatial_lcp() {
             spatial::MultiDetail::Lcp { solutions } => solutions.len(),
             _ => 0,
         };
-        let singles = impax::spatial::lcp::solutions(&one(&w, v, mu, e)).len();
+        let singles = impax::spatial::laws::lcp::solutions(&one(&w, v, mu, e)).len();
         assert_eq!(count(&multi), singles, "{w} {v} μ = {mu}, e = {e}");
     }
 }
@@ -77,17 +77,17 @@ fn decoupled_contacts_are_their_own_problems() {
         let singles = [one(&w1, v1, mu[0], e[0]), one(&w2, v2, mu[1], e[1])];
         let seq = spatial::sequential::resolve(&p).unwrap();
         for (j, s) in singles.iter().enumerate() {
-            let en = impax::spatial::laws::resolve(LawId::Energetic, s).unwrap();
+            let en = LawId::Energetic.resolve(s).unwrap();
             let d = (seq.contacts[j].impulse - en.impulse).amax();
             assert!(d <= 1e-12 * en.impulse.amax(), "sequential {j}: {d}");
         }
         if singles
             .iter()
-            .all(|s| impax::spatial::lcp::solutions(s).len() == 1)
+            .all(|s| impax::spatial::laws::lcp::solutions(s).len() == 1)
         {
             let lcp = spatial::lcp::resolve(&p).unwrap();
             for (j, s) in singles.iter().enumerate() {
-                let single = impax::spatial::lcp::resolve(s).unwrap();
+                let single = impax::LawId::Lcp.resolve(s).unwrap();
                 let d = (lcp.contacts[j].impulse - single.impulse).amax();
                 assert!(d <= 1e-10 * single.impulse.amax(), "lcp {j}: {d}");
             }
@@ -126,7 +126,7 @@ fn a_planar_problem_in_3d_is_the_planar_problem() {
             continue;
         };
         for law in [LawId::Lcp, LawId::Sequential] {
-            let a = law.resolve_multi(planar).unwrap();
+            let a = law.resolve(planar).unwrap();
             let b = spatial::resolve(law, &p3).unwrap();
             let (Ok(a), Ok(b)) = (a, b) else { continue };
             if matches!(&a.detail, impax::multi::MultiDetail::Lcp { solutions } if solutions.len() > 1)

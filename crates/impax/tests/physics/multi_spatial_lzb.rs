@@ -91,7 +91,7 @@ fn decoupled_contacts_are_their_own_energetic() {
         for (j, (b, vj)) in blocks.iter().enumerate() {
             let one =
                 ContactProblem::new(Mat3::from_fn(|r, c| b[(r, c)]), *vj, mu[j], e[j]).unwrap();
-            let r = impax::spatial::laws::resolve(LawId::Energetic, &one).unwrap();
+            let r = LawId::Energetic.resolve(&one).unwrap();
             let c = &o.contacts[j];
             let pscale = r.impulse.norm();
             let vscale = vj.norm() + r.velocity_after.norm();
@@ -571,7 +571,7 @@ fn the_dispatcher_takes_lzb_at_several_contacts() {
     )
     .unwrap();
     let one = lzb::resolve(&q).unwrap();
-    let en = impax::spatial::laws::resolve(LawId::Energetic, &q.contact(0).unwrap()).unwrap();
+    let en = LawId::Energetic.resolve(&q.contact(0).unwrap()).unwrap();
     assert_eq!(one.law, LawId::Lzb);
     assert_eq!(one.contacts[0].impulse, en.impulse);
     assert_eq!(steps(&one), 0);

@@ -18,7 +18,7 @@ use impax::LawId;
 fn frictionless_brach_labels_the_slip() {
     let p = ContactProblem::from_upper([1.0, 0.0, 0.0, 1.0, 0.0, 1.0], [1.0, 0.0, -1.0], 0.0, 0.5)
         .unwrap();
-    let o = LawId::Brach.resolve3(&p).unwrap();
+    let o = LawId::Brach.resolve(&p).unwrap();
     let kind = o.phases.as_slice()[0].kind;
     assert!(
         matches!(kind, PhaseKind::Slip { from, to } if from == 0.0 && to == 0.0),

@@ -21,7 +21,7 @@ use impax::LawId;
 fn plastic_brach_ends_at_the_end_of_compression() {
     let p = ContactProblem::from_upper([1.0, 0.0, 0.1, 1.0, 0.0, 1.0], [0.0, 0.0, -0.7], 1.0, 0.0)
         .unwrap();
-    let o = LawId::Brach.resolve3(&p).unwrap();
+    let o = LawId::Brach.resolve(&p).unwrap();
     let pc = o
         .compression_impulse
         .expect("compression ends where the impact ends");
@@ -53,6 +53,6 @@ fn plastic_sticking_brach_ends_at_the_end_of_compression() {
         0.0,
     )
     .unwrap();
-    let o = impax::LawId::Brach.resolve3(&p).unwrap();
+    let o = impax::LawId::Brach.resolve(&p).unwrap();
     assert_eq!(o.compression_impulse, Some(o.impulse.z));
 }

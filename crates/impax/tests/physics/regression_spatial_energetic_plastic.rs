@@ -34,7 +34,7 @@ use impax::LawId;
 fn energetic(w: [f64; 6], v: [f64; 3], mu: f64) -> impax::spatial::Outcome {
     let p = ContactProblem::from_upper(w, v, mu, 0.0).unwrap();
     LawId::Energetic
-        .resolve3(&p)
+        .resolve(&p)
         .unwrap_or_else(|b| panic!("{b} for {p:?}"))
 }
 

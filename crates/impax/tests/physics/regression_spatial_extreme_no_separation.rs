@@ -27,7 +27,7 @@ use impax::LawId;
 fn check(w: [f64; 6], v: [f64; 3], mu: f64, expect: [f64; 3]) {
     let p = ContactProblem::from_upper(w, v, mu, 0.5).unwrap();
     let o = LawId::Newton
-        .resolve3(&p)
+        .resolve(&p)
         .unwrap_or_else(|b| panic!("{b} for {p:?}"));
     let scale = expect.iter().fold(0.0f64, |m, x| m.max(x.abs()));
     for i in 0..3 {

@@ -30,7 +30,7 @@ fn frictionless_darboux_keller_laws_resume_slip_from_rest() {
         let p = ContactProblem::from_upper(W, v, 0.0, 0.5).unwrap();
         for law in [LawId::Newton, LawId::Poisson, LawId::Energetic] {
             let o = law
-                .resolve3(&p)
+                .resolve(&p)
                 .unwrap_or_else(|b| panic!("v⁻ = {v:?}: {b}"));
             assert_eq!(
                 (o.impulse.x, o.impulse.y),

@@ -24,7 +24,7 @@ fn the_slip_halts_along_a_centripetal_ray() {
         ContactProblem::from_upper([6.0, 0.0, 0.7, 6.0, 0.0, 1.0], [-0.4, 0.9, -1.5], 1.45, 0.5)
             .unwrap();
     let rays = invariant_rays(&p);
-    let o = LawId::Newton.resolve3(&p).unwrap();
+    let o = LawId::Newton.resolve(&p).unwrap();
     let ph = o.phases.as_slice();
     assert_eq!(ph.len(), 2, "the slip halts: {}", o.phases.summary());
     let PhaseKind::Slip { to, .. } = ph[0].kind else {

@@ -24,7 +24,7 @@ fn radial_slip_keeps_its_angle() {
     )
     .unwrap();
     for law in [LawId::Newton, LawId::Poisson, LawId::Energetic] {
-        let o = law.resolve3(&p).unwrap();
+        let o = law.resolve(&p).unwrap();
         for ph in o.phases.as_slice() {
             if let PhaseKind::Slip { from, to } = ph.kind {
                 assert_eq!(from, to, "{law}: {}", o.phases.summary());

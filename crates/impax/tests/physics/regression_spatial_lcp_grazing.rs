@@ -32,13 +32,13 @@
 use crate::support::rotation;
 use impax::math::{Mat3, SplitMix64, Vec2, Vec3};
 use impax::planar::BreakdownReason;
-use impax::spatial::lcp::{solutions, LcpSolution3};
+use impax::spatial::laws::lcp::{solutions, LcpSolution};
 use impax::spatial::{ContactProblem, PhaseKind};
 use impax::LawId;
 
 /// The largest violation of the conditions by `s`: impulses relative to `|p|`, `v⁻ + W p`
 /// relative to `|v⁻| + |W||p|`; and the reported velocity against `v⁻ + W p` the same way.
-fn residual(p: &ContactProblem, s: &LcpSolution3) -> f64 {
+fn residual(p: &ContactProblem, s: &LcpSolution) -> f64 {
     let imp = s.impulse;
     let v = p.velocity();
     let direct = v + p.w() * imp;
@@ -120,7 +120,7 @@ fn the_issue_problem_has_its_solution() {
         "{:?} vs {vt:?}",
         s.velocity_after
     );
-    let o = LawId::Lcp.resolve3(&p).unwrap();
+    let o = LawId::Lcp.resolve(&p).unwrap();
     assert_eq!(o.impulse, s.impulse);
     // Compression ends where v_n = 0 on the straight path: p_c = p_n/(1+e).
     let pc = o.compression_impulse.unwrap();
@@ -161,7 +161,7 @@ fn grazing_strongly_coupled_problems_always_have_a_solution() {
             assert!(r <= 1e-12, "residual {r:e} for {p:?}: {s:?}");
             slips += usize::from(matches!(s.kind, PhaseKind::Slip { .. }));
         }
-        match LawId::Lcp.resolve3(&p) {
+        match LawId::Lcp.resolve(&p) {
             Ok(o) => assert_eq!(o.impulse, sols[0].impulse),
             Err(b) => assert_ne!(b.reason, BreakdownReason::NoSolution, "{p:?}"),
         }

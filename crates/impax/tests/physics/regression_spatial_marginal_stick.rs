@@ -34,7 +34,7 @@ fn marginal_stick_resolves() {
     )
     .unwrap();
     for law in [LawId::Newton, LawId::Poisson, LawId::Energetic] {
-        let o = law.resolve3(&p).unwrap_or_else(|b| panic!("{b}"));
+        let o = law.resolve(&p).unwrap_or_else(|b| panic!("{b}"));
         assert_eq!(o.compression_impulse, Some(o.impulse.z));
     }
 }

@@ -88,7 +88,7 @@ fn compression_along(path: &[[f64; 4]]) -> f64 {
 #[test]
 fn the_issue_problem_ends_separating() {
     let p = issue_problem();
-    let o = LawId::Poisson.resolve3(&p).unwrap();
+    let o = LawId::Poisson.resolve(&p).unwrap();
     assert_eq!(o.verdict, Verdict::Consistent);
     assert!(o.velocity_after.z > 0.0, "v_n⁺ = {}", o.velocity_after.z);
     let LawDetail::DarbouxKeller {
@@ -125,7 +125,7 @@ fn the_issue_problem_ends_separating() {
     );
     assert!((o.velocity_after.z - 0.033_223_270_308_522_72).abs() <= 1e-10);
     // The same along the sampled path.
-    let path = hodograph(&p, LawId::Poisson).unwrap();
+    let path = hodograph(&p, LawId::Poisson, &impax::law::Options::default()).unwrap();
     let along = compression_along(&path);
     assert!(
         (along - compression).abs() <= 1e-12 * pf,
@@ -133,7 +133,7 @@ fn the_issue_problem_ends_separating() {
     );
     // newton and energetic end separating too.
     for law in [LawId::Newton, LawId::Energetic] {
-        let o = law.resolve3(&p).unwrap();
+        let o = law.resolve(&p).unwrap();
         assert!(o.velocity_after.z >= 0.0, "{law}: {}", o.velocity_after.z);
         assert_eq!(o.inconsistency, None);
     }
@@ -191,7 +191,7 @@ fn no_darboux_keller_law_ends_approaching_unflagged() {
     for _ in 0..100_000 {
         let p = random_problem(&mut rng);
         for law in DK {
-            let Ok(o) = law.resolve3(&p) else {
+            let Ok(o) = law.resolve(&p) else {
                 continue;
             };
             let vn = o.velocity_after.z;
@@ -221,7 +221,7 @@ fn no_darboux_keller_law_ends_approaching_unflagged() {
             let e = p.restitution();
             if pf > (1.0 + e) * pc * (1.0 + 1e-9) {
                 extended += 1;
-                let path = hodograph(&p, law).unwrap();
+                let path = hodograph(&p, law, &impax::law::Options::default()).unwrap();
                 let c = compression_along(&path);
                 worst = worst.max(((pf - c) - e * c).abs() / pf);
                 // (Every crossing of v_n = 0 is an event, hence a sample of the path.)

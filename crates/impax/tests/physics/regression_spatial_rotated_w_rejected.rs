@@ -51,7 +51,7 @@ fn rotated(q: &Mat3, lambda: Vec3) -> Mat3 {
 fn check_laws(p: &ContactProblem, tol: f64) -> f64 {
     let mut worst = 0.0f64;
     for law in LAWS {
-        let o = match law.resolve3(p) {
+        let o = match law.resolve(p) {
             Ok(o) => o,
             Err(b) => {
                 assert!(!law.is_darboux_keller(), "{law}: {b} for {p:?}");

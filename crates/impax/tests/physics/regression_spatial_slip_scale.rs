@@ -41,8 +41,9 @@
 //!   `s_v`, works by `s_v²/s_w`; bit for bit for powers of two, to 1e-9 of each quantity's
 //!   scale for factors from 1e-300 to 1e300.
 
+use impax::law::Options;
 use impax::math::{Mat3, SplitMix64, Vec3};
-use impax::spatial::{sticking_ratio, ContactProblem, Outcome, Resolution, SpatialOptions};
+use impax::spatial::{sticking_ratio, ContactProblem, Outcome, Resolution};
 use impax::LawId;
 
 const DK: [LawId; 3] = [LawId::Newton, LawId::Poisson, LawId::Energetic];
@@ -70,7 +71,7 @@ fn velocity_scale(p: &ContactProblem, o: &Outcome) -> f64 {
 
 #[test]
 fn the_issue_cases() {
-    let law_results = |p: &ContactProblem| DK.map(|law| law.resolve3(p));
+    let law_results = |p: &ContactProblem| DK.map(|law| law.resolve(p));
     // A slip of 1e-200: the zero-slip result.
     let w = [1.0, 0.0, 0.0, 1.0, 0.0, 1.0];
     let tiny = ContactProblem::from_upper(w, [0.0, 1e-200, -1.0], 0.5, 0.6).unwrap();
@@ -95,7 +96,7 @@ fn the_issue_cases() {
         0.7,
     )
     .unwrap();
-    let wh = LawId::Whittaker.resolve3(&grazing).unwrap();
+    let wh = LawId::Whittaker.resolve(&grazing).unwrap();
     for (law, o) in DK.iter().zip(law_results(&grazing)) {
         let o = o.unwrap();
         assert!(
@@ -119,7 +120,7 @@ fn tiny_slips_give_the_zero_slip_result_where_stick_is_stable() {
         let mu = sticking_ratio(&probe).norm() * rng.range(1.01, 3.0) + 0.01;
         let e = rng.unit();
         let zero = ContactProblem::new(w, Vec3::new(0.0, 0.0, vn), mu, e).unwrap();
-        let base = DK.map(|law| law.resolve3(&zero).unwrap());
+        let base = DK.map(|law| law.resolve(&zero).unwrap());
         for k in (20..=300).step_by(10) {
             let phi = rng.range(0.0, std::f64::consts::TAU);
             let s = 10f64.powi(-k);
@@ -127,7 +128,7 @@ fn tiny_slips_give_the_zero_slip_result_where_stick_is_stable() {
                 ContactProblem::new(w, Vec3::new(s * phi.cos(), s * phi.sin(), vn), mu, e).unwrap();
             for (law, b) in DK.iter().zip(&base) {
                 let a = law
-                    .resolve3(&p)
+                    .resolve(&p)
                     .unwrap_or_else(|x| panic!("{law} at slip 1e-{k}: {x} for {p:?}"));
                 let tol = 4.0 * f64::EPSILON;
                 assert!(
@@ -168,12 +169,12 @@ fn slips_far_above_the_normal_velocity_are_resolved_accurately() {
             let p = ContactProblem::new(w, Vec3::new(phi.cos(), phi.sin(), vn), mu, e).unwrap();
             for law in DK {
                 let a = law
-                    .resolve3(&p)
+                    .resolve(&p)
                     .unwrap_or_else(|x| panic!("{law} at ratio 1e{k}: {x} for {p:?}"));
                 if k <= 20 {
                     // The default tolerance against 1e-14.
                     let b = law
-                        .resolve3_with(&p, &SpatialOptions { rtol: 1e-14 })
+                        .resolve_with(&p, &Options::default().rtol(1e-14))
                         .unwrap();
                     assert!(
                         (a.impulse - b.impulse).norm() <= 1e-10 * b.impulse.norm(),
@@ -192,7 +193,7 @@ fn slips_far_above_the_normal_velocity_are_resolved_accurately() {
                 // Where the slip cannot turn over the impact (|dv_t/dp_n| ≤ G over Whittaker's
                 // straight path, G p_f below round-off of σ⁻ = 1), the path is that
                 // straight one: Whittaker's impulse.
-                let Ok(wh) = LawId::Whittaker.resolve3(&p) else {
+                let Ok(wh) = LawId::Whittaker.resolve(&p) else {
                     continue;
                 };
                 let g = p.wtn().norm() + p.friction() * p.wtt().norm();
@@ -328,11 +329,11 @@ fn powers_of_two_scale_every_spatial_law_exactly() {
             continue;
         };
         for law in LAWS {
-            let a = law.resolve3(&p);
+            let a = law.resolve(&p);
             if a.as_ref().is_ok_and(|o| !fits(o, kp, kv)) {
                 continue;
             }
-            agree(law, &p, &a, &law.resolve3(&q), kp, kv, 0.0);
+            agree(law, &p, &a, &law.resolve(&q), kp, kv, 0.0);
             compared += 1;
         }
     }
@@ -353,13 +354,13 @@ fn any_factor_from_1e_minus_300_to_1e300_scales_every_spatial_law() {
             continue;
         };
         for law in LAWS {
-            let a = law.resolve3(&p);
+            let a = law.resolve(&p);
             if a.as_ref().is_ok_and(|o| !fits(o, kp, kv)) {
                 continue;
             }
             // Scaling by a decimal factor rounds W and v once: the result moves by that
             // round-off times the problem's conditioning.
-            agree(law, &p, &a, &law.resolve3(&q), kp, kv, 1e-9);
+            agree(law, &p, &a, &law.resolve(&q), kp, kv, 1e-9);
             compared += 1;
         }
     }

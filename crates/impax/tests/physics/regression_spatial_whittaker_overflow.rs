@@ -24,7 +24,7 @@ fn an_overflowing_gain_is_a_breakdown() {
         1.0,
     )
     .unwrap();
-    match LawId::Whittaker.resolve3(&p) {
+    match LawId::Whittaker.resolve(&p) {
         Err(b) => assert_eq!(b.reason.id(), "overflow", "{b}"),
         Ok(o) => panic!(
             "a result: ΔT = {}, work {:?}, verdict {:?}",
@@ -39,7 +39,7 @@ fn an_overflowing_gain_is_a_breakdown() {
         1.0,
     )
     .unwrap();
-    let o = LawId::Whittaker.resolve3(&p).expect("representable");
+    let o = LawId::Whittaker.resolve(&p).expect("representable");
     assert!(o.energy_change.is_finite() && o.energy_change > 1e199);
     assert_eq!(o.verdict, impax::planar::Verdict::EnergyGained);
 }

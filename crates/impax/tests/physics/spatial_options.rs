@@ -7,8 +7,9 @@
 //! * a loose tolerance (1e-7) takes no more steps than the default and still agrees to 1e-5;
 //! * `rtol = NaN` gives the default result bit for bit.
 
+use impax::law::Options;
 use impax::math::SplitMix64;
-use impax::spatial::{ContactProblem, LawDetail, SpatialOptions};
+use impax::spatial::{ContactProblem, LawDetail};
 use impax::LawId;
 
 fn problems(n: usize) -> Vec<ContactProblem> {
@@ -50,18 +51,18 @@ fn steps(d: &LawDetail) -> u32 {
 
 #[test]
 fn the_tolerance_option_converges_and_trades_steps_for_accuracy() {
-    let fine = SpatialOptions { rtol: 1e-13 };
-    let loose = SpatialOptions { rtol: 1e-7 };
-    let nan = SpatialOptions { rtol: f64::NAN };
+    let fine = Options::default().rtol(1e-13);
+    let loose = Options::default().rtol(1e-7);
+    let nan = Options::default().rtol(f64::NAN);
     let (mut worst_default, mut worst_loose) = (0.0f64, 0.0f64);
     let (mut steps_default, mut steps_loose, mut compared) = (0u64, 0u64, 0usize);
     for p in problems(500) {
         for law in [LawId::Newton, LawId::Poisson, LawId::Energetic] {
             let (Ok(d), Ok(f), Ok(l), Ok(n)) = (
-                law.resolve3(&p),
-                law.resolve3_with(&p, &fine),
-                law.resolve3_with(&p, &loose),
-                law.resolve3_with(&p, &nan),
+                law.resolve(&p),
+                law.resolve_with(&p, &fine),
+                law.resolve_with(&p, &loose),
+                law.resolve_with(&p, &nan),
             ) else {
                 continue;
             };

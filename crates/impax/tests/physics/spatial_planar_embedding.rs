@@ -211,7 +211,7 @@ fn planar_problems_embedded_in_3d_agree_with_the_planar_closed_form_for_all_five
                         let p3 =
                             spatial::ContactProblem::from_planar(p, *w22).expect("valid embedding");
                         for (li, law) in LAWS.iter().enumerate() {
-                            match (law.resolve(p), law.resolve3(&p3)) {
+                            match (law.resolve(p), law.resolve(&p3)) {
                                 (Ok(a), Ok(b)) => match compare(p, &a, &b) {
                                     Ok(devs) => {
                                         for (j, &d) in devs.iter().enumerate() {

@@ -192,7 +192,7 @@ fn gain_bound(p: &ContactProblem, o: &Outcome) -> f64 {
 /// The checks made on every `energetic` resolution.
 fn check_energetic(p: &ContactProblem) -> Result<(), TestCaseError> {
     let o = LawId::Energetic
-        .resolve3(p)
+        .resolve(p)
         .map_err(|b| TestCaseError::fail(format!("energetic broke down ({b}) for {p:?}")))?;
     prop_assert!(
         o.energy_change <= gain_bound(p, &o),
@@ -301,7 +301,7 @@ proptest! {
     #[test]
     fn energy_identity_and_work_signs_for_every_law(p in problem()) {
         for law in LAWS {
-            let Ok(o) = law.resolve3(&p) else {
+            let Ok(o) = law.resolve(&p) else {
                 prop_assert!(!law.is_darboux_keller(), "{law} broke down for {p:?}");
                 continue;
             };
@@ -316,7 +316,7 @@ proptest! {
         let q = p.rotated(theta).expect("a rotated valid problem is valid");
         let (s, c) = theta.sin_cos();
         for law in LAWS {
-            let (a, b) = match (law.resolve3(&p), law.resolve3(&q)) {
+            let (a, b) = match (law.resolve(&p), law.resolve(&q)) {
                 (Ok(a), Ok(b)) => (a, b),
                 (Err(a), Err(b)) => {
                     prop_assert_eq!(a.reason.id(), b.reason.id());
@@ -376,7 +376,7 @@ proptest! {
     ) {
         let vt = p.velocity().xy();
         for law in LAWS {
-            let o = law.resolve3(&p).map_err(|b| TestCaseError::fail(format!("{b} for {p:?}")))?;
+            let o = law.resolve(&p).map_err(|b| TestCaseError::fail(format!("{b} for {p:?}")))?;
             for ph in o.phases.as_slice() {
                 if let PhaseKind::Slip { from, to } = ph.kind {
                     prop_assert!(from == to, "{}: slip turned from {} to {} ({}) for {:?}",
@@ -402,7 +402,7 @@ proptest! {
     ) {
         let expect = -(1.0 + p.restitution()) * p.velocity().z / p.wnn();
         for law in LAWS {
-            let o = law.resolve3(&p).map_err(|b| TestCaseError::fail(format!("{b} for {p:?}")))?;
+            let o = law.resolve(&p).map_err(|b| TestCaseError::fail(format!("{b} for {p:?}")))?;
             prop_assert!(o.impulse.x == 0.0 && o.impulse.y == 0.0,
                 "{law}: p_t = {:?} with μ = 0 for {p:?}", o.impulse.xy());
             prop_assert!((o.impulse.z - expect).abs() <= 1e-12 * expect,
@@ -416,7 +416,7 @@ proptest! {
         p in problem_with(Pin { plastic: true, ..Pin::default() })
     ) {
         for law in LAWS {
-            let Ok(o) = law.resolve3(&p) else {
+            let Ok(o) = law.resolve(&p) else {
                 prop_assert!(!law.is_darboux_keller(), "{law} broke down for {p:?}");
                 continue;
             };
@@ -434,7 +434,7 @@ proptest! {
     #[test]
     fn marginal_stick_resolves(p in marginal_problem()) {
         for law in [LawId::Newton, LawId::Poisson, LawId::Energetic] {
-            let o = law.resolve3(&p).map_err(|b| TestCaseError::fail(format!("{law}: {b} for {p:?}")))?;
+            let o = law.resolve(&p).map_err(|b| TestCaseError::fail(format!("{law}: {b} for {p:?}")))?;
             let pc = o.compression_impulse;
             prop_assert!(pc.is_some_and(|pc| (pc - o.impulse.z).abs() <= 1e-12 * o.impulse.norm()),
                 "{law}: p_n = {} and compression impulse {pc:?} for {p:?}", o.impulse.z);
@@ -446,9 +446,9 @@ proptest! {
     fn uncoupled_darboux_keller_laws_coincide(
         p in problem_with(Pin { uncoupled: true, ..Pin::default() })
     ) {
-        let n = LawId::Newton.resolve3(&p).map_err(|b| TestCaseError::fail(format!("{b}")))?;
+        let n = LawId::Newton.resolve(&p).map_err(|b| TestCaseError::fail(format!("{b}")))?;
         for law in [LawId::Poisson, LawId::Energetic] {
-            let o = law.resolve3(&p).map_err(|b| TestCaseError::fail(format!("{b}")))?;
+            let o = law.resolve(&p).map_err(|b| TestCaseError::fail(format!("{b}")))?;
             prop_assert!((o.impulse - n.impulse).norm() <= 1e-9 * n.impulse.norm(),
                 "{law}: {:?} vs newton {:?} for {p:?}", o.impulse, n.impulse);
         }

@@ -959,7 +959,7 @@ fn check(case: usize, problem: &ContactProblem, t: &mut Tally) {
     };
     for (li, law) in LAWS.iter().enumerate() {
         t.cases += 1;
-        let out = law.resolve3(problem);
+        let out = law.resolve(problem);
         let r = match (ends[li], out) {
             (Some(r), Ok(o)) => (r, o),
             (None, Err(b)) if b.reason.id() == "no-separation" => {

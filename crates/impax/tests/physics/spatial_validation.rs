@@ -239,7 +239,7 @@ fn no_law_panics_on_extreme_valid_problems() {
                         }
                     };
                     for law in LawId::ALL {
-                        let out = catch_unwind(AssertUnwindSafe(|| law.resolve3(&p)));
+                        let out = catch_unwind(AssertUnwindSafe(|| law.resolve(&p)));
                         match out {
                             Err(_) => failures.push(format!("{law} panicked on {p:?}")),
                             Ok(Ok(o)) => {

@@ -48,7 +48,7 @@ pub fn run(args: &ResolveArgs, k: usize, out: &mut Vec<u8>) -> CliResult<()> {
     let laws = laws(args, k, lcp::MAX_CONTACTS, &LawId::MULTI_CONTACT)?;
     let mut results: Vec<(LawId, MultiResolution)> = Vec::new();
     for &law in &laws {
-        results.push((law, law.resolve_multi(&problem)?));
+        results.push((law, law.resolve(&problem)?));
     }
     let text = if args.json {
         let doc = if args.law.len() == 1 {

@@ -57,7 +57,7 @@ fn spatial_entry(
             let detail = json::detail3(&o.detail);
             m.insert("detail".into(), detail);
             let hodograph = if law.is_darboux_keller() {
-                impax::spatial::laws::hodograph(problem, law)
+                impax::spatial::laws::hodograph(problem, law, &impax::law::Options::default())
                     .map(|pts| json!(pts))
                     .unwrap_or(Value::Null)
             } else {
@@ -97,7 +97,7 @@ fn spatial_entry(
 /// or `slip`), `slip_angle_deg` (slip only), `impulse`, `velocity_after`, `energy_change`.
 pub(crate) fn lcp_solutions(problem: &ContactProblem) -> Value {
     Value::Array(
-        impax::spatial::lcp::solutions(problem)
+        impax::spatial::laws::lcp::solutions(problem)
             .iter()
             .map(|s| {
                 let mut e = json!({
@@ -148,7 +148,7 @@ pub fn run(args: &ResolveArgs, out: &mut Vec<u8>) -> CliResult<()> {
                 .collect(),
         ),
     };
-    let results: Vec<_> = laws.iter().map(|&l| (l, l.resolve3(&problem))).collect();
+    let results: Vec<_> = laws.iter().map(|&l| (l, l.resolve(&problem))).collect();
     let text = if args.json {
         let doc = if args.law.len() == 1 {
             spatial_entry(&problem, results[0].0, &results[0].1, &rays_json)

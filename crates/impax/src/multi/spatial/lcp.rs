@@ -3,7 +3,7 @@
 //!
 //! The conditions are the planar law's ([`crate::multi::lcp`]; Anitescu & Potra 1997,
 //! Stewart & Trinkle 1996) with each tangential velocity a 2-vector and the cone circular
-//! (the one-contact spatial law is [`crate::spatial::lcp`]): with Newton's target
+//! (the one-contact spatial law is [`crate::spatial::laws::lcp`]): with Newton's target
 //! `b_j = max(−e_j v_nj⁻, 0)`,
 //!
 //! ```text
@@ -40,7 +40,7 @@
 //! contacts a further solution could be missed; if none is found the law breaks down with
 //! `no-solution`.
 //!
-//! With one contact this agrees with [`crate::spatial::lcp`] (tested).
+//! With one contact this agrees with [`crate::spatial::laws::lcp`] (tested).
 
 use super::outcome::{assemble, ContactPhase, ContactPhaseKind, ContactResult, LcpSolution};
 use super::outcome::{velocity_scale, MultiDetail};
@@ -327,7 +327,7 @@ fn solve_mode(s: &Setup, modes: &[Mode], thorough: bool) -> Vec<Candidate> {
         let block = impax_block(s, j);
         let vj = Vec3::new(s.v[3 * j], s.v[3 * j + 1], s.v[3 * j + 2]);
         if let Ok(one) = crate::spatial::ContactProblem::new(block, vj, s.mu[j], 0.0) {
-            for sol in crate::spatial::lcp::solutions(&one) {
+            for sol in crate::spatial::laws::lcp::solutions(&one) {
                 if let PhaseKind::Slip { to, .. } = sol.kind {
                     alone[j] = to;
                     break;

@@ -46,12 +46,27 @@ pub use outcome::{
 pub use problem::MultiProblem;
 
 use crate::error::{Error, Result};
-use crate::law::{Breakdown, LawId};
+use crate::law::{Breakdown, LawId, Options};
 
 /// Resolve a spatial `problem` with `law`: `lcp` (up to [`lcp::MAX_CONTACTS`] contacts),
 /// `sequential` and `lzb` (up to [`lzb::MAX_CONTACTS`]) for several contacts; with `K = 1`
 /// every spatial contact-space law (`lzb` is then `energetic`). Errors name the field `law`.
 pub fn resolve(law: LawId, problem: &MultiProblem) -> Result<MultiResolution> {
+    resolve_by(law, problem, &Options::default())
+}
+
+impl crate::law::Problem for MultiProblem {
+    type Resolution = Result<MultiResolution>;
+
+    /// [`resolve`] with the options `options` (the tolerance of a one-contact spatial law).
+    #[inline]
+    fn resolve_by(&self, law: LawId, options: &Options) -> Result<MultiResolution> {
+        resolve_by(law, self, options)
+    }
+}
+
+/// [`resolve`] with the options `options`.
+fn resolve_by(law: LawId, problem: &MultiProblem, options: &Options) -> Result<MultiResolution> {
     let k = problem.contacts();
     match law {
         LawId::Lcp if k > lcp::MAX_CONTACTS => Err(Error::Invalid {
@@ -83,7 +98,7 @@ pub fn resolve(law: LawId, problem: &MultiProblem) -> Result<MultiResolution> {
                     reason: format!("`{law}` has no spatial form"),
                 });
             }
-            Ok(crate::spatial::laws::resolve(run, &one)
+            Ok(crate::spatial::laws::resolve(run, &one, options)
                 .map(|o| {
                     let mut m = MultiOutcome::from_outcome(&o);
                     m.law = law;

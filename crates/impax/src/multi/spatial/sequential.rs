@@ -75,7 +75,8 @@ pub fn resolve(problem: &MultiProblem) -> MultiResolution {
                     law,
                     reason: BreakdownReason::Overflow,
                 })?;
-        let out = crate::spatial::laws::resolve(LawId::Energetic, &alone)
+        let out = LawId::Energetic
+            .resolve(&alone)
             .map_err(|b| Breakdown { law, ..b })?;
         let p = out.impulse;
         for (i, vi) in v.iter_mut().enumerate() {

@@ -169,3 +169,25 @@ impl BodyImpact {
         })
     }
 }
+
+impl crate::impact::Impact for BodyImpact {
+    type Problem = ContactProblem;
+    type Impulse = Vec2;
+    type Velocities = (BodyState, Option<BodyState>);
+
+    fn problem(&self, friction: f64, restitution: f64) -> Result<ContactProblem> {
+        BodyImpact::problem(self, friction, restitution)
+    }
+
+    fn velocities_after(&self, impulse: &Vec2) -> (BodyState, Option<BodyState>) {
+        self.apply(*impulse)
+    }
+
+    fn kinetic_energy(&self, (a, b): &(BodyState, Option<BodyState>)) -> f64 {
+        self.energy_of(a, b.as_ref()).total()
+    }
+
+    fn kinetic_energy_before(&self) -> f64 {
+        self.energy_before().total()
+    }
+}

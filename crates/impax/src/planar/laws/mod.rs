@@ -40,22 +40,19 @@ use crate::math::Vec2;
 
 pub use crate::law::energy::ENERGY_GAIN_ROUND_OFF;
 
-impl LawId {
-    /// Resolve a contact-space problem with this law.
-    ///
-    /// `smith-centre` needs a body's centre velocity, which contact space does not have: it
-    /// returns [`BreakdownReason::NeedsBody`]. Use
-    /// [`crate::planar::bodies::BodyImpact::resolve`] (or [`crate::planar::laws::Smith::centre`]).
-    /// `sequential` and `lzb` with one contact are `energetic`, its outcome (or breakdown)
-    /// labelled `sequential` or `lzb`.
+impl crate::law::Problem for ContactProblem {
+    type Resolution = Resolution;
+
+    /// The planar laws are exact: `options` changes nothing.
     #[inline]
-    pub fn resolve(self, problem: &ContactProblem) -> Resolution {
-        match self {
+    fn resolve_by(&self, law: LawId, _options: &crate::law::Options) -> Resolution {
+        let problem = self;
+        match law {
             LawId::Whittaker => Whittaker.resolve(problem),
             LawId::TwoPhase => TwoPhase.resolve(problem),
             LawId::Smith => Smith::SLIP.resolve(problem),
             LawId::SmithCentre => Err(Breakdown {
-                law: self,
+                law,
                 reason: BreakdownReason::NeedsBody,
             }),
             LawId::Brach => Brach.resolve(problem),

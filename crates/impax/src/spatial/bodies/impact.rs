@@ -110,7 +110,7 @@ impl BodyImpact {
         law: LawId,
         problem: &ContactProblem,
     ) -> std::result::Result<BodyOutcome, Breakdown> {
-        let outcome = law.resolve3(problem)?;
+        let outcome = law.resolve(problem)?;
         let p = outcome.impulse;
         let a = self.body.0.apply(&self.body.1, p);
         let b = self.other.map(|(body, s)| body.apply(&s, -p));
@@ -131,5 +131,34 @@ impl BodyImpact {
             body_energy_change: diff(ea1, ea0),
             other_energy_change: diff(eb1, eb0),
         })
+    }
+}
+
+impl crate::impact::Impact for BodyImpact {
+    type Problem = ContactProblem;
+    type Impulse = Vec3;
+    type Velocities = (BodyState, Option<BodyState>);
+
+    fn problem(&self, friction: f64, restitution: f64) -> Result<ContactProblem> {
+        BodyImpact::problem(self, friction, restitution)
+    }
+
+    fn velocities_after(&self, p: &Vec3) -> (BodyState, Option<BodyState>) {
+        let a = self.body.0.apply(&self.body.1, *p);
+        let b = self.other.map(|(body, s)| body.apply(&s, -*p));
+        (a, b)
+    }
+
+    fn kinetic_energy(&self, (a, b): &(BodyState, Option<BodyState>)) -> f64 {
+        let eb = match (&self.other, b) {
+            (Some((body, _)), Some(s)) => body.energy(s).total(),
+            _ => 0.0,
+        };
+        self.body.0.energy(a).total() + eb
+    }
+
+    fn kinetic_energy_before(&self) -> f64 {
+        let (a, b) = self.energy_before();
+        a.total() + b.total()
     }
 }

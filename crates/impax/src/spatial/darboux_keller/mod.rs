@@ -101,7 +101,7 @@ use self::events::Events;
 use self::state::{Point, Scales, SlipEnd};
 use super::outcome::{PhaseKind, Phases};
 use super::ContactProblem;
-use crate::law::BreakdownReason;
+use crate::law::{BreakdownReason, Options};
 use crate::math::{norm_of, Mat2, Vec3};
 #[cfg(doc)]
 use crate::spatial::resumption_direction;
@@ -125,46 +125,6 @@ pub enum Termination {
     /// restitution work is `e²` times the magnitude of the compression work,
     /// `W_n(p_f) = (1 − e²) W_c`.
     Energetic,
-}
-
-/// Default relative tolerance of the adaptive integration (per step, on the velocity,
-/// impulse and work scales of the problem). With it the integration agrees with an
-/// independent reference to better than 1e-10 relative (`tests/spatial_reference.rs`).
-pub const RTOL: f64 = 1e-12;
-
-/// Options of the spatial Darboux–Keller integration.
-///
-/// ```
-/// use impax::{LawId, spatial::{ContactProblem, SpatialOptions}};
-/// let p = ContactProblem::from_upper([2.0, 0.6, 0.3, 1.0, -0.2, 1.5], [0.3, 0.8, -1.0], 0.8, 0.7)
-///     .unwrap();
-/// let fine = LawId::Energetic.resolve3_with(&p, &SpatialOptions { rtol: 1e-13 }).unwrap();
-/// let default = LawId::Energetic.resolve3(&p).unwrap();
-/// assert!((fine.impulse - default.impulse).norm() < 1e-10 * default.impulse.norm());
-/// ```
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct SpatialOptions {
-    /// Relative tolerance per step (clamped to `[1e-14, 1e-4]`; NaN gives the default
-    /// [`RTOL`]).
-    pub rtol: f64,
-}
-
-impl Default for SpatialOptions {
-    fn default() -> Self {
-        SpatialOptions { rtol: RTOL }
-    }
-}
-
-impl SpatialOptions {
-    /// The tolerance actually used.
-    #[inline]
-    pub fn effective_rtol(&self) -> f64 {
-        if self.rtol.is_nan() {
-            RTOL
-        } else {
-            self.rtol.clamp(1e-14, 1e-4)
-        }
-    }
 }
 
 /// The result of the integration: the end `p_f` of the path and what happened on the way.
@@ -201,9 +161,9 @@ pub struct PathEnd {
 ///
 /// ```
 /// use impax::spatial::darboux_keller::{integrate, Termination};
-/// use impax::spatial::{ContactProblem, SpatialOptions};
+/// use impax::{law::Options, spatial::ContactProblem};
 /// let w = [2.0, 0.6, 0.3, 1.0, -0.2, 1.5];
-/// let opts = SpatialOptions::default();
+/// let opts = Options::default();
 /// // Without friction every termination is p_f = (1 + e) p_c with p_c = −v_n⁻/w_nn.
 /// let p = ContactProblem::from_upper(w, [0.3, 0.8, -1.0], 0.0, 0.5).unwrap();
 /// let end = integrate(&p, Termination::Newton, &opts, &mut |_, _| {}).unwrap();
@@ -230,7 +190,7 @@ pub struct PathEnd {
 pub fn integrate(
     problem: &ContactProblem,
     term: Termination,
-    opts: &SpatialOptions,
+    opts: &Options,
     observe: &mut impl FnMut(f64, Vec3),
 ) -> Result<PathEnd, BreakdownReason> {
     integrate_with(problem, term, opts, true, observe)
@@ -242,7 +202,7 @@ pub fn integrate(
 pub(crate) fn integrate_with(
     problem: &ContactProblem,
     term: Termination,
-    opts: &SpatialOptions,
+    opts: &Options,
     observing: bool,
     observe: &mut impl FnMut(f64, Vec3),
 ) -> Result<PathEnd, BreakdownReason> {
@@ -279,7 +239,7 @@ fn integrate_in_units(
     a: f64,
     b: f64,
     term: Termination,
-    opts: &SpatialOptions,
+    opts: &Options,
     observing: bool,
     observe: &mut dyn FnMut(f64, Vec3),
 ) -> Result<Integrated, BreakdownReason> {
@@ -323,7 +283,7 @@ const HUGE_SLIP: f64 = 2.907_354_897_182_427_6e135;
 fn integrate_scaled(
     problem: &ContactProblem,
     term: Termination,
-    opts: &SpatialOptions,
+    opts: &Options,
     observing: bool,
     observe: &mut impl FnMut(f64, Vec3),
 ) -> Result<Integrated, BreakdownReason> {

@@ -206,7 +206,8 @@ fn one_contact(problem: &MultiProblem) -> MultiResolution {
         law,
         reason: BreakdownReason::Overflow,
     })?;
-    let o = crate::spatial::laws::resolve(LawId::Energetic, &alone)
+    let o = LawId::Energetic
+        .resolve(&alone)
         .map_err(|b| Breakdown { law, ..b })?;
     let mut out = MultiOutcome::from_outcome(&o);
     out.law = law;

@@ -1,14 +1,28 @@
-//! The spatial laws: `whittaker` and `brach` in closed form, `newton`, `poisson` and
-//! `energetic` by the Darboux–Keller integration ([`super::darboux_keller`]), `lcp` by
-//! [`super::lcp`].
+//! The spatial laws, one file each as in the plane: `whittaker` and `brach` in closed form,
+//! `newton`, `poisson` and `energetic` by the Darboux–Keller integration
+//! ([`super::darboux_keller`]), `lcp` with the circular cone; [`resolve`] dispatches by id.
 
-use super::darboux_keller::{integrate_with, PathEnd, SpatialOptions, Termination};
+pub mod brach;
+pub mod energetic;
+pub mod lcp;
+pub mod newton;
+pub mod poisson;
+pub mod whittaker;
+
+pub use crate::law::ImpactLaw;
+pub use brach::Brach;
+pub use energetic::Energetic;
+pub use lcp::Lcp;
+pub use newton::Newton;
+pub use poisson::Poisson;
+pub use whittaker::Whittaker;
+
+use super::darboux_keller::{integrate_with, PathEnd, Termination};
 use super::outcome::{LawDetail, Outcome, PhaseKind, Phases, Resolution};
 use super::ContactProblem;
 use crate::law::energy::ENERGY_GAIN_ROUND_OFF;
-use crate::law::LawId;
-use crate::law::{Breakdown, BreakdownReason, Inconsistency, Verdict, WorkSplit};
-use crate::math::{norm_of, Vec2, Vec3};
+use crate::law::{Breakdown, BreakdownReason, Inconsistency, LawId, Options, Verdict, WorkSplit};
+use crate::math::{Vec2, Vec3};
 
 /// Whether `ΔT` is a real gain: it exceeds the round-off of its evaluation
 /// `½ (v⁻ + v⁺)·p`, `16 ε Σ_i (|v⁻_i| + |v⁺_i| + (|W| |p|)_i) |p_i|` (the problem's own
@@ -110,7 +124,7 @@ pub(crate) fn straight(
 }
 
 /// `p_n = −(1+e) v_n⁻ / (w_nn + w_tn·k)` for a straight path with ratio `k`.
-fn newton_pn(problem: &ContactProblem, law: LawId, k: Vec2) -> Result<f64, Breakdown> {
+pub(crate) fn newton_pn(problem: &ContactProblem, law: LawId, k: Vec2) -> Result<f64, Breakdown> {
     let den = problem.wnn() + problem.wtn().dot(&k);
     let pf = -(1.0 + problem.restitution()) * problem.velocity().z / den;
     if den > 0.0 && pf.is_finite() {
@@ -123,121 +137,12 @@ fn newton_pn(problem: &ContactProblem, law: LawId, k: Vec2) -> Result<f64, Break
     }
 }
 
-/// `whittaker` in 3D: Coulomb friction on the total impulse, along the initial slip
-/// direction `ŝ0`: `p = p_n (−μ ŝ0, 1)`, `p_n = −(1+e) v_n⁻ / (w_nn − μ w_tn·ŝ0)`.
-pub fn whittaker(problem: &ContactProblem) -> Resolution {
-    let law = LawId::Whittaker;
-    let vt = problem.velocity().xy();
-    let sigma = norm_of(vt);
-    let (s0, kind) = if sigma > 0.0 {
-        let s = vt / sigma;
-        let a = s.y.atan2(s.x);
-        (s, PhaseKind::Slip { from: a, to: a })
-    } else {
-        (Vec2::zeros(), PhaseKind::NoSlip)
-    };
-    let k = -problem.friction() * s0;
-    let pf = newton_pn(problem, law, k)?;
-    let end = straight(problem, law, kind, k, pf);
-    let slip_after = end.velocity.xy().dot(&s0);
-    let inconsistency = (sigma > 0.0 && problem.friction() > 0.0 && slip_after < 0.0)
-        .then_some(Inconsistency::SlipReversed { slip_after });
-    Ok(assemble(problem, law, &end, LawDetail::None, inconsistency))
-}
-
-/// `brach` in 3D: the impulse `p* = W⁻¹ (−v_t⁻, −(1+e) v_n⁻)` that leaves no tangential
-/// velocity, used if its ratio `|p*_t|/p*_n ≤ μ`; otherwise the ratio is capped to the cone
-/// along `p*_t`: `p_t = μ p_n p*_t/|p*_t|` with Newton's restitution.
-pub fn brach(problem: &ContactProblem) -> Resolution {
-    let law = LawId::Brach;
-    let v = problem.velocity();
-    let mu = problem.friction();
-    let target = Vec3::new(-v.x, -v.y, -(1.0 + problem.restitution()) * v.z);
-    let star = problem
-        .w()
-        .cholesky()
-        .map(|c| c.solve(&target))
-        .ok_or(Breakdown {
-            law,
-            reason: BreakdownReason::NoSeparation,
-        })?;
-    let pt = star.xy();
-    let sticking = star.z > 0.0;
-    let ratio = if sticking {
-        norm_of(pt) / star.z
-    } else {
-        f64::INFINITY
-    };
-    if sticking && ratio <= mu {
-        let mut end = straight(problem, law, PhaseKind::Stick, pt / star.z, star.z);
-        end.velocity.x = 0.0;
-        end.velocity.y = 0.0;
-        return Ok(assemble(
-            problem,
-            law,
-            &end,
-            LawDetail::Brach {
-                ratio: Some(ratio),
-                capped: false,
-            },
-            None,
-        ));
-    }
-    let dir = if norm_of(pt) > 0.0 {
-        pt / norm_of(pt)
-    } else {
-        Vec2::zeros()
-    };
-    let k = mu * dir;
-    let pf = newton_pn(problem, law, k)?;
-    let a = (-dir.y).atan2(-dir.x);
-    let kind = if mu > 0.0 && norm_of(pt) > 0.0 {
-        PhaseKind::Slip { from: a, to: a }
-    } else if v.x != 0.0 || v.y != 0.0 {
-        // Frictionless: label by the initial slip, as the planar law does.
-        let a0 = v.y.atan2(v.x);
-        PhaseKind::Slip { from: a0, to: a0 }
-    } else {
-        PhaseKind::NoSlip
-    };
-    let end = straight(problem, law, kind, k, pf);
-    Ok(assemble(
-        problem,
-        law,
-        &end,
-        LawDetail::Brach {
-            ratio: sticking.then_some(ratio),
-            capped: true,
-        },
-        None,
-    ))
-}
-
-/// `newton`, `poisson` or `energetic` in 3D by the Darboux–Keller integration, with an
-/// observer called at every accepted point `(p_n, v)` (for hodographs).
-pub fn darboux_keller_observed(
+/// The Darboux–Keller laws with an observer called at every accepted point `(p_n, v)` (for
+/// hodographs), told whether it does anything.
+pub(crate) fn darboux_keller(
     problem: &ContactProblem,
     law: LawId,
-    observe: &mut impl FnMut(f64, Vec3),
-) -> Resolution {
-    darboux_keller_observed_with(problem, law, &SpatialOptions::default(), observe)
-}
-
-/// [`darboux_keller_observed`] with the integration options `opts`.
-pub fn darboux_keller_observed_with(
-    problem: &ContactProblem,
-    law: LawId,
-    opts: &SpatialOptions,
-    observe: &mut impl FnMut(f64, Vec3),
-) -> Resolution {
-    darboux_keller(problem, law, opts, true, observe)
-}
-
-/// The Darboux–Keller laws, told whether `observe` does anything.
-fn darboux_keller(
-    problem: &ContactProblem,
-    law: LawId,
-    opts: &SpatialOptions,
+    opts: &Options,
     observing: bool,
     observe: &mut impl FnMut(f64, Vec3),
 ) -> Resolution {
@@ -280,14 +185,9 @@ pub(crate) fn still_approaching(problem: &ContactProblem, end: &PathEnd) -> Opti
     })
 }
 
-/// Resolve a spatial problem with a law (`two-phase`, `smith` and `smith-centre` are planar
-/// only and break down with [`BreakdownReason::PlanarOnly`]).
-pub fn resolve(law: LawId, problem: &ContactProblem) -> Resolution {
-    resolve_with(law, problem, &SpatialOptions::default())
-}
-
-/// [`resolve`] with the options `opts` of the Darboux–Keller integration (the other laws
-/// ignore them).
+/// Resolve a spatial problem with a law and the options `opts` (the tolerance of the
+/// Darboux–Keller integration; the other laws ignore them). `two-phase`, `smith` and
+/// `smith-centre` are planar only and break down with [`BreakdownReason::PlanarOnly`].
 ///
 /// Every law is resolved in the problem's canonical units (`|v_n⁻|` and `w_nn` in `[1, 2)`,
 /// powers of two: exact) and the result scaled back: invariant under scaling of the
@@ -297,9 +197,9 @@ pub fn resolve(law: LawId, problem: &ContactProblem) -> Resolution {
 /// `sequential` (the binary-impact rule of several contacts, [`crate::multi::sequential`])
 /// and `lzb` (the multiple-impact law of Liu, Zhao & Brogliato, [`crate::multi::lzb`]) with
 /// one contact are `energetic`, its outcome or breakdown labelled `sequential` or `lzb`.
-pub fn resolve_with(law: LawId, problem: &ContactProblem, opts: &SpatialOptions) -> Resolution {
+pub fn resolve(law: LawId, problem: &ContactProblem, opts: &Options) -> Resolution {
     if matches!(law, LawId::Sequential | LawId::Lzb) {
-        return match resolve_with(LawId::Energetic, problem, opts) {
+        return match resolve(LawId::Energetic, problem, opts) {
             Ok(o) => Ok(Outcome { law, ..o }),
             Err(b) => Err(Breakdown { law, ..b }),
         };
@@ -328,15 +228,15 @@ pub fn resolve_with(law: LawId, problem: &ContactProblem, opts: &SpatialOptions)
     }
 }
 
-/// [`resolve_with`] in the units of `problem` as given.
-fn resolve_in_units(law: LawId, problem: &ContactProblem, opts: &SpatialOptions) -> Resolution {
+/// [`resolve`] in the units of `problem` as given.
+fn resolve_in_units(law: LawId, problem: &ContactProblem, opts: &Options) -> Resolution {
     let out = match law {
-        LawId::Whittaker => whittaker(problem),
-        LawId::Brach => brach(problem),
+        LawId::Whittaker => whittaker::in_units(problem),
+        LawId::Brach => brach::in_units(problem),
         LawId::Newton | LawId::Poisson | LawId::Energetic => {
             darboux_keller(problem, law, opts, false, &mut |_, _| {})
         }
-        LawId::Lcp => super::lcp::resolve(problem),
+        LawId::Lcp => lcp::in_units(problem),
         LawId::Sequential | LawId::Lzb => resolve_in_units(LawId::Energetic, problem, opts)
             .map(|o| Outcome { law, ..o })
             .map_err(|b| Breakdown { law, ..b }),
@@ -357,27 +257,23 @@ fn resolve_in_units(law: LawId, problem: &ContactProblem, opts: &SpatialOptions)
 
 /// The slip-velocity path of a Darboux–Keller law, sampled at every accepted integration
 /// point: `(p_n, v_t1, v_t2, v_n)` (for plots of the hodograph).
-pub fn hodograph(problem: &ContactProblem, law: LawId) -> Result<Vec<[f64; 4]>, Breakdown> {
+pub fn hodograph(
+    problem: &ContactProblem,
+    law: LawId,
+    opts: &Options,
+) -> Result<Vec<[f64; 4]>, Breakdown> {
     let mut pts = Vec::new();
-    darboux_keller_observed(problem, law, &mut |p, v| pts.push([p, v.x, v.y, v.z]))?;
+    darboux_keller(problem, law, opts, true, &mut |p, v| {
+        pts.push([p, v.x, v.y, v.z])
+    })?;
     Ok(pts)
 }
 
-impl LawId {
-    /// Resolve a spatial (3D) contact-space problem with this law.
-    #[inline]
-    pub fn resolve3(self, problem: &crate::spatial::ContactProblem) -> crate::spatial::Resolution {
-        crate::spatial::laws::resolve(self, problem)
-    }
+impl crate::law::Problem for ContactProblem {
+    type Resolution = Resolution;
 
-    /// Resolve a spatial (3D) contact-space problem with this law and the options of the
-    /// Darboux–Keller integration (tolerance).
     #[inline]
-    pub fn resolve3_with(
-        self,
-        problem: &crate::spatial::ContactProblem,
-        opts: &crate::spatial::SpatialOptions,
-    ) -> crate::spatial::Resolution {
-        crate::spatial::laws::resolve_with(self, problem, opts)
+    fn resolve_by(&self, law: LawId, options: &Options) -> Resolution {
+        resolve(law, self, options)
     }
 }

@@ -37,23 +37,21 @@
 //! problem and have exactly one solution, the spatial conditions are not (eliminating `p_n`
 //! tilts the cone) and an anisotropic `W` with tangential–normal coupling can give up to
 //! three solutions (stick and two slips, or three slips). All are returned by [`solutions`];
-//! [`resolve`] reports the one of least kinetic energy after and flags
+//! [`Lcp`] reports the one of least kinetic energy after and flags
 //! [`Inconsistency::MultipleSolutions`]. When `w_tn = 0` the problem is again convex and the
 //! solution unique. A planar problem embedded in 3D has its solutions at `θ ∈ {0, π}` (or
 //! stick) and agrees with the planar law.
 
-use super::laws::{assemble, straight};
-use super::outcome::{LawDetail, PhaseKind, Resolution};
-use super::ContactProblem;
-use crate::law::LawId;
-use crate::law::{Breakdown, BreakdownReason, Inconsistency};
+use super::{assemble, straight};
+use crate::law::{Breakdown, BreakdownReason, ImpactLaw, Inconsistency, LawId, Options};
 use crate::math::{cross2, norm3_of, norm_of, Vec2, Vec3};
 use crate::numerics::roots::newton_bisection;
+use crate::spatial::{ContactProblem, LawDetail, Outcome, PhaseKind, Resolution};
 use std::f64::consts::TAU;
 
 /// One solution of the spatial complementarity conditions.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct LcpSolution3 {
+pub struct LcpSolution {
     /// `Stick`, or `Slip { from: θ, to: θ }` with `θ` the direction of the final slip.
     pub kind: PhaseKind,
     /// Impulse on body A, `(p_t1, p_t2, p_n)`.
@@ -201,7 +199,7 @@ fn slip_angles(trig: &Trig2) -> Vec<f64> {
 /// coupled `W` (`D = 5e-9` beside `w_nn = 2e5`, where `N/D` was 6 % off and the true
 /// solution was rejected with `σ < 0`), and `ŝ × u = ŝ × g = 0` for a slip along `u` on
 /// an invariant ray. The one of smaller estimated relative error is used.
-fn slip_candidate(problem: &ContactProblem, n: f64, theta: f64) -> Option<LcpSolution3> {
+fn slip_candidate(problem: &ContactProblem, n: f64, theta: f64) -> Option<LcpSolution> {
     let (sn, cs) = theta.sin_cos();
     let s = Vec2::new(cs, sn);
     let sp = Vec2::new(-sn, cs);
@@ -243,7 +241,7 @@ fn slip_candidate(problem: &ContactProblem, n: f64, theta: f64) -> Option<LcpSol
     // The conditions hold exactly for what is reported: v_t⁺ = σ ŝ against p_t = −μ p_n ŝ,
     // and v_n⁺ = −e v_n⁻ (v⁻ + W p meets them to the round-off of its terms).
     let velocity_after = Vec3::new(sigma * s.x, sigma * s.y, newton_target(problem));
-    Some(LcpSolution3 {
+    Some(LcpSolution {
         kind: PhaseKind::Slip {
             from: theta,
             to: theta,
@@ -263,14 +261,14 @@ fn newton_target(problem: &ContactProblem) -> f64 {
 }
 
 /// The sticking candidate: `W p = (−u, N)`, if `p_n ≥ 0` and `|p_t| ≤ μ p_n`.
-fn stick(problem: &ContactProblem, n: f64) -> Option<LcpSolution3> {
+fn stick(problem: &ContactProblem, n: f64) -> Option<LcpSolution> {
     let v = problem.velocity();
     let p = problem.w().cholesky()?.solve(&Vec3::new(-v.x, -v.y, n));
     if !(p.z >= 0.0 && norm_of(p.xy()) <= problem.friction() * p.z) {
         return None;
     }
     let velocity_after = Vec3::new(0.0, 0.0, newton_target(problem));
-    Some(LcpSolution3 {
+    Some(LcpSolution {
         kind: PhaseKind::Stick,
         impulse: p,
         velocity_after,
@@ -283,13 +281,13 @@ fn stick(problem: &ContactProblem, n: f64) -> Option<LcpSolution3> {
 /// impulse to 1e-10 (the stick/slip boundary, `σ → 0`) is not repeated.
 ///
 /// ```
-/// use impax::spatial::{ContactProblem, lcp};
+/// use impax::spatial::{laws::lcp, ContactProblem};
 /// // A sphere (W = diag(7/2, 7/2, 1)): one solution.
 /// let p = ContactProblem::from_upper([3.5, 0.0, 0.0, 3.5, 0.0, 1.0], [0.5, 0.2, -1.0], 0.3, 0.5)
 ///     .unwrap();
 /// assert_eq!(lcp::solutions(&p).len(), 1);
 /// ```
-pub fn solutions(problem: &ContactProblem) -> Vec<LcpSolution3> {
+pub fn solutions(problem: &ContactProblem) -> Vec<LcpSolution> {
     // In the problem's canonical units (powers of two, exact; the same as `resolve`'s), the
     // solutions scaled back.
     let Some((scaled, u)) = problem.canonical_units() else {
@@ -297,7 +295,7 @@ pub fn solutions(problem: &ContactProblem) -> Vec<LcpSolution3> {
     };
     solutions_in_units(&scaled)
         .into_iter()
-        .map(|s| LcpSolution3 {
+        .map(|s| LcpSolution {
             impulse: s.impulse.map(|x| u.impulse(x)),
             velocity_after: s.velocity_after.map(|x| u.velocity(x)),
             energy_change: u.work(s.energy_change),
@@ -307,9 +305,9 @@ pub fn solutions(problem: &ContactProblem) -> Vec<LcpSolution3> {
 }
 
 /// [`solutions`] in the units of `problem` as given.
-fn solutions_in_units(problem: &ContactProblem) -> Vec<LcpSolution3> {
+fn solutions_in_units(problem: &ContactProblem) -> Vec<LcpSolution> {
     let n = -(1.0 + problem.restitution()) * problem.velocity().z;
-    let mut all: Vec<LcpSolution3> = stick(problem, n).into_iter().collect();
+    let mut all: Vec<LcpSolution> = stick(problem, n).into_iter().collect();
     if problem.friction() == 0.0 {
         // Frictionless: p = (0, 0, N/c) whatever the slip.
         let impulse = Vec3::new(0.0, 0.0, n / problem.wnn());
@@ -317,7 +315,7 @@ fn solutions_in_units(problem: &ContactProblem) -> Vec<LcpSolution3> {
         velocity_after.z = newton_target(problem);
         let t = velocity_after.xy();
         let a = t.y.atan2(t.x);
-        return vec![LcpSolution3 {
+        return vec![LcpSolution {
             kind: PhaseKind::Slip { from: a, to: a },
             impulse,
             velocity_after,
@@ -336,7 +334,7 @@ fn solutions_in_units(problem: &ContactProblem) -> Vec<LcpSolution3> {
                 } else {
                     theta
                 };
-                all.push(LcpSolution3 {
+                all.push(LcpSolution {
                     kind: PhaseKind::Slip {
                         from: theta,
                         to: theta,
@@ -350,10 +348,29 @@ fn solutions_in_units(problem: &ContactProblem) -> Vec<LcpSolution3> {
     all
 }
 
-/// `lcp` in 3D: the solution of least kinetic energy after; several solutions are flagged
-/// with [`Inconsistency::MultipleSolutions`], none (not observed) is a
-/// [`BreakdownReason::NoSolution`].
-pub fn resolve(problem: &ContactProblem) -> Resolution {
+/// `lcp` in 3D (the module docs): the solution of least kinetic energy after; several
+/// solutions are flagged with [`Inconsistency::MultipleSolutions`], none (not observed) is a
+/// [`BreakdownReason::NoSolution`]. [`ImpactLaw::resolve`] works in the problem's canonical
+/// units and scales back ([`super::resolve`]); every solution is in [`solutions`].
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Lcp;
+
+impl ImpactLaw for Lcp {
+    type Problem = ContactProblem;
+    type Outcome = Outcome;
+    type Brief = Outcome;
+
+    fn id(&self) -> LawId {
+        LawId::Lcp
+    }
+
+    fn resolve(&self, problem: &ContactProblem) -> Resolution {
+        super::resolve(LawId::Lcp, problem, &Options::default())
+    }
+}
+
+/// [`Lcp`] in the units of `problem` as given.
+pub(super) fn in_units(problem: &ContactProblem) -> Resolution {
     let law = LawId::Lcp;
     let all = solutions(problem);
     let Some(best) = all.first() else {
