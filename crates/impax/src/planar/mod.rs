@@ -5,7 +5,7 @@
 pub mod bodies;
 pub mod laws;
 mod outcome;
-pub mod path;
+pub(crate) mod path;
 mod problem;
 
 // The shared vocabulary, also at `impax::law` (re-exported here, where it always was).

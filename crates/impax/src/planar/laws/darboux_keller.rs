@@ -108,16 +108,6 @@ impl DarbouxKellerPath {
         (self.halt > 0.0 && self.halt.is_finite()).then_some(self.halt)
     }
 
-    /// The first piece (initial slip; zero length without initial slip).
-    pub fn first(&self) -> &Piece {
-        &self.first
-    }
-
-    /// The second piece (stick or reversed slip; absent if the slip never halts).
-    pub fn second(&self) -> &Piece {
-        &self.second
-    }
-
     /// First `p_n` with `v_n(p_n) = target`, `target ≥ v_n⁻`. The second piece, and the
     /// first when it never halts, have `dv_n/dp_n > 0`, so it always exists.
     #[inline]

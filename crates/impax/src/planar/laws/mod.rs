@@ -12,7 +12,7 @@
 //! | `lcp` | [`lcp`] | engines' velocity-level LCP: `v_n⁺ = −e v_n⁻`, friction against `v_t⁺` |
 
 pub mod brach;
-pub mod darboux_keller;
+pub(crate) mod darboux_keller;
 pub mod energetic;
 pub mod lcp;
 pub mod newton;

@@ -56,7 +56,7 @@
 //!    `(λ' I + μ W_tt) ŝ = w_tn`, `λ' > 0` ([`resumption_direction`]): straight, linear.
 //!
 //! Events (module `events`): the end of compression (`v_n = 0`), the termination of the law
-//! ([`Termination`]), and a second compression (jamb: `v_n` falls back to zero after
+//! (`Termination`), and a second compression (jamb: `v_n` falls back to zero after
 //! compression ended; reported; for `poisson` every return to compression and its end).
 //! Each is located on the discrete solution by re-stepping from the step's start (module
 //! `step`: Illinois iteration, seeded by the seventh-order dense output of the step and
@@ -66,7 +66,7 @@
 //!
 //! ## Layout
 //!
-//! This module runs the stages in order ([`integrate`]); each stage is a file:
+//! This module runs the stages in order (`integrate_with`); each stage is a file:
 //!
 //! | file | what it holds |
 //! |---|---|
@@ -110,7 +110,7 @@ use crate::spatial::resumption_direction;
 /// ends, `p_f`, given the coefficient of restitution `e` (`p_c` the end of compression,
 /// `v_n(p_c) = 0`; `W_n = ∫ v_n dp_n` the normal work, `W_c = W_n(p_c)`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Termination {
+pub(crate) enum Termination {
     /// Newton's kinematic restitution (Newton 1686; Keller 1986): `v_n(p_f) = −e v_n⁻`.
     Newton,
     /// Poisson's kinetic restitution: the impulse of restitution is `e` times that of
@@ -129,7 +129,7 @@ pub enum Termination {
 
 /// The result of the integration: the end `p_f` of the path and what happened on the way.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct PathEnd {
+pub(crate) struct PathEnd {
     /// Impulse at the end, `(p_t, p_n)`.
     pub impulse: Vec3,
     /// Contact velocity at the end.
@@ -159,24 +159,7 @@ pub struct PathEnd {
 /// with the options `opts`, calling `observe(p_n, v)` at every accepted point (for
 /// hodographs).
 ///
-/// ```
-/// use impax::spatial::darboux_keller::{integrate, Termination};
-/// use impax::{law::Options, spatial::ContactProblem};
-/// let w = [2.0, 0.6, 0.3, 1.0, -0.2, 1.5];
-/// let opts = Options::default();
-/// // Without friction every termination is p_f = (1 + e) p_c with p_c = −v_n⁻/w_nn.
-/// let p = ContactProblem::from_upper(w, [0.3, 0.8, -1.0], 0.0, 0.5).unwrap();
-/// let end = integrate(&p, Termination::Newton, &opts, &mut |_, _| {}).unwrap();
-/// assert!((end.impulse.z - 1.5 / 1.5).abs() < 1e-15);
-/// // With friction, Stronge's: W_n = (1 − e²) W_c at the end, and the energy change
-/// // ΔT = W_n + W_t is a loss.
-/// let p = ContactProblem::from_upper(w, [0.3, 0.8, -1.0], 0.8, 0.7).unwrap();
-/// let mut points = 0;
-/// let end = integrate(&p, Termination::Energetic, &opts, &mut |_, _| points += 1).unwrap();
-/// let (wc, wn) = (end.compression_work, end.normal_work);
-/// assert!((wn - (1.0 - 0.7 * 0.7) * wc).abs() < 1e-12 * wc.abs());
-/// assert!(wn + end.friction_work < 0.0 && points > 2);
-/// ```
+/// (Checked in the unit test `integrate_frictionless_and_energetic` below.)
 ///
 /// The equations are homogeneous: with `v' = a v` and `W' = b W` the path is the same with
 /// `p' = (a/b) p` and works `W' = (a²/b) W`. The path is integrated in units where `|v_n⁻|`
@@ -187,16 +170,8 @@ pub struct PathEnd {
 /// velocity, impulse, normal and friction work), so a slip hundreds of orders of magnitude
 /// above or below the normal velocity neither swamps nor is swamped by it; a slip too fast
 /// for the impact to turn is the straight path in closed form.
-pub fn integrate(
-    problem: &ContactProblem,
-    term: Termination,
-    opts: &Options,
-    observe: &mut impl FnMut(f64, Vec3),
-) -> Result<PathEnd, BreakdownReason> {
-    integrate_with(problem, term, opts, true, observe)
-}
-
-/// [`integrate`], told whether `observe` does anything: when it does not (`observing`
+///
+/// Told whether `observe` does anything: when it does not (`observing`
 /// false), the points inside a panel of the angle variable carry `p_n` only where an event
 /// reads it, and the cumulative integral for it is formed only there.
 pub(crate) fn integrate_with(
@@ -368,5 +343,33 @@ fn finish(pt: &Point, ev: &Events, phases: Phases, slip_halt: Option<f64>, steps
         slip_halt: slip_halt.filter(|&s| s < pt.p),
         second_compression: ev.second.filter(|&s| s < pt.p),
         steps,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Without friction every termination is `p_f = (1 + e) p_c`; with friction Stronge's
+    /// `W_n = (1 − e²) W_c` holds at the end and `ΔT = W_n + W_t` is a loss.
+    #[test]
+    fn integrate_frictionless_and_energetic() {
+        let w = [2.0, 0.6, 0.3, 1.0, -0.2, 1.5];
+        let opts = Options::default();
+        // Without friction every termination is p_f = (1 + e) p_c with p_c = −v_n⁻/w_nn.
+        let p = ContactProblem::from_upper(w, [0.3, 0.8, -1.0], 0.0, 0.5).unwrap();
+        let end = integrate_with(&p, Termination::Newton, &opts, true, &mut |_, _| {}).unwrap();
+        assert!((end.impulse.z - 1.5 / 1.5).abs() < 1e-15);
+        // With friction, Stronge's: W_n = (1 − e²) W_c at the end, and the energy change
+        // ΔT = W_n + W_t is a loss.
+        let p = ContactProblem::from_upper(w, [0.3, 0.8, -1.0], 0.8, 0.7).unwrap();
+        let mut points = 0;
+        let end = integrate_with(&p, Termination::Energetic, &opts, true, &mut |_, _| {
+            points += 1
+        })
+        .unwrap();
+        let (wc, wn) = (end.compression_work, end.normal_work);
+        assert!((wn - (1.0 - 0.7 * 0.7) * wc).abs() < 1e-12 * wc.abs());
+        assert!(wn + end.friction_work < 0.0 && points > 2);
     }
 }
