@@ -28,6 +28,7 @@ pub mod builtin;
 pub mod conserved;
 pub mod dynamics;
 pub mod impact;
+pub mod linkage;
 
 use crate::math::Vec2;
 pub use num_dual::{Dual64, DualNum, HyperDual64};
