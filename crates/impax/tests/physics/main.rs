@@ -17,6 +17,8 @@ mod multi_lzb;
 mod multi_scenarios;
 mod multi_spatial;
 mod multi_spatial_lzb;
+mod multibody;
+mod multibody_models;
 mod paper_liu2012;
 mod properties;
 mod regression_brach_frictionless;
