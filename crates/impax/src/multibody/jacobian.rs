@@ -8,7 +8,7 @@
 //! contact frame's, and an impact reduces to contact space (theory §1):
 //! `W = J M⁻¹ Jᵀ` (3 × 3), `v⁻ = J u⁻`.
 
-use super::crba::{crba, factor, solve};
+use super::crba::{crba, factor, solve_l, solve_lt};
 use super::kinematics::contact_position;
 use super::model::Model;
 use super::workspace::Workspace;
@@ -79,14 +79,15 @@ pub struct ContactSpace {
     /// `M⁻¹ Jᵀ` (nv × 3, stored as its transpose `J M⁻¹`, 3 × nv): the change of `u` per unit
     /// impulse along each contact axis.
     pub response: Matrix3xX<f64>,
-    /// `W = J M⁻¹ Jᵀ`, symmetrised.
+    /// `W = J M⁻¹ Jᵀ`.
     pub w: Mat3,
     /// `v⁻ = J u`.
     pub velocity: Vec3,
 }
 
 /// Reduce contact `k` to contact space at the workspace's configuration and the speeds `u`:
-/// the mass matrix by [`crba`], its Cholesky factor, `M⁻¹ Jᵀ` by three solves.
+/// the mass matrix by [`crba`], its factor `M = Lᵀ L` ([`factor`]), `Z = L⁻ᵀ Jᵀ`,
+/// `W = Zᵀ Z` and `M⁻¹ Jᵀ = L⁻¹ Z` by sweeps along the tree.
 ///
 /// # Errors
 /// No such contact; `u` of the wrong length or not finite; `M` singular ([`factor`]).
@@ -101,20 +102,29 @@ pub fn contact_space(
     crba(model, ws);
     factor(model, ws)?;
     let n = model.nv();
-    let mut response = Matrix3xX::zeros(n);
+    // M = Lᵀ L: Z = L⁻ᵀ Jᵀ (nonzero only on the contact body's support), W = Zᵀ Z (symmetric
+    // positive semidefinite by construction), M⁻¹ Jᵀ = L⁻¹ Z.
+    let mut z = Matrix3xX::zeros(n);
+    let mut b = std::mem::take(&mut ws.scratch);
     for row in 0..3 {
-        for (i, x) in ws.scratch.iter_mut().enumerate() {
-            *x = jacobian[(row, i)];
-        }
-        let mut b = std::mem::take(&mut ws.scratch);
-        solve(ws, &mut b);
-        for (i, x) in b.iter().enumerate() {
-            response[(row, i)] = *x;
-        }
-        ws.scratch = b;
+        b.iter_mut()
+            .enumerate()
+            .for_each(|(i, x)| *x = jacobian[(row, i)]);
+        solve_lt(model, ws, &mut b);
+        b.iter().enumerate().for_each(|(i, x)| z[(row, i)] = *x);
     }
-    let w = &jacobian * response.transpose();
-    let w = (w + w.transpose()) * 0.5;
+    let w = &z * z.transpose();
+    let mut response = z;
+    for row in 0..3 {
+        b.iter_mut()
+            .enumerate()
+            .for_each(|(i, x)| *x = response[(row, i)]);
+        solve_l(model, ws, &mut b);
+        b.iter()
+            .enumerate()
+            .for_each(|(i, x)| response[(row, i)] = *x);
+    }
+    ws.scratch = b;
     let velocity = Vec3::from_fn(|row, _| (0..n).map(|i| jacobian[(row, i)] * u[i]).sum());
     Ok(ContactSpace {
         jacobian,

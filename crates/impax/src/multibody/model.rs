@@ -110,6 +110,9 @@ pub(crate) struct Derived {
     pub(crate) support: Vec<Vec<usize>>,
     /// The joint of each speed.
     pub(crate) dof_joint: Vec<usize>,
+    /// Each speed's parent speed `λ(k)`: the one before it among those supporting its body
+    /// (`None` at the root).
+    pub(crate) dof_parent: Vec<Option<usize>>,
     /// `child_placement⁻¹` of each joint.
     pub(crate) child_inverse: Vec<Placement>,
     pub(crate) coordinates: Vec<String>,
@@ -279,17 +282,26 @@ impl Model {
     /// the origin (beyond `4·10⁷` times the model's size) that round-off of its position eats
     /// the robot's geometry.
     pub fn check_state(&self, q: &[f64], u: Option<&[f64]>) -> Result<Vec<f64>> {
-        check_vector("q", q, &self.data.coordinates)?;
+        let mut out = Vec::with_capacity(q.len());
+        self.check_configuration_into(q, &mut out)?;
         if let Some(u) = u {
             self.check_speeds(u)?;
         }
-        let mut q = q.to_vec();
+        Ok(out)
+    }
+
+    /// As [`Model::check_state`] for `q` alone, writing the checked configuration into `out`
+    /// (no allocation once `out` has room).
+    pub(crate) fn check_configuration_into(&self, q: &[f64], out: &mut Vec<f64>) -> Result<()> {
+        check_vector("q", q, &self.data.coordinates)?;
+        out.clear();
+        out.extend_from_slice(q);
         for (j, joint) in self.joints.iter().enumerate() {
             if joint.kind == JointKind::Free {
-                self.check_free(j, &mut q[self.data.q_offset[j]..][..7])?;
+                self.check_free(j, &mut out[self.data.q_offset[j]..][..7])?;
             }
         }
-        Ok(q)
+        Ok(())
     }
 
     /// Check speeds `u` (or any vector of `nv` generalized forces): their length, and that
@@ -591,6 +603,12 @@ fn derive(
         s.extend(v_offset[j]..v_offset[j] + joint.kind.nv());
         support[joint.child] = s;
     }
+    let mut dof_parent = vec![None; nv];
+    for s in &support {
+        for w in s.windows(2) {
+            dof_parent[w[1]] = Some(w[0]);
+        }
+    }
     let mut size = f64::MIN_POSITIVE;
     for j in joints {
         size = size
@@ -616,6 +634,7 @@ fn derive(
         body_parent,
         support,
         dof_joint,
+        dof_parent,
         coordinates,
         speeds,
         size,

@@ -82,7 +82,7 @@ impl<'a> SpatialMechanismMultiImpact<'a> {
             b.iter_mut()
                 .enumerate()
                 .for_each(|(i, x)| *x = jacobian[(r, i)]);
-            solve(&ws, &mut b);
+            solve(model, &ws, &mut b);
             b.iter()
                 .enumerate()
                 .for_each(|(i, x)| response[(r, i)] = *x);

@@ -15,7 +15,7 @@
 //! in its parent, and `c_j = (0, v_o × ω)` for a free joint (its `S` turns about the moving
 //! origin `o` of the floating base). Inwards, `τ_j = Sᵀ f_b` and `f_λ += f_b`. Then
 //! `τ = M(q) u̇ + C(q, u) u + g(q)`, the bias forces are `τ` at `u̇ = 0`, and forward dynamics
-//! solves `M u̇ = τ − C u − g` with the Cholesky factor of `M` ([`super::crba`]).
+//! solves `M u̇ = τ − C u − g` with the factor `M = Lᵀ L` ([`super::factor`]).
 
 use super::crba::{crba, factor, solve};
 use super::joint::JointKind;
@@ -127,7 +127,7 @@ pub fn forward_dynamics_in(
     }
     crba(model, ws);
     factor(model, ws)?;
-    solve(ws, udot);
+    solve(model, ws, udot);
     Ok(())
 }
 

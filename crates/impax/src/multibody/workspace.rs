@@ -138,7 +138,8 @@ pub struct Workspace {
     pub(crate) inertia: Vec<Inertia>,
     pub(crate) composite: Vec<Inertia>,
     pub(crate) mass: DMatrix<f64>,
-    /// Lower Cholesky factor of the mass matrix (when factored).
+    /// The factor `L` of `M = Lᵀ L` ([`super::factor`], lower triangular, the sparsity of
+    /// `M`) when factored.
     pub(crate) factor: DMatrix<f64>,
     pub(crate) velocity: Vec<Motion>,
     pub(crate) acceleration: Vec<Motion>,
@@ -176,10 +177,13 @@ impl Workspace {
     /// # Errors
     /// As [`Model::check_state`].
     pub fn update(&mut self, model: &Model, q: &[f64]) -> Result<()> {
-        let q = model.check_state(q, None)?;
-        self.kinematics(model, &q);
-        self.q = q;
-        Ok(())
+        let mut checked = std::mem::take(&mut self.q);
+        let result = model.check_configuration_into(q, &mut checked);
+        if result.is_ok() {
+            self.kinematics(model, &checked);
+        }
+        self.q = checked;
+        result
     }
 
     /// The configuration of the last update (quaternions normalised).
