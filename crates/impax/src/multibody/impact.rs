@@ -193,17 +193,9 @@ impl<'a> SpatialMechanismImpact<'a> {
 
     /// `T(u⁺) − T(u⁻) = ½ (u⁺ − u⁻)ᵀ M (u⁺ + u⁻)`.
     pub fn energy_change(&self, after: &[f64]) -> f64 {
-        let n = after.len();
-        let mut s = 0.0;
-        for i in 0..n {
-            let d = after[i] - self.u[i];
-            let mut row = 0.0;
-            for k in 0..n {
-                row += self.workspace.mass[(i, k)] * (after[k] + self.u[k]);
-            }
-            s += d * row;
-        }
-        0.5 * s
+        let diff: Vec<f64> = after.iter().zip(&self.u).map(|(a, b)| a - b).collect();
+        let sum: Vec<f64> = after.iter().zip(&self.u).map(|(a, b)| a + b).collect();
+        0.5 * quadratic(&self.workspace.mass, &diff, &sum)
     }
 
     /// Resolve the impact with one law ([`crate::spatial::laws::resolve`]).

@@ -153,7 +153,9 @@ pub fn random_state(model: &Model, rng: &mut SplitMix64) -> (Vec<f64>, Vec<f64>)
     for (j, joint) in model.joints().iter().enumerate() {
         let (o, _) = model.joint_offsets(j);
         match joint.kind {
-            JointKind::Revolute { .. } => q[o] = rng.range(-3.14, 3.14),
+            JointKind::Revolute { .. } => {
+                q[o] = rng.range(-std::f64::consts::PI, std::f64::consts::PI)
+            }
             JointKind::Prismatic { .. } => q[o] = rng.range(-0.5, 0.5),
             JointKind::Free => {
                 for k in 0..3 {
