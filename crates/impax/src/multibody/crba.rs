@@ -79,7 +79,7 @@ pub const MASS_PIVOT_TOL: f64 = 1e-13;
 /// through a point mass).
 pub fn factor(model: &Model, ws: &mut Workspace) -> Result<()> {
     let n = model.nv();
-    let parent = &model.data.dof_parent;
+    let ancestors = &model.data.dof_ancestors;
     let scale = (0..n).map(|i| ws.mass[(i, i)]).fold(0.0, f64::max);
     ws.factor.copy_from(&ws.mass);
     // (Column-major storage: entry (r, c) at c n + r.)
@@ -99,20 +99,16 @@ pub fn factor(model: &Model, ws: &mut Workspace) -> Result<()> {
         }
         let lkk = d.sqrt();
         h[k * n + k] = lkk;
-        let mut i = parent[k];
-        while let Some(a) = i {
+        let anc = &ancestors[k];
+        for &a in anc {
             h[a * n + k] /= lkk;
-            i = parent[a];
         }
-        let mut i = parent[k];
-        while let Some(a) = i {
+        // (The ancestors of `a` are the entries after it in `anc`.)
+        for (i, &a) in anc.iter().enumerate() {
             let lka = h[a * n + k];
-            let mut j = Some(a);
-            while let Some(b) = j {
+            for &b in &anc[i..] {
                 h[b * n + a] -= lka * h[b * n + k];
-                j = parent[b];
             }
-            i = parent[a];
         }
     }
     Ok(())
@@ -121,14 +117,12 @@ pub fn factor(model: &Model, ws: &mut Workspace) -> Result<()> {
 /// `b ← L⁻ᵀ b` with the factor of [`factor`] (`Lᵀ y = b`, from the last speed to the first).
 pub(crate) fn solve_lt(model: &Model, ws: &Workspace, b: &mut [f64]) {
     let n = b.len();
-    let (parent, l) = (&model.data.dof_parent, ws.factor.as_slice());
+    let (ancestors, l) = (&model.data.dof_ancestors, ws.factor.as_slice());
     for k in (0..n).rev() {
         let y = b[k] / l[k * n + k];
         b[k] = y;
-        let mut i = parent[k];
-        while let Some(a) = i {
+        for &a in &ancestors[k] {
             b[a] -= l[a * n + k] * y;
-            i = parent[a];
         }
     }
 }
@@ -136,15 +130,10 @@ pub(crate) fn solve_lt(model: &Model, ws: &Workspace, b: &mut [f64]) {
 /// `b ← L⁻¹ b` with the factor of [`factor`] (`L x = b`, from the first speed to the last).
 pub(crate) fn solve_l(model: &Model, ws: &Workspace, b: &mut [f64]) {
     let n = b.len();
-    let (parent, l) = (&model.data.dof_parent, ws.factor.as_slice());
+    let (ancestors, l) = (&model.data.dof_ancestors, ws.factor.as_slice());
     for k in 0..n {
-        let mut s = b[k];
-        let mut i = parent[k];
-        while let Some(a) = i {
-            s -= l[a * n + k] * b[a];
-            i = parent[a];
-        }
-        b[k] = s / l[k * n + k];
+        let s: f64 = ancestors[k].iter().map(|&a| l[a * n + k] * b[a]).sum();
+        b[k] = (b[k] - s) / l[k * n + k];
     }
 }
 

@@ -176,11 +176,15 @@ pub enum JointKind {
     /// No motion: the child is welded to the parent.
     Fixed,
     /// A floating base (the parent must be the world): seven coordinates
-    /// `q = (x, y, z, qw, qx, qy, qz)`, the child frame's origin and a unit quaternion (child
-    /// → parent), and six speeds `u = (vx, vy, vz, wx, wy, wz)`: the velocity of the child
-    /// frame's origin and the angular velocity, both in the parent frame (the world frame
-    /// when the joint's placement is the identity, as the URDF reader makes it). Then
-    /// `(ẋ, ẏ, ż) = (vx, vy, vz)` and `q̇_quat = ½ (0, ω) ⊗ q_quat`.
+    /// `q = (x, y, z, qw, qx, qy, qz)`, the origin of the child frame and a unit quaternion
+    /// (child → parent), and six speeds `u = (vx, vy, vz, wx, wy, wz)`: the velocity of the
+    /// child frame's origin and the angular velocity, both in the parent frame. The child
+    /// frame is the joint frame on the child (the child body's frame when
+    /// `child_placement` is the identity) and the parent frame is `placement` (the world when
+    /// it is the identity): with both identities, as the URDF reader makes them, `q` is the
+    /// base's pose in the world and `u` its velocity in world axes (not Pinocchio's
+    /// base-frame velocity). Then `(ẋ, ẏ, ż) = (vx, vy, vz)` and
+    /// `q̇_quat = ½ (0, ω) ⊗ q_quat`.
     Free,
 }
 

@@ -110,9 +110,9 @@ pub(crate) struct Derived {
     pub(crate) support: Vec<Vec<usize>>,
     /// The joint of each speed.
     pub(crate) dof_joint: Vec<usize>,
-    /// Each speed's parent speed `λ(k)`: the one before it among those supporting its body
-    /// (`None` at the root).
-    pub(crate) dof_parent: Vec<Option<usize>>,
+    /// Each speed's ancestors `λ(k), λ(λ(k)), …` (descending), `λ(k)` the speed before it
+    /// among those supporting its body.
+    pub(crate) dof_ancestors: Vec<Vec<usize>>,
     /// `child_placement⁻¹` of each joint.
     pub(crate) child_inverse: Vec<Placement>,
     pub(crate) coordinates: Vec<String>,
@@ -603,10 +603,10 @@ fn derive(
         s.extend(v_offset[j]..v_offset[j] + joint.kind.nv());
         support[joint.child] = s;
     }
-    let mut dof_parent = vec![None; nv];
+    let mut dof_ancestors = vec![vec![]; nv];
     for s in &support {
-        for w in s.windows(2) {
-            dof_parent[w[1]] = Some(w[0]);
+        for (i, &k) in s.iter().enumerate() {
+            dof_ancestors[k] = s[..i].iter().rev().copied().collect();
         }
     }
     let mut size = f64::MIN_POSITIVE;
@@ -634,7 +634,7 @@ fn derive(
         body_parent,
         support,
         dof_joint,
-        dof_parent,
+        dof_ancestors,
         coordinates,
         speeds,
         size,

@@ -87,7 +87,11 @@ pub fn hand_tree(floating: bool, seed: u64) -> Model {
         })
         .collect();
     let base = if floating {
-        Joint::free("root", 0)
+        // (A free joint with a turned, offset frame on both sides: u in that frame's axes.)
+        let mut j = Joint::free("root", 0);
+        j.placement = random_placement(&mut rng);
+        j.child_placement = random_placement(&mut rng);
+        j
     } else {
         Joint::revolute(
             "root",
