@@ -22,8 +22,37 @@
 //!   the speeds after by `M (u⁺ − u⁻) = Jᵀ p`; [`SpatialMechanismMultiImpact`]: several
 //!   contacts at once as a [`crate::multi::spatial::MultiProblem`].
 //!
-//! The `f64` algorithms share a reusable [`Workspace`] (no allocation once it exists, but
-//! for the checked copy of `q`).
+//! The `f64` algorithms share a reusable [`Workspace`]: [`Workspace::update`], [`crba()`],
+//! [`factor`], [`solve`], [`bias_forces`] and [`inverse_dynamics`] allocate nothing once it
+//! exists; a contact's reduction ([`contact_space`]) allocates its three `3 × nv` matrices.
+//! A solo12 foot impact (floating base, 18 speeds) from `(q, u)` to `u⁺` under `energetic`
+//! takes about 16 µs (`cargo bench -p impax --bench robots`), half of it the law's
+//! Darboux–Keller integration.
+//!
+//! ```
+//! use impax::multibody::{read_urdf, ContactSpec, SpatialMechanismImpact, UrdfOptions};
+//! use impax::LawId;
+//! let text = r#"<robot name="hopper">
+//!   <link name="body"><inertial><mass value="3"/>
+//!     <inertia ixx="0.05" ixy="0" ixz="0" iyy="0.05" iyz="0" izz="0.05"/></inertial></link>
+//!   <link name="leg"><inertial><origin xyz="0 0 -0.25"/><mass value="0.5"/>
+//!     <inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.001"/></inertial></link>
+//!   <joint name="hip" type="revolute"><parent link="body"/><child link="leg"/>
+//!     <axis xyz="0 1 0"/></joint>
+//! </robot>"#;
+//! let options = UrdfOptions::default()
+//!     .floating_base(true)
+//!     .contact(ContactSpec::parse("leg:0,0,-0.5")?);
+//! let robot = read_urdf(text, &options)?;
+//! assert_eq!(robot.model.speeds(), ["vx", "vy", "vz", "wx", "wy", "wz", "hip"]);
+//! // Standing on its foot (the base 0.5 m up, upright), falling at 1 m/s and swinging.
+//! let q = [0.0, 0.0, 0.5, 1.0, 0.0, 0.0, 0.0, 0.2];
+//! let u = [0.3, 0.0, -1.0, 0.0, 0.0, 0.0, 1.0];
+//! let impact = SpatialMechanismImpact::new(&robot.model, &q, &u, 0)?;
+//! let out = impact.resolve(LawId::Energetic, 0.6, 0.3)?;
+//! assert!(out.energy_change_from_velocities.unwrap() < 0.0);
+//! # Ok::<(), impax::Error>(())
+//! ```
 
 pub mod crba;
 pub mod impact;
