@@ -73,11 +73,11 @@ pub use jacobian::{
 pub use joint::{Joint, JointKind, Placement};
 pub use kinematics::{contact_position, forward_kinematics, gap, BodyPose};
 pub use model::{Body, ContactPoint, Model, STANDARD_GRAVITY};
-pub use multi_impact::SpatialMechanismMultiImpact;
+pub use multi_impact::{SpatialMechanismMultiImpact, SpatialMechanismMultiOutcome};
 pub use rnea::{
     bias_forces, configuration_rate, forward_dynamics, forward_dynamics_in, inverse_dynamics,
 };
-pub use urdf::{read_urdf, ContactSpec, MimicJoint, UrdfOptions, UrdfRobot};
+pub use urdf::{read_urdf, ContactSpec, LinkFrame, MimicJoint, UrdfOptions, UrdfRobot};
 pub use workspace::Workspace;
 
 pub use crate::mechanism::Real;
