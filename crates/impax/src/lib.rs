@@ -76,6 +76,7 @@ pub mod law;
 pub mod math;
 pub mod mechanism;
 pub mod multi;
+pub mod multibody;
 mod numerics;
 pub mod ode;
 pub mod paper;
