@@ -5,7 +5,7 @@
 
 use impax::math::{Mat2, Mat3, Vec2, Vec3};
 use impax::planar::{ContactProblem, Verdict};
-use impax::spatial::ContactProblem3;
+use impax::spatial;
 use impax::LawId;
 use libfuzzer_sys::fuzz_target;
 
@@ -49,9 +49,9 @@ fuzz_target!(|data: &[u8]| {
         }
     }
     let w = Mat3::new(x[0], x[1], x[2], x[1], x[3], x[4], x[2], x[4], x[5]);
-    if let Ok(p) = ContactProblem3::new(w, Vec3::new(x[6], x[7], x[8]), mu, e) {
+    if let Ok(p) = spatial::ContactProblem::new(w, Vec3::new(x[6], x[7], x[8]), mu, e) {
         for law in LawId::SPATIAL {
-            if let Ok(o) = law.resolve3(&p) {
+            if let Ok(o) = law.resolve(&p) {
                 assert!(o.is_finite(), "{law}: {o:?} for {p:?}");
                 if law == LawId::Energetic {
                     assert_ne!(o.verdict, Verdict::EnergyGained, "{law}: {o:?} for {p:?}");

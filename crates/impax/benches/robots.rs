@@ -63,7 +63,7 @@ fn bench(c: &mut Criterion) {
             )
             .unwrap();
             let problem = imp.problem(0.8, 0.5).unwrap();
-            let out = LawId::Energetic.resolve3(&problem).unwrap();
+            let out = LawId::Energetic.resolve(&problem).unwrap();
             imp.velocities_after_into(out.impulse, &mut after);
             ws = Some(imp.into_workspace());
             black_box(&after);
@@ -88,7 +88,7 @@ fn bench(c: &mut Criterion) {
     );
     let problem = imp.problem(0.8, 0.5).unwrap();
     c.bench_function("solo12 foot problem, energetic law alone", |b| {
-        b.iter(|| LawId::Energetic.resolve3(black_box(&problem)).unwrap())
+        b.iter(|| LawId::Energetic.resolve(black_box(&problem)).unwrap())
     });
     let mut ws = Workspace::new(&model);
     c.bench_function("solo12 kinematics + CRBA (18 dof)", |b| {

@@ -11,14 +11,14 @@ use super::workspace::Workspace;
 use crate::error::{Error, Num, Result};
 use crate::law::LawId;
 use crate::math::{Mat3, Vec3};
-use crate::spatial::{ContactProblem3, Resolution3};
+use crate::spatial::{ContactProblem, Resolution};
 use nalgebra::{DMatrix, Matrix3xX};
 
 /// The result of one law on a [`SpatialMechanismImpact`].
 #[derive(Debug, Clone)]
 pub struct SpatialMechanismOutcome {
     /// The contact-space result (or why the law does not apply).
-    pub resolution: Resolution3,
+    pub resolution: Resolution,
     /// The speeds after the impact, `u⁺ = u⁻ + M⁻¹ Jᵀ p` (when the law applies).
     pub velocities_after: Option<Vec<f64>>,
     /// `T⁺ − T⁻` from the speeds, `½ (u⁺ − u⁻)ᵀ M (u⁺ + u⁻)` (when the law applies; the
@@ -164,10 +164,10 @@ impl<'a> SpatialMechanismImpact<'a> {
     /// The contact-space problem with coefficients `μ`, `e`.
     ///
     /// # Errors
-    /// As [`ContactProblem3::new`], e.g. when the contact is not approaching, or `W` is
+    /// As [`ContactProblem::new`], e.g. when the contact is not approaching, or `W` is
     /// singular (a contact that the coordinates cannot move in every direction).
-    pub fn problem(&self, friction: f64, restitution: f64) -> Result<ContactProblem3> {
-        ContactProblem3::new(self.space.w, self.space.velocity, friction, restitution)
+    pub fn problem(&self, friction: f64, restitution: f64) -> Result<ContactProblem> {
+        ContactProblem::new(self.space.w, self.space.velocity, friction, restitution)
     }
 
     /// Speeds after an impulse `p` (`t1, t2, n`) on the contact: `u⁺ = u⁻ + M⁻¹ Jᵀ p`, into
@@ -192,13 +192,13 @@ impl<'a> SpatialMechanismImpact<'a> {
     }
 
     /// `T(u⁺) − T(u⁻) = ½ (u⁺ − u⁻)ᵀ M (u⁺ + u⁻)`.
-    pub fn energy_change(&self, after: &[f64]) -> f64 {
+    pub fn energy_change_to(&self, after: &[f64]) -> f64 {
         let diff: Vec<f64> = after.iter().zip(&self.u).map(|(a, b)| a - b).collect();
         let sum: Vec<f64> = after.iter().zip(&self.u).map(|(a, b)| a + b).collect();
         0.5 * quadratic(&self.workspace.mass, &diff, &sum)
     }
 
-    /// Resolve the impact with one law ([`crate::spatial::laws::resolve`]).
+    /// Resolve the impact with one law ([`LawId::resolve`]).
     ///
     /// # Errors
     /// As [`SpatialMechanismImpact::problem`].
@@ -209,11 +209,11 @@ impl<'a> SpatialMechanismImpact<'a> {
         restitution: f64,
     ) -> Result<SpatialMechanismOutcome> {
         let problem = self.problem(friction, restitution)?;
-        let resolution = crate::spatial::laws::resolve(law, &problem);
+        let resolution = law.resolve(&problem);
         let (velocities_after, energy_change_from_velocities) = match &resolution {
             Ok(outcome) => {
                 let after = self.velocities_after(outcome.impulse);
-                let de = self.energy_change(&after);
+                let de = self.energy_change_to(&after);
                 (Some(after), Some(de))
             }
             Err(_) => (None, None),
@@ -232,4 +232,34 @@ pub(crate) fn quadratic(m: &DMatrix<f64>, a: &[f64], b: &[f64]) -> f64 {
     (0..n)
         .map(|i| a[i] * (0..n).map(|k| m[(i, k)] * b[k]).sum::<f64>())
         .sum()
+}
+
+impl crate::impact::Impact for SpatialMechanismImpact<'_> {
+    type Problem = ContactProblem;
+    type Impulse = Vec3;
+    type Velocities = Vec<f64>;
+
+    fn problem(&self, friction: f64, restitution: f64) -> Result<ContactProblem> {
+        SpatialMechanismImpact::problem(self, friction, restitution)
+    }
+
+    fn velocities_after(&self, p: &Vec3) -> Vec<f64> {
+        SpatialMechanismImpact::velocities_after(self, *p)
+    }
+
+    fn kinetic_energy(&self, u: &Vec<f64>) -> f64 {
+        SpatialMechanismImpact::kinetic_energy(self, u)
+    }
+
+    fn kinetic_energy_before(&self) -> f64 {
+        self.energy_before()
+    }
+
+    /// `½ Δuᵀ M (u⁺ + u⁻)` ([`SpatialMechanismImpact::energy_change`]: no cancellation).
+    fn energy_change(&self, p: &Vec3) -> f64 {
+        SpatialMechanismImpact::energy_change_to(
+            self,
+            &SpatialMechanismImpact::velocities_after(self, *p),
+        )
+    }
 }

@@ -1,7 +1,8 @@
 //! The one contract of every struck system ([`impax::impact::Impact`]): the kinetic energy of
 //! the whole system after the law's impulse, less the energy before, is the outcome's
 //! `ΔT = v⁻·p + ½ pᵀ W p` (theory §1) — for bodies on a surface and between two bodies,
-//! planar and spatial, and for mechanisms, under every law that resolves, at random states.
+//! planar and spatial, and for mechanisms (planar, and spatial: solo12 with a floating base),
+//! under every law that resolves, at random states.
 
 use impax::impact::Impact;
 use impax::math::{SplitMix64, UnitQuat, Vec3};
@@ -200,4 +201,37 @@ fn mechanisms() {
         }
     }
     assert!(checked > 300, "{checked}");
+}
+
+#[test]
+fn spatial_mechanisms() {
+    use crate::multibody_models::{random_state, solo12};
+    use impax::multibody::SpatialMechanismImpact;
+    let model = solo12(true);
+    let mut rng = SplitMix64(0x3141_5926);
+    let mut checked = 0;
+    for _ in 0..60 {
+        let (q, u) = random_state(&model, &mut rng);
+        let k = (rng.unit() * model.contacts().len() as f64) as usize;
+        let Ok(impact) = SpatialMechanismImpact::new(&model, &q, &u, k) else {
+            continue;
+        };
+        let Ok(problem) = Impact::problem(&impact, rng.range(0.0, 1.5), rng.unit()) else {
+            continue; // a separating contact
+        };
+        for law in LawId::SPATIAL {
+            let Ok(out) = law.resolve(&problem) else {
+                continue;
+            };
+            let de = impact.energy_change(&out.impulse);
+            agree(
+                de,
+                out.energy_change,
+                impact.kinetic_energy_before(),
+                law.as_str(),
+            );
+            checked += 1;
+        }
+    }
+    assert!(checked > 100, "{checked}");
 }
