@@ -305,6 +305,25 @@ pub struct MechanismFlags {
         value_name = "X,.."
     )]
     pub position: Option<Vec<f64>>,
+    /// Mechanism: every generalized coordinate, in SI units (radians, metres), in the order of
+    /// the mechanism's `coordinates` (a mechanism file's or a robot's state; replaces
+    /// --angles-deg and --position for a built-in).
+    #[arg(
+        long,
+        value_delimiter = ',',
+        allow_hyphen_values = true,
+        value_name = "Q,.."
+    )]
+    pub q: Option<Vec<f64>>,
+    /// Mechanism: every generalized velocity (rad/s, m/s), in the order of `coordinates`
+    /// (replaces --rates).
+    #[arg(
+        long,
+        value_delimiter = ',',
+        allow_hyphen_values = true,
+        value_name = "U,.."
+    )]
+    pub u: Option<Vec<f64>>,
 }
 
 impl MechanismFlags {
@@ -318,6 +337,8 @@ impl MechanismFlags {
             ("lengths", self.lengths.is_some()),
             ("gravity", self.gravity.is_some()),
             ("position", self.position.is_some()),
+            ("q", self.q.is_some()),
+            ("u", self.u.is_some()),
         ]
         .into_iter()
         .find_map(|(flag, given)| given.then_some(flag))

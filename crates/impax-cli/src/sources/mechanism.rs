@@ -17,6 +17,7 @@
 
 use crate::input::{CliError, CliResult};
 use impax::mechanism::builtin::BuiltIn;
+use impax::scenario::{is_mechanism_file, MechanismFile};
 use std::path::Path;
 
 /// The parameters of a built-in mechanism, from flags or a TOML file: the core's description
@@ -26,15 +27,34 @@ pub use impax::scenario::MechanismSpec;
 /// A built-in mechanism and its state, as the core builds it.
 pub use impax::scenario::BuiltMechanism as MechanismCase;
 
-/// Whether a TOML text describes a mechanism (a top-level `mechanism` key).
+/// Whether a TOML text describes a mechanism: a built-in's parameters (a top-level
+/// `mechanism` key) or a mechanism of one's own (`[[body]]` and `[[joint]]` tables).
 pub fn is_mechanism_toml(text: &str) -> bool {
     text.parse::<toml::Table>()
         .map(|t| t.contains_key("mechanism"))
         .unwrap_or(false)
+        || is_mechanism_file(text)
 }
 
-/// Read a mechanism TOML file.
+/// Read a mechanism TOML file: a built-in's parameters, or a mechanism file (bodies, joints,
+/// contacts), whose name is its `name` or else the file's stem.
 pub fn parse_file(path: &Path, text: &str) -> CliResult<MechanismSpec> {
+    if is_mechanism_file(text) {
+        let file = MechanismFile::parse(text)
+            .map_err(|e| CliError::input(format!("{}: {e}", path.display())))?;
+        let name = file.name.clone().unwrap_or_else(|| {
+            path.file_stem()
+                .map_or("mechanism".into(), |s| s.to_string_lossy().into_owned())
+        });
+        return Ok(MechanismSpec {
+            mechanism: name,
+            friction: file.friction,
+            restitution: file.restitution,
+            laws: file.laws.clone(),
+            file: Some(file),
+            ..MechanismSpec::default()
+        });
+    }
     toml::from_str(text).map_err(|e| {
         CliError::input(format!(
             "{}: {}",
@@ -59,7 +79,9 @@ pub fn merge(spec: &mut MechanismSpec, flags: &MechanismSpec) {
         gravity,
         angles,
         rates,
-        position
+        position,
+        q,
+        u
     );
 }
 

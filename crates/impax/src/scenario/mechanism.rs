@@ -17,10 +17,12 @@
 //! ```
 
 use super::shape::AngleUnit;
+use super::MechanismFile;
 use crate::error::{Error, Num, Result};
 use crate::mechanism::builtin::{
     BuiltIn, CartPendulum, DoublePendulum, RingPendulum, Rod, Sphere, STANDARD_GRAVITY,
 };
+use crate::mechanism::Mechanism;
 use serde::Deserialize;
 
 /// The largest angle coordinate a description may give, in degrees (one turn).
@@ -56,6 +58,16 @@ pub struct MechanismSpec {
     pub rates: Option<Vec<f64>>,
     /// The position coordinates (ring- and cart-pendulum: x; sphere, rod: x, y).
     pub position: Option<Vec<f64>>,
+    /// The generalized coordinates, all of them, in SI units (radians, metres): replace the
+    /// state the other keys give (a mechanism file's state is given this way only).
+    pub q: Option<Vec<f64>>,
+    /// The generalized velocities, all of them (rad/s, m/s).
+    pub u: Option<Vec<f64>>,
+    /// A mechanism of one's own, from a mechanism file ([`MechanismFile`]): then `mechanism`
+    /// is its name, and only `friction`, `restitution`, `laws`, `gravity`, `q` and `u` apply.
+    /// Not a key.
+    #[serde(skip)]
+    pub file: Option<MechanismFile>,
     /// The unit of `angles`, and so their key in errors and how descriptions show them:
     /// degrees for files and flags (the default), radians for the Python bindings. Not a key.
     #[serde(skip)]
@@ -73,6 +85,38 @@ pub struct BuiltMechanism {
     pub u: Vec<f64>,
     /// One line describing the case.
     pub description: String,
+}
+
+/// A state vector: one finite number per coordinate.
+fn state_vector(field: &str, v: &[f64], coordinates: &[&str]) -> Result<Vec<f64>> {
+    if v.len() != coordinates.len() {
+        return Err(Error::Invalid {
+            field: field.into(),
+            reason: format!(
+                "needs {} value(s) ({}), got {}",
+                coordinates.len(),
+                coordinates.join(", "),
+                v.len()
+            ),
+        });
+    }
+    for (i, &x) in v.iter().enumerate() {
+        crate::error::finite(&format!("{field}[{i}]"), x)?;
+    }
+    Ok(v.to_vec())
+}
+
+/// `n` things, singular or plural.
+fn count(n: usize, one: &str, many: &str) -> String {
+    format!("{n} {}", if n == 1 { one } else { many })
+}
+
+/// Numbers as a list, `1, 2.5`.
+fn join(v: &[f64]) -> String {
+    v.iter()
+        .map(|x| Num(*x).to_string())
+        .collect::<Vec<_>>()
+        .join(", ")
 }
 
 fn reject(name: &str, field: &str, present: bool) -> Result<()> {
@@ -165,6 +209,80 @@ impl MechanismSpec {
     /// number that is not finite, an angle beyond one turn, or parameters the mechanism
     /// refuses (a non-positive mass or length) — each naming the field.
     pub fn build(&self) -> Result<BuiltMechanism> {
+        let mut built = match &self.file {
+            Some(file) => self.linkage(file)?,
+            None => self.built_in()?,
+        };
+        for (field, given, state) in [("q", &self.q, &mut built.q), ("u", &self.u, &mut built.u)] {
+            if let Some(v) = given {
+                *state = state_vector(field, v, built.mechanism.coordinates())?;
+            }
+        }
+        if self.file.is_some() || self.q.is_some() {
+            built.mechanism.place_floor(&built.q)?;
+        }
+        if self.file.is_some() || self.q.is_some() || self.u.is_some() {
+            built.description = format!(
+                "{}: q = ({}), u = ({})",
+                built.description,
+                join(&built.q),
+                join(&built.u)
+            );
+        }
+        Ok(built)
+    }
+
+    /// The planar mechanism of a mechanism file at the file's state (`q`, `u`, default zero).
+    fn linkage(&self, file: &MechanismFile) -> Result<BuiltMechanism> {
+        for (field, present) in [
+            ("masses", self.masses.is_some()),
+            ("lengths", self.lengths.is_some()),
+            ("radius", self.radius.is_some()),
+            (self.angles_key(), self.angles.is_some()),
+            ("rates", self.rates.is_some()),
+            ("position", self.position.is_some()),
+        ] {
+            if present {
+                return Err(Error::Invalid {
+                    field: field.into(),
+                    reason: "not a parameter of a mechanism file (its state is `q` and `u`)".into(),
+                });
+            }
+        }
+        let mut file = file.clone();
+        if let Some(g) = self.gravity {
+            file.gravity = Some(g);
+        }
+        let linkage = file.planar()?;
+        let n = linkage.dof();
+        let zeros = vec![0.0; n];
+        let q = state_vector(
+            "q",
+            file.q.as_ref().unwrap_or(&zeros),
+            linkage.coordinates(),
+        )?;
+        let u = state_vector(
+            "u",
+            file.u.as_ref().unwrap_or(&zeros),
+            linkage.coordinates(),
+        )?;
+        Ok(BuiltMechanism {
+            description: format!(
+                "{} (a mechanism file: {}, {}, {}; g = {})",
+                self.mechanism,
+                count(file.bodies.len(), "body", "bodies"),
+                count(file.joints.len(), "joint", "joints"),
+                count(file.contacts.len(), "contact", "contacts"),
+                file.gravity.unwrap_or(STANDARD_GRAVITY)
+            ),
+            mechanism: BuiltIn::Linkage(linkage),
+            q,
+            u,
+        })
+    }
+
+    /// A built-in mechanism at the state its keys give.
+    fn built_in(&self) -> Result<BuiltMechanism> {
         let g = self.gravity.unwrap_or(STANDARD_GRAVITY);
         let name = self.mechanism.as_str();
         let show = |x: f64| self.angle_unit.show(x);

@@ -45,12 +45,16 @@
 
 mod body;
 mod mechanism;
+mod mechanism_file;
 mod planar;
 mod shape;
 mod spatial;
 
 pub use body::{BodySpec, BuiltBody, Scale};
 pub use mechanism::{BuiltMechanism, MechanismSpec, MAX_ANGLE_DEG};
+pub use mechanism_file::{
+    is_mechanism_file, BodyEntry, ContactEntry, InertiaEntry, JointEntry, MechanismFile, Space,
+};
 pub use planar::{BuiltPlanar, PlanarScenario, SEED_TOML};
 pub use shape::{AngleUnit, Need, Quantity, Shape, ShapeParam, ShapeScalar};
 pub use spatial::{BodySpec3, BuiltBody3, BuiltSpatial, Shape3, SpatialScenario};

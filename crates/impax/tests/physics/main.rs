@@ -11,6 +11,7 @@ mod brute_force;
 mod impact_contract;
 mod lcp;
 mod lcp_spatial;
+mod mechanism_files;
 mod mechanism_specs;
 mod mechanisms;
 mod multi_contact;

@@ -225,6 +225,9 @@ fn mechanism_flags(args: &AuditArgs) -> MechanismSpec {
         angles: args.mechanism.angles_deg.clone(),
         rates: args.mechanism.rates.clone(),
         position: args.mechanism.position.clone(),
+        q: args.mechanism.q.clone(),
+        u: args.mechanism.u.clone(),
+        file: None,
         angle_unit: Default::default(),
     }
 }

@@ -75,6 +75,8 @@ pub enum BuiltIn {
     Block(Block),
     /// `cradle` (simulation only).
     Cradle(Cradle),
+    /// A mechanism of one's own (bodies, joints, contacts: a mechanism file).
+    Linkage(super::linkage::Linkage),
 }
 
 macro_rules! each {
@@ -87,6 +89,7 @@ macro_rules! each {
             BuiltIn::Rod($m) => $e,
             BuiltIn::Block($m) => $e,
             BuiltIn::Cradle($m) => $e,
+            BuiltIn::Linkage($m) => $e,
         }
     };
 }
@@ -113,6 +116,7 @@ impl BuiltIn {
             BuiltIn::Rod(_) => Self::NAMES[4],
             BuiltIn::Block(_) => "block",
             BuiltIn::Cradle(_) => "cradle",
+            BuiltIn::Linkage(_) => "linkage",
         }
     }
 
@@ -126,7 +130,30 @@ impl BuiltIn {
             BuiltIn::Sphere(_) | BuiltIn::Rod(_) | BuiltIn::Block(_) => {
                 vec![Box::new(Noether::translation("translation x", 0))]
             }
-            BuiltIn::DoublePendulum(_) | BuiltIn::Cradle(_) => Vec::new(),
+            BuiltIn::DoublePendulum(_) | BuiltIn::Cradle(_) | BuiltIn::Linkage(_) => Vec::new(),
+        }
+    }
+}
+
+impl BuiltIn {
+    /// Put the floor where the mechanism strikes it at `q`: through the double pendulum's tip,
+    /// through a mechanism file's lowest contact without a height; the other built-ins keep
+    /// their floor `y = 0`.
+    ///
+    /// # Errors
+    /// `q` of the wrong length or not finite (naming `q`).
+    pub fn place_floor(&mut self, q: &[f64]) -> Result<()> {
+        match self {
+            BuiltIn::DoublePendulum(m) => {
+                let q: [f64; 2] = q.try_into().map_err(|_| Error::Invalid {
+                    field: "q".into(),
+                    reason: format!("needs 2 value(s) (theta1, theta2), got {}", q.len()),
+                })?;
+                m.put_floor_at_tip(q);
+                Ok(())
+            }
+            BuiltIn::Linkage(m) => m.place_floor(q),
+            _ => Ok(()),
         }
     }
 }
