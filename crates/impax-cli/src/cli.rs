@@ -324,6 +324,18 @@ pub struct MechanismFlags {
         value_name = "U,.."
     )]
     pub u: Option<Vec<f64>>,
+    /// Robot (URDF): the link that strikes, `LINK` or `LINK:x,y,z` (a point in the link's
+    /// frame); a 3D mechanism file: the name of its striking contact (default: the lowest).
+    #[arg(long, value_name = "LINK[:x,y,z]")]
+    pub contact: Option<String>,
+    /// Robot (URDF): a floating base, put first: q = (x, y, z, qw, qx, qy, qz, joints…),
+    /// u = (the base origin's velocity, its angular velocity — world frame, joints…).
+    #[arg(long)]
+    pub floating_base: bool,
+    /// Robot or 3D mechanism file: the floor's height z (default: through the striking
+    /// contact at the state).
+    #[arg(long, allow_hyphen_values = true, value_name = "Z")]
+    pub floor: Option<f64>,
 }
 
 impl MechanismFlags {
@@ -339,6 +351,9 @@ impl MechanismFlags {
             ("position", self.position.is_some()),
             ("q", self.q.is_some()),
             ("u", self.u.is_some()),
+            ("contact", self.contact.is_some()),
+            ("floating-base", self.floating_base),
+            ("floor", self.floor.is_some()),
         ]
         .into_iter()
         .find_map(|(flag, given)| given.then_some(flag))

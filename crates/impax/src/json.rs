@@ -310,6 +310,83 @@ pub fn vec3(v: Vec3) -> Value {
     json!({ "t1": num(v.x), "t2": num(v.y), "n": num(v.z) })
 }
 
+/// The JSON fields of a spatial one-contact outcome: `law`, `verdict`, `impulse`,
+/// `velocity_after` (`{t1, t2, n}`), `compression_impulse`, `work`, `energy_change`, `phases`,
+/// `inconsistency`, `detail`.
+pub fn spatial_outcome_fields(o: &spatial::Outcome) -> Map<String, Value> {
+    let mut m = Map::new();
+    m.insert("law".into(), json!(o.law.as_str()));
+    m.insert("verdict".into(), json!(o.verdict.id()));
+    m.insert("impulse".into(), vec3(o.impulse));
+    m.insert("velocity_after".into(), vec3(o.velocity_after));
+    m.insert(
+        "compression_impulse".into(),
+        o.compression_impulse.map_or(Value::Null, num),
+    );
+    m.insert(
+        "work".into(),
+        json!({
+            "compression": num(o.work.compression),
+            "restitution": num(o.work.restitution),
+            "friction": num(o.work.friction),
+        }),
+    );
+    m.insert("energy_change".into(), num(o.energy_change));
+    let phases: Vec<Value> = o
+        .phases
+        .as_slice()
+        .iter()
+        .map(|ph| phase3(ph.kind, ph.ends_at))
+        .collect();
+    m.insert("phases".into(), Value::Array(phases));
+    m.insert(
+        "inconsistency".into(),
+        o.inconsistency.map_or(
+            Value::Null,
+            |i| json!({ "id": i.id(), "message": i.to_string() }),
+        ),
+    );
+    m.insert("detail".into(), detail3(&o.detail));
+    m
+}
+
+/// The JSON fields of a spatial one-contact breakdown: the outcome's keys null (`phases`
+/// empty), `verdict` `breakdown` and `breakdown` `{id, message}`.
+pub fn spatial_breakdown_fields(b: &Breakdown) -> Map<String, Value> {
+    let mut m = Map::new();
+    m.insert("law".into(), json!(b.law.as_str()));
+    m.insert("verdict".into(), json!("breakdown"));
+    m.insert(
+        "breakdown".into(),
+        json!({ "id": b.reason.id(), "message": b.reason.to_string() }),
+    );
+    for k in [
+        "impulse",
+        "velocity_after",
+        "compression_impulse",
+        "work",
+        "energy_change",
+        "inconsistency",
+        "detail",
+    ] {
+        m.insert(k.into(), Value::Null);
+    }
+    m.insert("phases".into(), json!([]));
+    m
+}
+
+/// The JSON of a spatial problem: `w` (3 × 3, rows), `v` (`{t1, t2, n}`), `friction`,
+/// `restitution`.
+pub fn spatial_problem(p: &spatial::ContactProblem) -> Value {
+    let w = p.w();
+    json!({
+        "w": (0..3).map(|i| (0..3).map(|j| num(w[(i, j)])).collect::<Vec<_>>()).collect::<Vec<_>>(),
+        "v": vec3(p.velocity()),
+        "friction": p.friction(),
+        "restitution": p.restitution(),
+    })
+}
+
 /// A spatial phase: `kind`, `ends_at`, and `from_deg`, `to_deg` (slip) or `angle_deg`
 /// (resumed slip).
 pub fn phase3(kind: PhaseKind, ends_at: f64) -> Value {

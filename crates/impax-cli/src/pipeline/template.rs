@@ -328,7 +328,7 @@ impl Template {
                             p.display()
                         )))
                     }
-                    Source::Mechanism(_) | Source::BuiltInMechanism(_) => {
+                    Source::Mechanism(_) | Source::BuiltInMechanism(_) | Source::Robot(_) => {
                         return Err(CliError::input(format!(
                             "{}: sweeps and maps take body scenarios: a mechanism cannot be swept yet",
                             p.display()

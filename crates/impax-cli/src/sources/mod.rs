@@ -3,6 +3,7 @@
 //! from the argument and the file's keys; each subcommand then reads what it was given.
 
 pub mod mechanism;
+pub mod robot;
 pub mod scenario;
 
 use crate::input::{CliError, CliResult};
@@ -26,8 +27,11 @@ pub enum Source {
     Spatial(File),
     /// A built-in mechanism, by name (`double-pendulum`, …).
     BuiltInMechanism(String),
-    /// A mechanism file (a top-level `mechanism` key).
+    /// A planar mechanism file: a built-in's parameters (a top-level `mechanism` key) or a
+    /// mechanism of one's own (`[[body]]`, `[[joint]]`).
     Mechanism(File),
+    /// A spatial mechanism of one's own: a URDF robot or a `space = "3d"` mechanism file.
+    Robot(File),
 }
 
 impl Source {
@@ -49,7 +53,9 @@ impl Source {
             name: arg.to_string(),
             text,
         };
-        Ok(if mechanism::is_mechanism_toml(&file.text) {
+        Ok(if robot::is_robot(&file.name, &file.text) {
+            Source::Robot(file)
+        } else if mechanism::is_mechanism_toml(&file.text) {
             Source::Mechanism(file)
         } else if crate::commands::compare::spatial::is_spatial(&file.text) {
             Source::Spatial(file)

@@ -18,6 +18,7 @@
 //! energetically consistent multiple-impact law.
 
 mod multi;
+mod robot;
 
 use crate::cli::{AuditArgs, CompareArgs};
 use crate::input::{finite_flag, CliError, CliResult};
@@ -189,6 +190,7 @@ fn build(args: &AuditArgs) -> CliResult<Audit> {
         }
         Source::Spatial(file) | Source::Planar(file) => file,
         Source::BuiltInMechanism(_) => unreachable!("no built-in names were given"),
+        Source::Robot(file) => return robot::audit(&file, args),
     };
     let radius = args.radius.is_some().then_some("radius");
     if let Some(flag) = args.mechanism.first_given().or(radius) {

@@ -3,6 +3,7 @@
 
 pub mod mechanism;
 pub mod multi;
+pub mod robot;
 pub mod spatial;
 
 use crate::cli::CompareArgs;
@@ -47,6 +48,7 @@ pub fn run(args: &CompareArgs, out: &mut Vec<u8>) -> CliResult<()> {
                     return mechanism::run(args, &source, out)
                 }
                 Source::Spatial(file) => return run_spatial(args, &file.name, &file.text, out),
+                Source::Robot(file) => return robot::run(args, &file, out),
                 Source::Planar(file) => Some(file),
             }
         }

@@ -20,42 +20,9 @@ fn spatial_entry(
     r: &impax::spatial::Resolution,
     rays: &Value,
 ) -> Value {
-    let mut m = serde_json::Map::new();
-    m.insert("law".into(), json!(law.as_str()));
-    match r {
+    let mut m = match r {
         Ok(o) => {
-            m.insert("verdict".into(), json!(o.verdict.id()));
-            m.insert("impulse".into(), json::vec3(o.impulse));
-            m.insert("velocity_after".into(), json::vec3(o.velocity_after));
-            m.insert(
-                "compression_impulse".into(),
-                o.compression_impulse.map_or(Value::Null, json::num),
-            );
-            m.insert(
-                "work".into(),
-                json!({
-                    "compression": json::num(o.work.compression),
-                    "restitution": json::num(o.work.restitution),
-                    "friction": json::num(o.work.friction),
-                }),
-            );
-            m.insert("energy_change".into(), json::num(o.energy_change));
-            let phases: Vec<Value> = o
-                .phases
-                .as_slice()
-                .iter()
-                .map(|ph| json::phase3(ph.kind, ph.ends_at))
-                .collect();
-            m.insert("phases".into(), Value::Array(phases));
-            m.insert(
-                "inconsistency".into(),
-                o.inconsistency.map_or(
-                    Value::Null,
-                    |i| json!({ "id": i.id(), "message": i.to_string() }),
-                ),
-            );
-            let detail = json::detail3(&o.detail);
-            m.insert("detail".into(), detail);
+            let mut m = json::spatial_outcome_fields(o);
             let hodograph = if law.is_darboux_keller() {
                 impax::spatial::laws::hodograph(problem, law, &impax::law::Options::default())
                     .map(|pts| json!(pts))
@@ -67,28 +34,14 @@ fn spatial_entry(
             if law == LawId::Lcp {
                 m.insert("all_solutions".into(), lcp_solutions(problem));
             }
+            m
         }
         Err(b) => {
-            m.insert("verdict".into(), json!("breakdown"));
-            m.insert(
-                "breakdown".into(),
-                json!({ "id": b.reason.id(), "message": b.reason.to_string() }),
-            );
-            for k in [
-                "impulse",
-                "velocity_after",
-                "compression_impulse",
-                "work",
-                "energy_change",
-                "inconsistency",
-                "detail",
-                "hodograph",
-            ] {
-                m.insert(k.into(), Value::Null);
-            }
-            m.insert("phases".into(), json!([]));
+            let mut m = json::spatial_breakdown_fields(b);
+            m.insert("hodograph".into(), Value::Null);
+            m
         }
-    }
+    };
     m.insert("invariant_rays".into(), rays.clone());
     Value::Object(m)
 }

@@ -1,0 +1,250 @@
+//! A spatial mechanism of one's own at a state, struck at one contact: a robot from URDF or a
+//! `space = "3d"` mechanism file, as every front end describes it — and the one builder.
+//!
+//! ```
+//! use impax::scenario::{RobotSource, RobotSpec};
+//! use impax::LawId;
+//! // A brick (0.2 × 0.1 × 0.05 m, 1 kg) from URDF with a floating base, falling on a corner
+//! // (the floor passes through it): q = (x, y, z, qw, qx, qy, qz), u = (v, ω) in the world.
+//! let urdf = r#"<robot name="brick"><link name="brick"><inertial><mass value="1"/>
+//!   <inertia ixx="0.00104" iyy="0.00354" izz="0.00417" ixy="0" ixz="0" iyz="0"/>
+//!   </inertial></link></robot>"#;
+//! let spec = RobotSpec {
+//!     floating_base: true,
+//!     contact: Some("brick:0.1,0.05,-0.025".into()),
+//!     u: Some(vec![0.3, 0.0, -1.0, 0.0, 2.0, 0.0]),
+//!     ..RobotSpec::new("", RobotSource::Urdf(urdf.into()))
+//! };
+//! let robot = spec.build()?;
+//! assert_eq!(robot.coordinates()[..4], ["x", "y", "z", "qw"]);
+//! let impact = robot.impact()?;
+//! assert!(impact.gap().abs() < 1e-15);
+//! let out = impact.resolve(LawId::Energetic, 0.5, 0.5)?;
+//! assert!(out.energy_change_from_velocities.unwrap() < 0.0);
+//! # Ok::<(), impax::Error>(())
+//! ```
+
+use super::MechanismFile;
+use crate::error::{Error, Result};
+use crate::multibody::{
+    contact_position, forward_kinematics, read_urdf, BodyPose, ContactSpec, Model,
+    SpatialMechanismImpact, UrdfOptions,
+};
+
+/// Where a robot comes from.
+#[derive(Debug, Clone, PartialEq)]
+pub enum RobotSource {
+    /// The text of a URDF file.
+    Urdf(String),
+    /// A `space = "3d"` mechanism file, read.
+    File(Box<MechanismFile>),
+}
+
+/// A spatial mechanism of one's own, as a front end gives it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RobotSpec {
+    /// Its name (a URDF robot's own name is used when this is empty).
+    pub name: String,
+    /// The URDF text or the mechanism file.
+    pub source: RobotSource,
+    /// URDF: put a free joint first (`q = (x, y, z, qw, qx, qy, qz, …)`, `u = (v, ω, …)` in
+    /// the world frame). Files say so with a `free` joint.
+    pub floating_base: bool,
+    /// The contact that strikes: URDF `LINK` or `LINK:x,y,z` (a point in the link's frame;
+    /// required); a file's contact by name (default: the lowest at the state).
+    pub contact: Option<String>,
+    /// The floor's height (default: a file's `height`, else through the striking contact at
+    /// the state).
+    pub floor: Option<f64>,
+    /// Gravitational acceleration `g ≥ 0` along `−z` (default: a file's `gravity`, else
+    /// 9.81).
+    pub gravity: Option<f64>,
+    /// The generalized coordinates (default: the file's `q`, else the neutral state — zero
+    /// joints, the base at the origin with the identity quaternion).
+    pub q: Option<Vec<f64>>,
+    /// The generalized velocities (default: the file's `u`, else zero).
+    pub u: Option<Vec<f64>>,
+}
+
+impl RobotSpec {
+    /// A spec with every option at its default.
+    pub fn new(name: &str, source: RobotSource) -> Self {
+        RobotSpec {
+            name: name.into(),
+            source,
+            floating_base: false,
+            contact: None,
+            floor: None,
+            gravity: None,
+            q: None,
+            u: None,
+        }
+    }
+
+    /// Build the model at its state, its floor placed and its striking contact chosen.
+    ///
+    /// # Errors
+    /// Every error of [`read_urdf`] and [`MechanismFile::spatial`]; a URDF robot without
+    /// `contact`; an unknown contact; `floating_base` for a file (it has its joints); `q` or
+    /// `u` of the wrong length or not finite — each naming its field.
+    pub fn build(&self) -> Result<BuiltRobot> {
+        let (mut model, name, mimic_joints, file_q, file_u, floor) = match &self.source {
+            RobotSource::Urdf(text) => {
+                let spec = self.contact.as_deref().ok_or_else(|| Error::Invalid {
+                    field: "contact".into(),
+                    reason: "which link strikes: LINK or LINK:x,y,z (a point in its frame)".into(),
+                })?;
+                let options = UrdfOptions::default()
+                    .floating_base(self.floating_base)
+                    .contact(ContactSpec::parse(spec)?);
+                let robot = read_urdf(text, &options)?;
+                let name = if self.name.is_empty() {
+                    robot.name.clone()
+                } else {
+                    self.name.clone()
+                };
+                let mimic = robot.mimic_joints.iter().map(|m| m.joint.clone()).collect();
+                (robot.model, name, mimic, None, None, None)
+            }
+            RobotSource::File(file) => {
+                if self.floating_base {
+                    return Err(Error::Invalid {
+                        field: "floating_base".into(),
+                        reason: "a mechanism file gives its base a `free` joint itself".into(),
+                    });
+                }
+                let floor = file
+                    .floor_given()
+                    .then(|| file.spatial().map(|m| m.floor()));
+                let model = file.spatial()?;
+                let name = file.name.clone().unwrap_or_else(|| self.name.clone());
+                (
+                    model,
+                    name,
+                    Vec::new(),
+                    file.q.clone(),
+                    file.u.clone(),
+                    floor.transpose()?,
+                )
+            }
+        };
+        if model.contacts().is_empty() {
+            return Err(Error::Invalid {
+                field: "contact".into(),
+                reason: format!("`{name}` has no contact point to strike"),
+            });
+        }
+        let q = self.q.clone().or(file_q).unwrap_or_else(|| model.neutral());
+        let q = model.check_state(&q, None)?;
+        let u = self
+            .u
+            .clone()
+            .or(file_u)
+            .unwrap_or_else(|| vec![0.0; model.nv()]);
+        model.check_speeds(&u)?;
+        let heights = contact_heights(&model, &q);
+        let contact = match (&self.source, &self.contact) {
+            (RobotSource::Urdf(_), _) => 0,
+            (RobotSource::File(_), Some(c)) => {
+                model.contact_index(c).ok_or_else(|| Error::Invalid {
+                    field: "contact".into(),
+                    reason: format!(
+                        "`{c}` is not a contact of `{name}` (its contacts: {})",
+                        model
+                            .contacts()
+                            .iter()
+                            .map(|c| c.name.as_str())
+                            .collect::<Vec<_>>()
+                            .join(", ")
+                    ),
+                })?
+            }
+            (RobotSource::File(_), None) => (0..heights.len())
+                .min_by(|&a, &b| heights[a].total_cmp(&heights[b]))
+                .unwrap_or(0),
+        };
+        let floor = match self.floor {
+            Some(h) => crate::error::finite("floor", h)?,
+            None => floor.unwrap_or(heights[contact]),
+        };
+        model = model.with_floor(floor)?;
+        if let Some(g) = self.gravity {
+            model = model.with_gravity(g)?;
+        }
+        Ok(BuiltRobot {
+            name,
+            model,
+            q,
+            u,
+            contact,
+            mimic_joints,
+        })
+    }
+}
+
+/// The height of every contact of `model` at `q`.
+fn contact_heights(model: &Model, q: &[f64]) -> Vec<f64> {
+    let mut poses = vec![BodyPose::identity(); model.bodies().len()];
+    forward_kinematics(model, q, &mut poses);
+    (0..model.contacts().len())
+        .map(|k| contact_position(model, &poses, k)[2])
+        .collect()
+}
+
+/// A spatial mechanism built from its [`RobotSpec`], at its state.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BuiltRobot {
+    /// Its name.
+    pub name: String,
+    /// The model (its floor placed).
+    pub model: Model,
+    /// The generalized coordinates (free joints' quaternions normalised).
+    pub q: Vec<f64>,
+    /// The generalized velocities.
+    pub u: Vec<f64>,
+    /// The striking contact (index into the model's contacts).
+    pub contact: usize,
+    /// URDF joints that mimic another, kept as independent coordinates (as Pinocchio's URDF
+    /// reader does by default).
+    pub mimic_joints: Vec<String>,
+}
+
+impl BuiltRobot {
+    /// The names of the entries of `q`.
+    pub fn coordinates(&self) -> &[String] {
+        self.model.coordinates()
+    }
+
+    /// The impact of the striking contact at the state.
+    ///
+    /// # Errors
+    /// As [`SpatialMechanismImpact::new`].
+    pub fn impact(&self) -> Result<SpatialMechanismImpact<'_>> {
+        SpatialMechanismImpact::new(&self.model, &self.q, &self.u, self.contact)
+    }
+
+    /// One line describing the case.
+    pub fn description(&self) -> String {
+        let base = match self.model.joints().first() {
+            Some(j) if j.kind == crate::multibody::JointKind::Free => "floating base",
+            _ => "fixed base",
+        };
+        let mut s = format!(
+            "{} ({}, {} bodies, {} coordinates; g = {}): contact `{}` strikes the floor z = {}",
+            self.name,
+            base,
+            self.model.bodies().len(),
+            self.model.nq(),
+            self.model.gravity(),
+            self.model.contacts()[self.contact].name,
+            crate::error::Num(self.model.floor()),
+        );
+        if !self.mimic_joints.is_empty() {
+            s.push_str(&format!(
+                "; mimic joints kept independent: {}",
+                self.mimic_joints.join(", ")
+            ));
+        }
+        s
+    }
+}
