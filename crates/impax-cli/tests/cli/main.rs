@@ -22,6 +22,7 @@ mod regression_simulate_floor;
 mod regression_sweep_inputs;
 mod resolve3d;
 mod resolve_contacts;
+mod robots;
 mod shape_box;
 mod simulate;
 mod sweep;
