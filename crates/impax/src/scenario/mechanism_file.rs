@@ -156,10 +156,11 @@ pub struct MechanismFile {
     pub contacts: Vec<ContactEntry>,
 }
 
-/// Whether a TOML text is a mechanism file (it has `[[body]]` tables).
+/// Whether a TOML text is a mechanism file: it has `[[body]]` tables (an array; a body
+/// scenario has one `[body]` table) or `[[joint]]` tables.
 pub fn is_mechanism_file(text: &str) -> bool {
     text.parse::<toml::Table>()
-        .map(|t| t.contains_key("body") || t.contains_key("joint"))
+        .map(|t| t.get("body").is_some_and(|b| b.is_array()) || t.contains_key("joint"))
         .unwrap_or(false)
 }
 
