@@ -110,6 +110,10 @@ pub struct SweepArgs {
     /// Write to FILE instead of stdout.
     #[arg(long, value_name = "FILE")]
     pub out: Option<PathBuf>,
+    /// A mechanism or robot swept over its state (`q.NAME`, `u.NAME`, `friction`,
+    /// `restitution`): its base state and contact.
+    #[command(flatten)]
+    pub mechanism: MechanismFlags,
 }
 
 #[derive(Debug, Args)]
