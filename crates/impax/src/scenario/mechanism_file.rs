@@ -251,7 +251,11 @@ impl MechanismFile {
     /// and every error of [`Linkage::new`], each naming its field.
     pub fn planar(&self) -> Result<Linkage> {
         if self.space != Space::Planar {
-            return Err(invalid("space", "a `3d` file is a spatial mechanism"));
+            return Err(invalid(
+                "space",
+                "a `3d` file is a spatial mechanism: `impax compare`, `audit` and `sweep` take it; \
+                 `simulate` and `conserved` are planar only for now",
+            ));
         }
         let mut bodies = Vec::with_capacity(self.bodies.len());
         for b in &self.bodies {
