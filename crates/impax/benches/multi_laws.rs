@@ -73,7 +73,7 @@ fn bench_multi(c: &mut Criterion) {
     let r = rod_turning(0.3, 0.5);
     let mut g = c.benchmark_group("rod-turning");
     g.bench_with_input(BenchmarkId::from_parameter(LawId::Lzb), &r, |b, p| {
-        b.iter(|| black_box(LawId::Lzb.resolve_multi(black_box(p))))
+        b.iter(|| black_box(LawId::Lzb.resolve(black_box(p))))
     });
     g.finish();
 
