@@ -22,6 +22,7 @@ mod multi_spatial_lzb;
 mod multibody;
 mod multibody_impact;
 mod multibody_models;
+mod multibody_simulation;
 mod multibody_urdf;
 mod multibody_validation;
 mod paper_liu2012;
