@@ -69,6 +69,7 @@ pub use record::{ImpactRecord, Ledger, Persistence, Run, StopReason};
 
 use crate::error::{Error, Num, Result};
 use crate::ode::Dopri5;
+pub(crate) use motion::renormalise;
 use motion::{Equations, Geometry};
 use run::Sim;
 

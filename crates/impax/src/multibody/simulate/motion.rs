@@ -130,7 +130,7 @@ impl<'a> Geometry<'a> {
 /// Renormalise every free joint's quaternion in `q` (the first `nq` entries of a state);
 /// returns the largest departure `|‖q_quat‖ − 1|` it corrected, `None` when every norm was
 /// exactly 1.
-pub(super) fn renormalise(model: &Model, q: &mut [f64]) -> Option<f64> {
+pub(crate) fn renormalise(model: &Model, q: &mut [f64]) -> Option<f64> {
     let mut worst: Option<f64> = None;
     for (j, joint) in model.joints().iter().enumerate() {
         if joint.kind != JointKind::Free {
