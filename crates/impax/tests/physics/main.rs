@@ -20,6 +20,7 @@ mod multi_scenarios;
 mod multi_spatial;
 mod multi_spatial_lzb;
 mod multibody;
+mod multibody_conserved;
 mod multibody_impact;
 mod multibody_models;
 mod multibody_simulation;

@@ -3,18 +3,13 @@
 //! first impact at the free-fall time), a brick and a rod dropped at random angles (no sample
 //! below the floor, the energy ledger balanced, `energetic` never gaining energy), and solo12
 //! dropped on its feet (the first foot impact at the free-fall time of its lowest foot, and a
-//! named stop); and the conserved quantities of spatial free motion (`multibody::conserved`):
-//! `∂L/∂q` against differences, a free-flying robot, a brick under gravity, a fixed arm.
+//! named stop).
 
 use super::multibody_models::{solo12, FEET};
 use impax::math::{Mat3, SplitMix64, Vec3};
-use impax::multibody::conserved::{
-    lagrangian_gradient, tested_coordinates, track, QuantityKind, Track, TrackOptions, Tracking,
-};
 use impax::multibody::simulate::{simulate, Persistence, Run, SimulationOptions, StopReason};
 use impax::multibody::{
-    contact_position, forward_kinematics, kinetic_energy, potential_energy, Body, BodyPose,
-    ContactPoint, Joint, Model, Workspace,
+    contact_position, forward_kinematics, Body, BodyPose, ContactPoint, Joint, Model,
 };
 use impax::LawId;
 
@@ -37,7 +32,7 @@ fn ball() -> Model {
 }
 
 /// A brick 0.4 × 0.2 × 0.1 m of 1 kg with its eight corners as contacts.
-fn brick() -> Model {
+pub(super) fn brick() -> Model {
     let (a, b, c) = (0.2, 0.1, 0.05);
     let m = 1.0;
     let inertia = Vec3::new(
@@ -92,7 +87,7 @@ fn lowest_gap(model: &Model, run: &Run) -> f64 {
 }
 
 /// A random unit quaternion `(w, x, y, z)`.
-fn quaternion(rng: &mut SplitMix64) -> [f64; 4] {
+pub(super) fn quaternion(rng: &mut SplitMix64) -> [f64; 4] {
     loop {
         let q = [0; 4].map(|_| rng.range(-1.0, 1.0));
         let n = q.iter().map(|x| x * x).sum::<f64>().sqrt();
@@ -292,153 +287,4 @@ fn multibody_simulation_solo12_first_foot_at_free_fall_time() {
             run.quaternion_drift
         );
     }
-}
-
-/// `∂L/∂q_i` by automatic differentiation equals central differences of
-/// `L = ½ uᵀ M(q) u − V(q)` (CRBA) on solo12's joints and base position, at random states.
-#[test]
-fn multibody_conserved_lagrangian_gradient_matches_differences() {
-    let model = solo12(true);
-    let mut rng = SplitMix64(0x1a9_7a9e);
-    let lagrangian = |q: &[f64], u: &[f64]| {
-        let mut ws = Workspace::new(&model);
-        ws.update(&model, q).unwrap();
-        kinetic_energy(&model, &mut ws, u) - potential_energy(&model, &ws).0
-    };
-    let mut worst = 0.0f64;
-    for _ in 0..20 {
-        let mut q = model.neutral();
-        q[3..7].copy_from_slice(&quaternion(&mut rng));
-        for x in q.iter_mut().skip(7) {
-            *x = rng.range(-2.0, 2.0);
-        }
-        let u: Vec<f64> = (0..18).map(|_| rng.range(-2.0, 2.0)).collect();
-        for i in tested_coordinates(&model) {
-            let d = lagrangian_gradient(&model, &q, &u, i);
-            let h = 1e-5;
-            let (mut qp, mut qm) = (q.clone(), q.clone());
-            qp[i] += h;
-            qm[i] -= h;
-            let fd = (lagrangian(&qp, &u) - lagrangian(&qm, &u)) / (2.0 * h);
-            let scale = d.magnitude.max(lagrangian(&q, &u).abs());
-            worst = worst.max((d.value - fd).abs() / scale);
-        }
-    }
-    assert!(worst < 1e-7, "{worst:e}");
-    eprintln!("∂L/∂q against central differences: largest relative difference {worst:.1e}");
-}
-
-/// The tracks of a free motion by name.
-fn by_name<'a>(tracking: &'a Tracking, name: &str) -> &'a Track {
-    tracking
-        .tracks
-        .iter()
-        .find(|t| t.name == name)
-        .unwrap_or_else(|| panic!("no track {name}"))
-}
-
-/// solo12 flying free without gravity: `P`, `L` about a point and `E` are conserved to the
-/// integrator's tolerance, and so are the momenta of `x, y, z`, found cyclic; its joints are
-/// not cyclic.
-#[test]
-fn multibody_conserved_free_flying_robot() {
-    let model = solo12(true).with_gravity(0.0).unwrap();
-    let mut rng = SplitMix64(0xf1e_e0f1);
-    let mut q = model.neutral();
-    q[3..7].copy_from_slice(&quaternion(&mut rng));
-    for x in q.iter_mut().skip(7) {
-        *x = rng.range(-1.5, 1.5);
-    }
-    let u: Vec<f64> = (0..18).map(|_| rng.range(-2.0, 2.0)).collect();
-    let options = TrackOptions {
-        duration: 2.0,
-        intervals: 200,
-        ..TrackOptions::default()
-    };
-    let about = [Vec3::zeros(), Vec3::new(1.0, -2.0, 0.5)];
-    let tracking = track(&model, &q, &u, &about, options).unwrap();
-    assert_eq!(tracking.cyclic, [0, 1, 2]);
-    let mut worst = 0.0f64;
-    for name in [
-        "energy",
-        "P_x",
-        "P_y",
-        "P_z",
-        "p_vx",
-        "p_vy",
-        "p_vz",
-        "L_x(0, 0, 0)",
-        "L_y(0, 0, 0)",
-        "L_z(0, 0, 0)",
-        "L_x(1, -2, 0.5)",
-        "L_z(1, -2, 0.5)",
-    ] {
-        let t = by_name(&tracking, name);
-        assert!(t.conserved(1e-9), "{name}: {:e}", t.relative_deviation());
-        worst = worst.max(t.relative_deviation());
-    }
-    // The joints' momenta change (the legs exchange momentum with the base).
-    assert!(!by_name(&tracking, "p_FL_KFE").conserved(1e-3));
-    eprintln!(
-        "free-flying solo12 over 2 s: energy, P, L, p_x,y,z within {worst:.1e}; {} steps",
-        tracking.steps.0
-    );
-}
-
-/// A brick spinning in flight under gravity: `x`, `y` cyclic, `P_x`, `P_y`, `L_z` and `E`
-/// conserved; `P_z`, `L_x`, `L_y` not.
-#[test]
-fn multibody_conserved_brick_under_gravity() {
-    let model = brick();
-    let n = (0.81f64 + 0.09 + 0.04 + 0.01).sqrt();
-    let q = [0.1, 0.2, 1.0, 0.9 / n, 0.3 / n, -0.2 / n, 0.1 / n];
-    let u = [0.5, -0.3, 3.0, 2.0, -1.0, 4.0];
-    let options = TrackOptions {
-        duration: 1.0,
-        intervals: 100,
-        ..TrackOptions::default()
-    };
-    let tracking = track(&model, &q, &u, &[Vec3::zeros()], options).unwrap();
-    assert_eq!(tracking.cyclic, [0, 1]);
-    for name in ["energy", "P_x", "P_y", "p_vx", "p_vy", "L_z(0, 0, 0)"] {
-        let t = by_name(&tracking, name);
-        assert!(t.conserved(1e-10), "{name}: {:e}", t.relative_deviation());
-    }
-    for name in ["P_z", "p_vz", "L_x(0, 0, 0)", "L_y(0, 0, 0)"] {
-        let t = by_name(&tracking, name);
-        assert!(!t.conserved(1e-3), "{name}: {:e}", t.relative_deviation());
-    }
-}
-
-/// The fixed-base arm of `examples/mechanisms/arm-3d.toml` swinging: only its energy is
-/// conserved (no coordinate is cyclic; the pivot's reactions change `P` and `L`).
-#[test]
-fn multibody_conserved_fixed_arm_energy_only() {
-    let file = impax::scenario::MechanismFile::parse(include_str!(
-        "../../../../examples/mechanisms/arm-3d.toml"
-    ))
-    .unwrap();
-    let model = file.spatial().unwrap();
-    let (q, u) = (file.q.clone().unwrap(), file.u.clone().unwrap());
-    let options = TrackOptions {
-        duration: 3.0,
-        intervals: 300,
-        ..TrackOptions::default()
-    };
-    let tracking = track(&model, &q, &u, &[Vec3::zeros()], options).unwrap();
-    assert!(tracking.cyclic.is_empty(), "{:?}", tracking.cyclic);
-    for t in &tracking.tracks {
-        let conserved = t.conserved(1e-8);
-        assert_eq!(
-            conserved,
-            t.kind == QuantityKind::Energy,
-            "{}: {:e}",
-            t.name,
-            t.relative_deviation()
-        );
-    }
-    eprintln!(
-        "arm-3d over 3 s: energy within {:.1e}",
-        by_name(&tracking, "energy").relative_deviation()
-    );
 }

@@ -75,6 +75,12 @@ use run::Sim;
 
 use super::{contact_jacobian, Model, Workspace};
 
+/// Largest number of integrator steps (accepted and rejected) [`simulate`] takes over the
+/// whole run. It gives up earlier, after a thousand steps, when the pace so far projects more
+/// than twice as many (a state spinning at 10⁷ rad/s fails at once, not after minutes). The
+/// error names `until`.
+pub const SIMULATION_MAX_STEPS: usize = 200_000;
+
 /// Simulate `model` from `(q0, u0)` at `t = 0` until `options.until`, or a stop (see the
 /// [module docs](self)).
 ///
@@ -85,7 +91,9 @@ use super::{contact_jacobian, Model, Workspace};
 ///
 /// # Errors
 /// Invalid state or options (each naming its field); a law without a spatial form; a contact
-/// starting below the floor; a singular mass matrix or a failed integration along the way.
+/// starting below the floor; a singular mass matrix or a failed integration along the way; a
+/// run that needs more than [`SIMULATION_MAX_STEPS`] steps (or whose pace projects more than
+/// twice as many), naming `until`.
 pub fn simulate(model: &Model, q0: &[f64], u0: &[f64], options: &SimulationOptions) -> Result<Run> {
     let q0 = model.check_state(q0, Some(u0))?;
     options.validate()?;

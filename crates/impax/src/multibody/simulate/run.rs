@@ -6,6 +6,7 @@ use super::motion::{renormalise, Equations, Geometry};
 use super::record::{ImpactRecord, Ledger, Persistence, Run, StopReason};
 use crate::error::Result;
 use crate::multibody::{forward_dynamics_in, gap_rates, Model, Workspace};
+use crate::numerics::budget::StepBudget;
 use crate::ode::Dopri5;
 use crate::simulation::events::{accumulation, locate};
 use crate::simulation::{EventKind, Mode, Sample, SimulationOptions};
@@ -324,9 +325,25 @@ impl<'a> Sim<'a> {
     /// [`PARTS`] equal parts of it.
     fn step(&mut self) -> Result<Dense> {
         let until = self.opt.until;
+        // One budget for the whole run, judged before every step.
+        let budget = StepBudget {
+            max: super::SIMULATION_MAX_STEPS,
+            duration: until,
+            field: "until",
+        };
+        let used = self.ode.accepted + self.ode.rejected;
+        budget.check(used, self.t)?;
+        self.ode.max_steps = self.ode.steps_since_start() + budget.remaining(used);
         let eq = &mut self.eq;
         let mut f = |_t: f64, y: &[f64], dy: &mut [f64]| eq.derivative(y, dy);
-        let step = self.ode.advance(&mut f, until)?;
+        let step = match self.ode.advance(&mut f, until) {
+            Ok(step) => step,
+            Err(e) => {
+                let used = self.ode.accepted + self.ode.rejected;
+                budget.check(used, self.ode.time())?;
+                return Err(e);
+            }
+        };
         let (t0, t1) = (step.t0, step.t1);
         let mut buf = vec![0.0; step.y0.len()];
         let mut inside: Vec<(f64, Vec<f64>)> = Vec::new();
