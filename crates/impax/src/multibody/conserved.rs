@@ -377,6 +377,26 @@ pub fn expected(model: &Model, kind: &QuantityKind) -> bool {
     }
 }
 
+/// The coordinate whose rate is speed `speed` (an index into `q`), if any: a hinge's or
+/// slider's coordinate, a free joint's `x`, `y`, `z` for `vx`, `vy`, `vz`; `None` for a free
+/// joint's angular speeds (the quaternion's rates are no speeds).
+pub fn rate_coordinate(model: &Model, speed: usize) -> Option<usize> {
+    let mut s = speed;
+    for (j, joint) in model.joints().iter().enumerate() {
+        let nv = joint.kind.nv();
+        if s < nv {
+            let oq = model.joint_offsets(j).0;
+            return match joint.kind {
+                JointKind::Free if s < 3 => Some(oq + s),
+                JointKind::Free => None,
+                _ => Some(oq),
+            };
+        }
+        s -= nv;
+    }
+    None
+}
+
 /// The tracks of the quantities (empty values): the momenta, the energy, `P`, and `L` about
 /// each point of `about`.
 fn tracks(model: &Model, cyclic: &[usize], tested: &[usize], about: &[Vec3]) -> Vec<Track> {
@@ -388,26 +408,17 @@ fn tracks(model: &Model, cyclic: &[usize], tested: &[usize], about: &[Vec3]) -> 
         magnitude: 0.0,
     };
     let mut out = Vec::new();
-    for (j, joint) in model.joints().iter().enumerate() {
-        let (oq, ov) = model.joint_offsets(j);
-        for s in 0..joint.kind.nv() {
-            // The coordinate whose rate is this speed, if any.
-            let coordinate = match joint.kind {
-                JointKind::Free if s < 3 => Some(oq + s),
-                JointKind::Free => None,
-                _ => Some(oq),
-            };
-            let verdict = coordinate
-                .filter(|i| tested.contains(i))
-                .map(|i| cyclic.contains(&i));
-            out.push(track(
-                format!("p_{}", model.speeds()[ov + s]),
-                QuantityKind::GeneralizedMomentum {
-                    speed: ov + s,
-                    cyclic: verdict,
-                },
-            ));
-        }
+    for (speed, name) in model.speeds().iter().enumerate() {
+        let verdict = rate_coordinate(model, speed)
+            .filter(|i| tested.contains(i))
+            .map(|i| cyclic.contains(&i));
+        out.push(track(
+            format!("p_{name}"),
+            QuantityKind::GeneralizedMomentum {
+                speed,
+                cyclic: verdict,
+            },
+        ));
     }
     out.push(track("energy".into(), QuantityKind::Energy));
     for (axis, n) in ["x", "y", "z"].iter().enumerate() {

@@ -9,7 +9,7 @@
 //! that slows down enough to fit after a projection over twice the limit is refused early,
 //! which the message says.
 
-use crate::error::{Error, Num, Result};
+use crate::error::{Error, Result};
 
 /// The step budget of one motion of duration `duration`, the field that sets it named
 /// `field` (`duration`, `until`).
@@ -45,16 +45,13 @@ impl StepBudget {
         }
         let pace = if used >= self.max {
             format!(
-                "the motion took the {} integrator steps allowed to reach t = {} s of it",
-                self.max,
-                Num(t)
+                "the motion took the {} integrator steps allowed to reach t = {t:.3e} s of it",
+                self.max
             )
         } else if projected.is_finite() {
             format!(
-                "the motion needs about {} integrator steps over it at its pace so far ({used} \
-                 steps to t = {} s), more than twice the {} allowed",
-                Num(projected.round()),
-                Num(t),
+                "the motion needs about {projected:.1e} integrator steps over it at its pace so \
+                 far ({used} steps to t = {t:.3e} s), more than twice the {} allowed",
                 self.max
             )
         } else {

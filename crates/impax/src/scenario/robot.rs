@@ -327,4 +327,31 @@ impl BuiltRobot {
             Some(self.contact),
         )
     }
+
+    /// Every contact's gap `φ_k = z_k − h` above the floor at the state.
+    pub fn gaps(&self) -> Vec<f64> {
+        let floor = self.model.floor();
+        contact_heights(&self.model, &self.q)
+            .into_iter()
+            .map(|z| z - floor)
+            .collect()
+    }
+
+    /// One line describing the mechanism for a motion (`impax simulate`): its name, base,
+    /// bodies, coordinates, gravity, contacts and floor.
+    pub fn motion_description(&self) -> String {
+        let mut s = describe(&self.name, &self.model, &self.mimic_joints, None);
+        let names: Vec<String> = self
+            .model
+            .contacts()
+            .iter()
+            .map(|c| format!("`{}`", c.name))
+            .collect();
+        s.push_str(&format!(
+            "; contacts {} above the floor z = {:.6}",
+            names.join(", "),
+            self.model.floor()
+        ));
+        s
+    }
 }
