@@ -184,7 +184,7 @@ fn random_state(model: &Model, rng: &mut SplitMix64) -> (Vec<f64>, Vec<f64>) {
 /// tolerance, and the ones gravity acts on (`P_z`, `L_x`, `L_y`) change.
 #[test]
 fn multibody_conserved_what_the_symmetries_promise_on_random_motions() {
-    let mut rng = SplitMix64(0xc0_5e7e_d);
+    let mut rng = SplitMix64(0x0c05_e7ed);
     let (mut worst, mut runs) = (0.0f64, 0);
     for (name, model) in [("solo12", solo12(true)), ("brick", brick())] {
         for g in [9.81, 0.0] {
@@ -251,7 +251,7 @@ fn multibody_conserved_what_the_symmetries_promise_on_random_motions() {
 #[test]
 fn multibody_conserved_fixed_base_breaks_momentum() {
     let model = solo12(false);
-    let mut rng = SplitMix64(0xf1_8ed);
+    let mut rng = SplitMix64(0x000f_18ed);
     for _ in 0..3 {
         let (q, u) = random_state(&model, &mut rng);
         let options = TrackOptions {

@@ -238,7 +238,7 @@ fn multibody_simulation_solo12_first_foot_at_free_fall_time() {
     q[2] += h - low;
     for e in [0.0, 0.5] {
         let options = SimulationOptions::new(LawId::Energetic, 0.8, e, 1.5);
-        let run = simulate(&model, &q, &vec![0.0; 18], &options).unwrap();
+        let run = simulate(&model, &q, &[0.0; 18], &options).unwrap();
         let first = &run.impacts[0];
         assert_eq!(first.contacts, vec![lowest], "{}", FEET[lowest]);
         let fall = (2.0 * h / G).sqrt();

@@ -93,7 +93,7 @@ fn kind_id(t: &Track) -> &'static str {
 
 /// The quantities a symmetry conserves that the integration did not keep within the
 /// tolerance (its error, not the physics).
-fn drifted<'a>(tr: &'a Tracking, tolerance: f64) -> Vec<&'a str> {
+fn drifted(tr: &Tracking, tolerance: f64) -> Vec<&str> {
     tr.tracks
         .iter()
         .filter(|t| t.expected && !t.conserved(tolerance))
