@@ -328,6 +328,7 @@ pub mod arg {
         b,
         contact,
         exponent,
+        floor,
         friction,
         gravity,
         inertia,
