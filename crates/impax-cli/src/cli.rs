@@ -110,6 +110,10 @@ pub struct SweepArgs {
     /// Write to FILE instead of stdout.
     #[arg(long, value_name = "FILE")]
     pub out: Option<PathBuf>,
+    /// A mechanism or robot swept over its state (`q.NAME`, `u.NAME`, `friction`,
+    /// `restitution`): its base state and contact.
+    #[command(flatten)]
+    pub mechanism: MechanismFlags,
 }
 
 #[derive(Debug, Args)]
@@ -394,7 +398,8 @@ pub struct ConservedArgs {
 #[derive(Debug, Args)]
 pub struct SimulateArgs {
     /// A built-in scenario (`bouncing-ball`, `rod-drop`, `double-pendulum-drop`,
-    /// `rocking-block`, `cradle`) or a TOML file with a `simulation` key.
+    /// `rocking-block`, `cradle`), a TOML file with a `simulation` key, or a planar mechanism
+    /// file (`[[body]]`, `[[joint]]`, `[[contact]]`).
     pub scenario: String,
     /// The impact law (default `energetic`).
     #[arg(long)]
@@ -460,6 +465,23 @@ pub struct SimulateArgs {
     /// cradle: the gap between neighbouring balls (0: touching).
     #[arg(long, allow_hyphen_values = true)]
     pub gap: Option<f64>,
+    /// A mechanism file: the initial generalized coordinates (SI: radians, metres), every one
+    /// in the order of its coordinates (default: the file's `q`).
+    #[arg(
+        long,
+        value_delimiter = ',',
+        allow_hyphen_values = true,
+        value_name = "Q,.."
+    )]
+    pub q: Option<Vec<f64>>,
+    /// A mechanism file: the initial generalized velocities (default: the file's `u`).
+    #[arg(
+        long,
+        value_delimiter = ',',
+        allow_hyphen_values = true,
+        value_name = "U,.."
+    )]
+    pub u: Option<Vec<f64>>,
     /// double-pendulum-drop: the masses m1,m2.
     #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
     pub masses: Option<Vec<f64>>,

@@ -1,6 +1,7 @@
 //! Planar impacts at several contacts: `lcp` (K = 2 and K = 4), `sequential` and `lzb`
-//! (K = 2) on a rod landing flat and on fixed sets of random problems (`W = J M⁻¹ Jᵀ` of
-//! random bodies, `v = J u`, random friction and restitution).
+//! (K = 2) on a rod landing flat, `lzb` on the same rod landing turning, and all on fixed sets
+//! of random problems (`W = J M⁻¹ Jᵀ` of random bodies, `v = J u`, random friction and
+//! restitution).
 //!
 //! Run: `cargo bench -p impax --bench multi_laws`.
 
@@ -16,6 +17,20 @@ fn rod(mu: f64, e: f64) -> MultiProblem {
         2,
         &[1.0, 0.0, 1.0, 0.0, 4.0, 0.0, -2.0, 1.0, 0.0, 4.0],
         &[0.0, -1.0, 0.0, -1.0],
+        &[mu],
+        &[e],
+    )
+    .unwrap()
+}
+
+/// The same rod landing turning, its ends approaching at 1 and 1.5: the contacts do not
+/// load in fixed proportions, and `lzb` integrates the whole path (the level landing is taken
+/// in closed form).
+fn rod_turning(mu: f64, e: f64) -> MultiProblem {
+    MultiProblem::from_upper(
+        2,
+        &[1.0, 0.0, 1.0, 0.0, 4.0, 0.0, -2.0, 1.0, 0.0, 4.0],
+        &[0.0, -1.0, 0.0, -1.5],
         &[mu],
         &[e],
     )
@@ -53,6 +68,13 @@ fn bench_multi(c: &mut Criterion) {
             b.iter(|| black_box(law.resolve(black_box(p))))
         });
     }
+    g.finish();
+
+    let r = rod_turning(0.3, 0.5);
+    let mut g = c.benchmark_group("rod-turning");
+    g.bench_with_input(BenchmarkId::from_parameter(LawId::Lzb), &r, |b, p| {
+        b.iter(|| black_box(LawId::Lzb.resolve(black_box(p))))
+    });
     g.finish();
 
     for (k, laws) in [

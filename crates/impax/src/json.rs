@@ -517,3 +517,39 @@ fn multi3_detail(o: &multi3::MultiOutcome) -> Value {
         multi3::MultiDetail::OneContact { detail, .. } => detail3(detail),
     }
 }
+
+/// The keys a mechanism's impact adds to a law's entry (`fields`: the outcome's or the
+/// breakdown's): `velocities_after` (`u⁺`), `energy_after` and `energy_ratio` (of the energy
+/// before `t0`), `energy_change_from_velocities` — all null when the law broke down
+/// (`applied` is `None`).
+pub fn mechanism_entry(
+    mut fields: Map<String, Value>,
+    t0: f64,
+    applied: Option<(f64, &[f64], Option<f64>)>,
+) -> Value {
+    match applied {
+        Some((energy_change, after, from_velocities)) => {
+            fields.insert(
+                "velocities_after".into(),
+                json!(after.iter().map(|&x| num(x)).collect::<Vec<_>>()),
+            );
+            fields.insert("energy_after".into(), num(t0 + energy_change));
+            fields.insert("energy_ratio".into(), num((t0 + energy_change) / t0));
+            fields.insert(
+                "energy_change_from_velocities".into(),
+                from_velocities.map_or(Value::Null, num),
+            );
+        }
+        None => {
+            for k in [
+                "velocities_after",
+                "energy_after",
+                "energy_ratio",
+                "energy_change_from_velocities",
+            ] {
+                fields.insert(k.into(), Value::Null);
+            }
+        }
+    }
+    Value::Object(fields)
+}

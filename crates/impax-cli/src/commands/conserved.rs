@@ -26,9 +26,26 @@ pub fn run(args: &ConservedArgs, out: &mut Vec<u8>) -> CliResult<()> {
         angles: args.params.angles_deg.clone(),
         rates: args.params.rates.clone(),
         position: args.params.position.clone(),
+        q: args.params.q.clone(),
+        u: args.params.u.clone(),
         ..MechanismSpec::default()
     };
-    let spec = mechanism::load(&args.mechanism, &flags)?;
+    for (flag, given) in [
+        ("contact", args.params.contact.is_some()),
+        ("floating-base", args.params.floating_base),
+        ("floor", args.params.floor.is_some()),
+    ] {
+        if given {
+            return Err(CliError::input(format!(
+                "--{flag}: not used by `conserved` (the motion is free; no impact)"
+            )));
+        }
+    }
+    let mut spec = mechanism::load(&args.mechanism, &flags)?;
+    if spec.file.is_some() {
+        // A mechanism file's coefficients and laws are for its impacts.
+        (spec.friction, spec.restitution, spec.laws) = (None, None, None);
+    }
     for (field, given) in [
         ("friction", spec.friction.is_some()),
         ("restitution", spec.restitution.is_some()),

@@ -25,13 +25,6 @@ pub struct Setup {
     pub laws: Vec<LawId>,
 }
 
-impl Setup {
-    /// Points × laws, or None if the product overflows `u64`.
-    pub fn impacts(&self) -> Option<u64> {
-        self.space.len().checked_mul(self.laws.len() as u64)
-    }
-}
-
 fn split_assignment<'a>(flag: &str, text: &'a str, form: &str) -> CliResult<(&'a str, &'a str)> {
     text.split_once('=')
         .map(|(n, v)| (n.trim(), v.trim()))
@@ -52,18 +45,7 @@ fn number(flag: &str, text: &str, part: &str) -> CliResult<f64> {
     Ok(x)
 }
 
-fn field(template: &Template, flag: &str, text: &str, name: &str) -> CliResult<Field> {
-    template
-        .field(name)
-        .map_err(|e| CliError::input(format!("--{flag} {text}: {e}")))
-}
-
-fn check_range(f: Field, flag: &str, text: &str, lo: f64, hi: f64) -> CliResult<()> {
-    f.check_range(lo, hi)
-        .map_err(|e| CliError::input(format!("--{flag} {text}: {e}")))
-}
-
-/// Parse and check the points of a sweep.
+/// Parse and check the points of a sweep of a body scenario.
 pub fn setup(args: &SpaceArgs) -> CliResult<Setup> {
     thread_count(args.threads)?;
     let mut template = Template::load(args.scenario.as_deref())?;
@@ -72,16 +54,60 @@ pub fn setup(args: &SpaceArgs) -> CliResult<Setup> {
     } else {
         parse_laws(&args.law)?
     };
-    let mut set = Vec::new();
+    let lookup = template.clone();
+    let (fields, space) = points(
+        args,
+        |name| lookup.field(name),
+        |f: Field| f.name(),
+        |f: Field, lo, hi| f.check_range(lo, hi),
+        |f, x| template.set(f, x),
+    )?;
+    let setup = Setup {
+        template,
+        fields,
+        space,
+        laws,
+    };
+    confirm(args, &setup.space, setup.laws.len())?;
+    Ok(setup)
+}
+
+/// The swept fields and the points of `--grid` or `--random`, with `--set` applied through
+/// `set`: the parsing and checks every kind of sweep shares. `lookup` finds a field by name,
+/// `name` names it back, `check` refuses a range it cannot take.
+pub fn points<F: Copy + PartialEq>(
+    args: &SpaceArgs,
+    lookup: impl Fn(&str) -> Result<F, String>,
+    name: impl Fn(F) -> String,
+    check: impl Fn(F, f64, f64) -> Result<(), String>,
+    mut set: impl FnMut(F, f64),
+) -> CliResult<(Vec<F>, Space)> {
+    let field = |flag: &str, text: &str, n: &str| {
+        lookup(n).map_err(|e| CliError::input(format!("--{flag} {text}: {e}")))
+    };
+    let check_range = |f: F, flag: &str, text: &str, lo: f64, hi: f64| {
+        check(f, lo, hi).map_err(|e| CliError::input(format!("--{flag} {text}: {e}")))
+    };
+    let mut fixed = Vec::new();
     for text in &args.set {
-        let (name, value) = split_assignment("set", text, "NAME=VALUE")?;
-        let f = field(&template, "set", text, name)?;
+        let (n, value) = split_assignment("set", text, "NAME=VALUE")?;
+        let f = field("set", text, n)?;
         let x = number("set", text, value)?;
         check_range(f, "set", text, x, x)?;
-        template.set(f, x);
-        set.push((f, text));
+        set(f, x);
+        fixed.push((f, text));
     }
-    let mut fields = Vec::new();
+    let mut fields: Vec<F> = Vec::new();
+    let twice = |fields: &[F], f: F, flag: &str, text: &str| {
+        if fields.contains(&f) {
+            Err(CliError::input(format!(
+                "--{flag} {text}: field `{}` is swept twice",
+                name(f)
+            )))
+        } else {
+            Ok(())
+        }
+    };
     let space =
         match (args.grid.is_empty(), args.random.is_empty()) {
             (false, false) => {
@@ -100,18 +126,13 @@ pub fn setup(args: &SpaceArgs) -> CliResult<Setup> {
                 }
                 let mut axes = Vec::new();
                 for text in &args.grid {
-                    let (name, spec) = split_assignment(
-                        "grid",
-                        text,
-                        "NAME=START:STOP:COUNT (e.g. alpha-deg=0:90:91)",
-                    )?;
+                    let form = "NAME=START:STOP:COUNT (e.g. alpha-deg=0:90:91)";
+                    let (n, spec) = split_assignment("grid", text, form)?;
                     let parts: Vec<&str> = spec.split(':').collect();
                     if parts.len() != 3 {
-                        return Err(CliError::input(format!(
-                        "--grid {text}: expected NAME=START:STOP:COUNT (e.g. alpha-deg=0:90:91)"
-                    )));
+                        return Err(CliError::input(format!("--grid {text}: expected {form}")));
                     }
-                    let f = field(&template, "grid", text, name)?;
+                    let f = field("grid", text, n)?;
                     let start = number("grid", text, parts[0])?;
                     let stop = number("grid", text, parts[1])?;
                     let count: u64 = parts[2].trim().parse().map_err(|_| {
@@ -120,15 +141,10 @@ pub fn setup(args: &SpaceArgs) -> CliResult<Setup> {
                             parts[2]
                         ))
                     })?;
-                    let axis = Axis::new(&f.name(), start, stop, count)
+                    let axis = Axis::new(&name(f), start, stop, count)
                         .map_err(|e| CliError::input(format!("--grid {text}: {e}")))?;
                     check_range(f, "grid", text, start, stop)?;
-                    if fields.contains(&f) {
-                        return Err(CliError::input(format!(
-                            "--grid {text}: field `{}` is swept twice",
-                            f.name()
-                        )));
-                    }
+                    twice(&fields, f, "grid", text)?;
                     fields.push(f);
                     axes.push(axis);
                 }
@@ -140,25 +156,20 @@ pub fn setup(args: &SpaceArgs) -> CliResult<Setup> {
                 })?;
                 let mut ranges = Vec::new();
                 for text in &args.random {
-                    let (name, spec) = split_assignment("random", text, "NAME=LO:HI")?;
+                    let (n, spec) = split_assignment("random", text, "NAME=LO:HI")?;
                     let parts: Vec<&str> = spec.split(':').collect();
                     if parts.len() != 2 {
                         return Err(CliError::input(format!(
                             "--random {text}: expected NAME=LO:HI"
                         )));
                     }
-                    let f = field(&template, "random", text, name)?;
+                    let f = field("random", text, n)?;
                     let lo = number("random", text, parts[0])?;
                     let hi = number("random", text, parts[1])?;
-                    let r = SampleRange::new(&f.name(), lo, hi)
+                    let r = SampleRange::new(&name(f), lo, hi)
                         .map_err(|e| CliError::input(format!("--random {text}: {e}")))?;
                     check_range(f, "random", text, lo, hi)?;
-                    if fields.contains(&f) {
-                        return Err(CliError::input(format!(
-                            "--random {text}: field `{}` is swept twice",
-                            f.name()
-                        )));
-                    }
+                    twice(&fields, f, "random", text)?;
                     fields.push(f);
                     ranges.push(r);
                 }
@@ -168,39 +179,43 @@ pub fn setup(args: &SpaceArgs) -> CliResult<Setup> {
                 )
             }
         };
-    let kind = if args.grid.is_empty() {
+    // A swept field takes every value of its axis: a `--set` of it would be silently ignored.
+    if let Some((f, text)) = fixed.iter().find(|(f, _)| fields.contains(f)) {
+        return Err(CliError::input(format!(
+            "--set {text}: field `{}` is also swept by --{}; give it either a fixed value or a range, not both",
+            name(*f),
+            kind(args)
+        )));
+    }
+    Ok((fields, space))
+}
+
+/// `grid` or `random`: the kind of points asked for.
+fn kind(args: &SpaceArgs) -> &'static str {
+    if args.grid.is_empty() {
         "random"
     } else {
         "grid"
-    };
-    // A swept field takes every value of its axis: a `--set` of it would be silently ignored.
-    if let Some((f, text)) = set.iter().find(|(f, _)| fields.contains(f)) {
-        return Err(CliError::input(format!(
-            "--set {text}: field `{}` is also swept by --{kind}; give it either a fixed value or a range, not both",
-            f.name()
-        )));
     }
-    let setup = Setup {
-        template,
-        fields,
-        space,
-        laws,
-    };
-    let Some(impacts) = setup.impacts() else {
+}
+
+/// Refuse a sweep of more than [`CONFIRM_ABOVE`] impacts without `--yes`, and one whose count
+/// overflows.
+pub fn confirm(args: &SpaceArgs, space: &Space, laws: usize) -> CliResult<()> {
+    let Some(impacts) = space.len().checked_mul(laws as u64) else {
         return Err(CliError::input(format!(
-            "--{kind}: {} points × {} laws overflows: more than 2⁶⁴ − 1 impacts, far beyond any sweep (more than 10⁷ impacts already need --yes)",
-            setup.space.len(),
-            setup.laws.len()
+            "--{}: {} points × {laws} laws overflows: more than 2⁶⁴ − 1 impacts, far beyond any sweep (more than 10⁷ impacts already need --yes)",
+            kind(args),
+            space.len(),
         )));
     };
     if impacts > CONFIRM_ABOVE && !args.yes {
         return Err(CliError::input(format!(
-            "{} points × {} laws = {impacts} impacts is more than {CONFIRM_ABOVE}: pass --yes to run it",
-            setup.space.len(),
-            setup.laws.len()
+            "{} points × {laws} laws = {impacts} impacts is more than {CONFIRM_ABOVE}: pass --yes to run it",
+            space.len(),
         )));
     }
-    Ok(setup)
+    Ok(())
 }
 
 /// The checked `--threads`: between 1 and [`MAX_THREADS`], or None for rayon's default.

@@ -396,7 +396,9 @@ pub enum MultiDetail {
         /// [`super::lzb`]); it is reported as the papers' independent variable.
         primaries: Vec<LzbPrimary>,
         /// The accepted integration steps (each ending at the end of a step or at an event);
-        /// 0 with one contact (the closed-form `energetic` path).
+        /// phases taken in closed form count none: 0 with one contact (the closed-form
+        /// `energetic` path) and for contacts that load in fixed proportions throughout (a
+        /// rod landing flat).
         steps: usize,
     },
     /// A one-contact law on a problem with one contact: its own detail and compression

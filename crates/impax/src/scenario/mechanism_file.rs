@@ -156,10 +156,11 @@ pub struct MechanismFile {
     pub contacts: Vec<ContactEntry>,
 }
 
-/// Whether a TOML text is a mechanism file (it has `[[body]]` tables).
+/// Whether a TOML text is a mechanism file: it has `[[body]]` tables (an array; a body
+/// scenario has one `[body]` table) or `[[joint]]` tables.
 pub fn is_mechanism_file(text: &str) -> bool {
     text.parse::<toml::Table>()
-        .map(|t| t.contains_key("body") || t.contains_key("joint"))
+        .map(|t| t.get("body").is_some_and(|b| b.is_array()) || t.contains_key("joint"))
         .unwrap_or(false)
 }
 
@@ -250,7 +251,11 @@ impl MechanismFile {
     /// and every error of [`Linkage::new`], each naming its field.
     pub fn planar(&self) -> Result<Linkage> {
         if self.space != Space::Planar {
-            return Err(invalid("space", "a `3d` file is a spatial mechanism"));
+            return Err(invalid(
+                "space",
+                "a `3d` file is a spatial mechanism: `impax compare`, `audit` and `sweep` take it; \
+                 `simulate` and `conserved` are planar only for now",
+            ));
         }
         let mut bodies = Vec::with_capacity(self.bodies.len());
         for b in &self.bodies {

@@ -387,14 +387,14 @@ impl BuiltRobot {
             _ => "fixed base",
         };
         let mut s = format!(
-            "{} ({}, {} bodies, {} coordinates; g = {}): contact `{}` strikes the floor z = {}",
+            "{} ({}, {} bodies, {} coordinates; g = {}): contact `{}` strikes the floor z = {:.6}",
             self.name,
             base,
             self.model.bodies().len(),
             self.model.nq(),
             self.model.gravity(),
             self.model.contacts()[self.contact].name,
-            crate::error::Num(self.model.floor()),
+            self.model.floor(),
         );
         if !self.mimic_joints.is_empty() {
             s.push_str(&format!(

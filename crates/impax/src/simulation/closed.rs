@@ -42,7 +42,12 @@
 //! (`α⁰_n < 0`) or two (`α⁰_n > 0`: off, or a force pulling the contact down): Painlevé's
 //! paradox. The way out of it is an impulsive "tangential impact" (Génot & Brogliato, *New
 //! results on Painlevé paradoxes*, Eur. J. Mech. A/Solids 18, 1999), which the simulation does
-//! not model: it detects the situation and stops (`painleve`).
+//! not model: it detects the situation and stops (`painleve`). A contact sliding below the
+//! bound can reach it as the body turns: where the coefficient and the free normal acceleration
+//! `α⁰_n` vanish together, the force needed grows without bound (Génot & Brogliato's singular
+//! point, the "dynamic jam"; for a uniform rod when `μ > 8/(3√3)`) and the integration cannot
+//! step past it; the run stops there too, with no solution (where the step size underflows
+//! with the coefficient within `1e-6` of the size of its terms: `run/step.rs`).
 //!
 //! ```
 //! use impax::mechanism::builtin::Rod;
@@ -151,6 +156,11 @@ pub(crate) struct Forces {
     /// The linear system's matrix determinant relative to its scale (1 without unknowns):
     /// its sign change marks a sliding regime's force coefficient through zero.
     pub det: f64,
+    /// The same determinant relative to the size of the terms its entries are made of (1
+    /// without unknowns): for one sliding contact `(W_nn − μ ŝ W_nt)/(|W_nn| + μ |W_nt|)`,
+    /// near zero where the coefficient of its force vanishes by cancellation (the Painlevé
+    /// bound).
+    pub coefficient: f64,
 }
 
 /// One solution of the enumeration: the closed contacts (those not `off`) and the forces.
@@ -233,24 +243,31 @@ impl ContactDynamics {
         }
         let dim = cols.len();
         let mut lambda = DVector::zeros(2 * k);
-        let mut det = 1.0;
+        let (mut det, mut coefficient) = (1.0, 1.0);
         if dim > 0 {
             let mut a = DMatrix::zeros(dim, dim);
             let mut rhs = DVector::zeros(dim);
+            // Each row's terms before they cancel.
+            let mut terms = vec![0.0f64; dim];
             for (r, &i) in rows.iter().enumerate() {
                 for (c, &(j, ct, cn)) in cols.iter().enumerate() {
-                    a[(r, c)] = ct * self.w[(i, 2 * j)] + cn * self.w[(i, 2 * j + 1)];
+                    let (x, y) = (ct * self.w[(i, 2 * j)], cn * self.w[(i, 2 * j + 1)]);
+                    a[(r, c)] = x + y;
+                    terms[r] += x.abs() + y.abs();
                 }
                 rhs[r] = -self.alpha0[i];
             }
             let scale: f64 = (0..dim)
                 .map(|r| (0..dim).fold(0.0f64, |s, c| s.max(a[(r, c)].abs())))
                 .product();
+            let determinant = a.determinant();
             det = if scale > 0.0 {
-                a.determinant() / scale
+                determinant / scale
             } else {
                 0.0
             };
+            let size: f64 = terms.iter().product();
+            coefficient = if size > 0.0 { determinant / size } else { 0.0 };
             let y = least_norm(a, rhs);
             for (c, &(j, ct, cn)) in cols.iter().enumerate() {
                 lambda[2 * j] += ct * y[c];
@@ -264,6 +281,7 @@ impl ContactDynamics {
             alpha,
             accel,
             det,
+            coefficient,
         }
     }
 
@@ -582,6 +600,8 @@ pub(crate) struct Watch {
     pub lambda: DVector<f64>,
     pub v: DVector<f64>,
     pub det: f64,
+    /// [`Forces::coefficient`] of the closed contacts' regimes.
+    pub coefficient: f64,
 }
 
 /// The watch quantities of the closed contacts at `y = (q, u, …)`.
@@ -600,5 +620,6 @@ pub(crate) fn watch<M: Mechanism + ?Sized>(
         lambda: f.lambda,
         v: cd.v,
         det: f.det,
+        coefficient: f.coefficient,
     })
 }

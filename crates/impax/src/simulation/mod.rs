@@ -34,7 +34,8 @@
 //! * **rest** ([`StopReason::Rest`]): every body still, to round-off of the run's speeds, with
 //!   closed contacts whose forces balance gravity;
 //! * **Painlevé** ([`StopReason::Painleve`]): the force problem of the closed contacts has no
-//!   solution or several — the run stops there rather than integrate through.
+//!   solution or several, or a sliding contact reaches the bound where its force grows without
+//!   bound — the run stops there rather than integrate through.
 //!
 //! Every impact is recorded with its energy ledger: `ΔT`, its split into normal and friction
 //! work (the law's) and into translational and rotational parts (from the bodies'

@@ -38,7 +38,10 @@ pub enum StopReason {
     /// (`solutions ≥ 2`): Painlevé's paradox of sliding with friction (a rod sliding on a
     /// rough floor with `μ` above a bound set by its inertia and angle). The way out is an
     /// impulsive "tangential impact" (Génot & Brogliato 1999), which is not modelled: the run
-    /// ends at that instant, without integrating through.
+    /// ends at that instant, without integrating through. A sliding contact can also reach
+    /// the bound as the body turns, its force growing without bound as the force's coefficient
+    /// and the free normal acceleration vanish together (the "dynamic jam"): the run ends
+    /// there with `solutions = 0` (no bounded force continues the slip).
     Painleve {
         /// A sliding contact of the problem (the first; or the first closed contact).
         contact: usize,

@@ -30,6 +30,7 @@ mod regression_brach_frictionless;
 mod regression_energetic_overflow;
 mod regression_energy_gain_round_off;
 mod regression_energy_gain_small;
+mod regression_lzb_cradle_friction;
 mod regression_scale_invariance;
 mod regression_simulation_penetration;
 mod regression_smith_accuracy;

@@ -99,7 +99,7 @@ fn one_contact_lcp_is_the_planar_lcp_and_sequential_is_energetic() {
 }
 
 #[test]
-fn one_contact_laws_through_resolve_multi_with_one_contact() {
+fn one_contact_laws_through_resolve_with_one_contact() {
     let mut rng = SplitMix64(5);
     for _ in 0..2000 {
         let one = random_one(&mut rng);

@@ -6,7 +6,8 @@
 //! * decoupled contacts (block-diagonal `W`): each contact is its own `energetic` (the
 //!   integrated law against the closed form);
 //! * a rod lying flat landing on both ends (rank-3 `W` from `J M⁻¹ Jᵀ`): the body leaves at
-//!   `(0, e |v_y|, 0)` for every `e` and `μ`;
+//!   `(0, e |v_y|, 0)` for every `e` and `μ`; taken in closed form (no integration step), it
+//!   is the limit of the integrated path of a slightly tilted landing (`O(δ)`);
 //! * Housner's rocking block: with the resting corner not pressed by the impulse at the
 //!   striking one (`b² < 2 h²`), `ω⁺/ω⁻ = 1 − (3/2) sin²α` to 1e-12, the resting corner
 //!   untouched;
@@ -245,6 +246,44 @@ fn rod_landing_flat() {
         }
     }
     println!("rod landing flat: within {worst:.1e} of (0, e |v_y|, 0)");
+}
+
+/// The rod landing flat is taken in closed form (both ends load in fixed proportions, no
+/// integration step); tilting its landing by `δ` (one end approaching at `1 + δ`) breaks the
+/// proportions and the path is integrated: its impulses tend to the closed form's as
+/// `δ → 0`, by `O(δ)`.
+#[test]
+fn closed_form_is_the_limit_of_the_integrated_path() {
+    // m = 1, l = 1 (W_tt = [[1, 1], [1, 1]]: rank 3).
+    let w = [1.0, 0.0, 1.0, 0.0, 4.0, 0.0, -2.0, 1.0, 0.0, 4.0];
+    for (mu, e) in [(0.3, 0.5), (0.0, 1.0), (1.0, 0.0)] {
+        let rod = |d: f64| {
+            let p = MultiProblem::from_upper(2, &w, &[0.0, -1.0, 0.0, -1.0 - d], &[mu], &[e]);
+            lzb::resolve(&p.unwrap()).unwrap()
+        };
+        let flat = rod(0.0);
+        assert_eq!(steps(&flat), 0);
+        for c in &flat.contacts {
+            assert!((c.impulse.y - 0.5 * (1.0 + e)).abs() < 1e-15, "{c:?}");
+            assert!((c.velocity_after.y - e).abs() < 1e-15, "{c:?}");
+        }
+        let mut gaps = Vec::new();
+        for d in [1e-3, 1e-5] {
+            let tilted = rod(d);
+            assert!(steps(&tilted) > 0);
+            let gap = flat
+                .contacts
+                .iter()
+                .zip(&tilted.contacts)
+                .map(|(a, b)| (a.impulse - b.impulse).norm())
+                .fold(0.0, f64::max);
+            assert!(gap < 10.0 * d, "μ = {mu}, e = {e}, δ = {d}: {gap:e}");
+            gaps.push(gap);
+        }
+        // O(δ): a hundred times closer for a hundred times smaller δ.
+        let ratio = gaps[0] / gaps[1];
+        assert!((30.0..300.0).contains(&ratio), "{gaps:?}");
+    }
 }
 
 // ---------------------------------------------------------------------------------------

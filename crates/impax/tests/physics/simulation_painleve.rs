@@ -17,6 +17,35 @@
 //! leaving, and a positive `N`) when it is positive (the indeterminate case): Génot & Brogliato
 //! 1999. The simulation must stop there, naming the contact and the number of solutions,
 //! and not integrate through; below the bound the contact closes and slides.
+//!
+//! **Reaching the bound while sliding.** The bound depends on the angle, so a rod sliding
+//! below it can reach it as it turns (from `θ < atan 2`, `θ` increasing towards the root
+//! `θ_P` of `μ_P(θ) = μ`). Write `d = 1 + 3 cos²θ − 3 μ sin θ cos θ` (the force's
+//! coefficient) and `q = g − (l/2) sin θ θ̇²` (minus the free normal acceleration), so that
+//! `N/m = q/d`, `θ̈ = 6 (μ sin θ − cos θ) q/(l d)`, and
+//!
+//! ```text
+//! ḋ = d'(θ) θ̇,     q̇ = −(l/2) cos θ θ̇³ − 6 sin θ θ̇ (μ sin θ − cos θ) q/d.
+//! ```
+//!
+//! Near `θ_P`, with `τ = t_P − t` and `d ≈ −d'(θ_P) θ̇ τ`: `dq/dτ = a + β q/τ`
+//! (`a = (l/2) cos θ θ̇³`), whose solutions are `q = a τ/(1 − β) + C τ^β` with
+//!
+//! ```text
+//! β = 2 sin θ_P (μ sin θ_P − cos θ_P) / (2 sin θ_P cos θ_P + μ (cos²θ_P − sin²θ_P)).
+//! ```
+//!
+//! With `β > 1` (`4/3 < μ < μ_C = 8/(3√3) ≈ 1.5396`, where `β = 1`) `q` vanishes before
+//! `d`: the normal force falls to zero and the end lifts off just short of the bound, which
+//! is then never reached while sliding. With `β < 1` (`μ > μ_C`) a rod that keeps `q > 0`
+//! reaches `d = q = 0` at a finite time `t_P`, its normal force growing as `τ^(β−1)` without
+//! bound (its impulse finite): Génot & Brogliato's singular point, the "dynamic jam", past
+//! which the rigid-body equations do not say how the motion goes on (a tangential impact, a
+//! lift-off or a slip into the indeterminate region). The simulation must stop there with
+//! `painleve` at `t_P`, not integrate through. `t_P` comes from an independent integration of
+//! the sliding rod's equations multiplied by `d` (time `s`, `dt/ds = d`: regular through the
+//! singular point, which the path approaches as `s` grows). Regression: the simulation failed
+//! there with an error ("the step size underflowed") instead of reporting the paradox.
 
 use impax::law::LawId;
 use impax::mechanism::builtin::Rod;
@@ -190,4 +219,173 @@ fn sliding_samples_have_a_positive_force_coefficient() {
             }
         }
     }
+}
+
+/// The lower root `θ_P < atan 2` of `μ_P(θ) = μ` (`μ > 4/3`).
+fn lower_root(mu: f64) -> f64 {
+    let (mut lo, mut hi) = (1e-6, 2f64.atan());
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if painleve_bound(mid) > mu {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    lo
+}
+
+/// `β` at the bound (module docs): above 1 the end lifts off short of the bound, below 1 it
+/// reaches it while sliding.
+fn beta(mu: f64) -> f64 {
+    let (s, c) = lower_root(mu).sin_cos();
+    2.0 * s * (mu * s - c) / (2.0 * s * c + mu * (c * c - s * s))
+}
+
+/// The unit rod's sliding equations (end A on the floor, slipping towards −x) multiplied by
+/// `d`, in `s` (`dt/ds = d`), for the state `(θ, θ̇, ẋ, t)`; with `d` and `q`.
+fn sliding_field(y: &[f64; 4], mu: f64) -> ([f64; 4], f64, f64) {
+    let (s, c) = y[0].sin_cos();
+    let d = 1.0 + 3.0 * c * c - 3.0 * mu * s * c;
+    let q = G - 0.5 * s * y[1] * y[1];
+    ([y[1] * d, 6.0 * (mu * s - c) * q, mu * q, d], d, q)
+}
+
+fn rk4(y: &[f64; 4], h: f64, mu: f64) -> [f64; 4] {
+    let at = |k: &[f64; 4], f: f64| std::array::from_fn::<f64, 4, _>(|i| y[i] + f * h * k[i]);
+    let k1 = sliding_field(y, mu).0;
+    let k2 = sliding_field(&at(&k1, 0.5), mu).0;
+    let k3 = sliding_field(&at(&k2, 0.5), mu).0;
+    let k4 = sliding_field(&at(&k3, 1.0), mu).0;
+    std::array::from_fn(|i| y[i] + h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]))
+}
+
+/// How the sliding of the independent integration ends.
+#[derive(Debug, PartialEq)]
+enum SlideEnd {
+    /// The normal force vanished (`q = 0`, `d > 0`): lift-off.
+    Lift,
+    /// `d` and `q` reached zero together: the singular point.
+    Jam,
+    /// The slip halted.
+    Halt,
+}
+
+/// The independent integration (classical Runge–Kutta in `s`, step `ds`) of the rod of
+/// [`sliding_rod_with`] until its slide ends; the state `(θ, θ̇, ẋ, t)` there (a lift-off
+/// located by bisection in the last step).
+fn slide(theta: f64, omega: f64, va: f64, mu: f64, ds: f64) -> (SlideEnd, [f64; 4]) {
+    let mut y = [theta, omega, va - 0.5 * omega * theta.sin(), 0.0];
+    for _ in 0..10_000_000 {
+        let d = sliding_field(&y, mu).1;
+        if y[2] + 0.5 * y[0].sin() * y[1] >= 0.0 {
+            return (SlideEnd::Halt, y);
+        }
+        if d < 1e-13 {
+            return (SlideEnd::Jam, y);
+        }
+        let next = rk4(&y, ds, mu);
+        if sliding_field(&next, mu).2 <= 0.0 {
+            let (mut lo, mut hi) = (0.0, ds);
+            for _ in 0..100 {
+                let mid = 0.5 * (lo + hi);
+                if sliding_field(&rk4(&y, mid, mu), mu).2 > 0.0 {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+            }
+            assert!(d > 0.0);
+            return (SlideEnd::Lift, rk4(&y, lo, mu));
+        }
+        y = next;
+    }
+    panic!("the slide does not end");
+}
+
+/// The unit rod at `θ` with end A on the floor sliding at `va < 0` and `θ̇ = omega`, until
+/// `until`.
+fn sliding_rod_with(theta: f64, omega: f64, va: f64, mu: f64, until: f64) -> Run {
+    let rod = Rod::new(1.0, 1.0, G, 0.0).unwrap();
+    let (s, c) = theta.sin_cos();
+    let q = [0.5 * c, 0.5 * s, theta];
+    let u = [va - 0.5 * omega * s, 0.5 * omega * c, omega];
+    simulate(
+        &rod,
+        &q,
+        &u,
+        &SimulationOptions::new(LawId::Energetic, mu, 0.5, until),
+    )
+    .unwrap()
+}
+
+/// Above `μ_C` a rod starting to slide below the bound reaches it as it turns: the run stops
+/// with `painleve` when it gets there (the independent integration's `t_P`, `θ_P`), and
+/// nothing after that instant is integrated.
+#[test]
+fn a_rod_turning_into_the_bound_while_sliding_stops_there() {
+    let mu_c = 8.0 / (3.0 * 3f64.sqrt());
+    assert!((beta(mu_c) - 1.0).abs() < 1e-9, "{}", beta(mu_c));
+    let (mu, theta0, omega, va) = (2.0, 30f64.to_radians(), 2.0, -10.0);
+    assert!(beta(mu) < 1.0);
+    // It starts well below the bound (μ_P(30°) = 2.5).
+    assert!(painleve_bound(theta0) > 1.2 * mu);
+    let theta_p = lower_root(mu);
+    let (end, at) = slide(theta0, omega, va, mu, 1e-4);
+    assert_eq!(end, SlideEnd::Jam);
+    let t_p = at[3];
+    // There, still sliding, on the bound (θ_P) with zero free normal acceleration.
+    assert!((at[0] - theta_p).abs() < 1e-7, "{} vs {}", at[0], theta_p);
+    let q = sliding_field(&at, mu).2;
+    assert!(q > 0.0 && q < 1e-3 * G, "{q}");
+    assert!(at[2] + 0.5 * at[0].sin() * at[1] < -4.0);
+    assert!(theta_p - theta0 > 7f64.to_radians());
+    let r = sliding_rod_with(theta0, omega, va, mu, 0.2);
+    assert_eq!(
+        r.stop,
+        StopReason::Painleve {
+            contact: 0,
+            solutions: 0
+        }
+    );
+    assert!((r.end_time - t_p).abs() < 1e-9, "{} vs {t_p}", r.end_time);
+    // It slid all the way, and nothing past t_P was integrated.
+    assert_eq!(
+        r.events,
+        vec![(
+            0.0,
+            EventKind::Closes {
+                contact: 0,
+                regime: Regime::Slip(SlipDirection::Negative)
+            }
+        )]
+    );
+    assert!(r.impacts.is_empty());
+    let last = r.samples.last().unwrap();
+    assert_eq!(last.t, r.end_time);
+    assert!((last.q[2] - theta_p).abs() < 1e-6, "{}", last.q[2]);
+    for s in &r.samples {
+        assert!(s.t <= r.end_time);
+        assert!(s.q[2] <= theta_p + 1e-9, "θ = {} at t = {}", s.q[2], s.t);
+    }
+}
+
+/// Between `4/3` and `μ_C` the same rod never reaches the bound while sliding: its normal
+/// force vanishes just short of it and the end lifts off (no paradox); the run records the
+/// lift-off at the independent integration's instant and flies on.
+#[test]
+fn below_the_critical_friction_the_end_lifts_off_short_of_the_bound() {
+    let (mu, theta0, omega, va) = (1.5, 45f64.to_radians(), 3.0, -3.0);
+    assert!(beta(mu) > 1.0 && mu > 4.0 / 3.0);
+    assert!(painleve_bound(theta0) > mu);
+    let (end, at) = slide(theta0, omega, va, mu, 1e-4);
+    assert_eq!(end, SlideEnd::Lift);
+    // Just short of the bound: d small but positive.
+    let d = sliding_field(&at, mu).1;
+    assert!(d > 0.0 && d < 1e-3, "{d}");
+    let r = sliding_rod_with(theta0, omega, va, mu, 0.1);
+    assert_eq!(r.stop, StopReason::TimeLimit);
+    let (t, kind) = &r.events[1];
+    assert_eq!(*kind, EventKind::Opens { contact: 0 });
+    assert!((t - at[3]).abs() < 1e-8, "{t} vs {}", at[3]);
 }

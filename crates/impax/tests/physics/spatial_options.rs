@@ -1,5 +1,5 @@
 //! The tolerance option of the spatial Darboux–Keller integration
-//! (`LawId::resolve3_with(problem, &SpatialOptions { rtol })`).
+//! (`LawId::resolve_with(problem, &Options::default().rtol(rtol))`).
 //!
 //! On 500 random problems (`W = A Aᵀ + 0.05 I` with `A` uniform in `[−1, 1]`, every slip
 //! direction, `μ ∈ [0, 1.5]`, `e ∈ [0, 1]`), for `newton`, `poisson` and `energetic`:

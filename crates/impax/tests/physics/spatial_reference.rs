@@ -1,5 +1,5 @@
 //! Independent reference integration of the spatial Darboux–Keller laws (`newton`,
-//! `poisson`, `energetic` in 3D), compared with `LawId::resolve3` on 2,000 random problems
+//! `poisson`, `energetic` in 3D), compared with `LawId::resolve` on 2,000 random problems
 //! and 12 jamb problems.
 //!
 //! The reference shares no code with the library's integrator (no Dormand–Prince, no

@@ -9,7 +9,7 @@
 //!   `v_n ≥ 0` (including `0` and `−0`); `μ < 0`; `e < 0` or `e > 1`; a velocity whose
 //!   approach energy overflows;
 //! * valid limits are accepted: `μ = 0`, `e = 0`, `e = 1`, `v_t = 0`, round-off asymmetry;
-//! * no law (all eight ids through `resolve3`) panics on extreme but valid problems: `W`
+//! * no law (all eight ids through `LawId::resolve`) panics on extreme but valid problems: `W`
 //!   scaled by 10^±100, near-singular through the coupling (Schur complement ~1e-6), `w_nn`
 //!   from 1e-6 to 1e6 of `W_tt`, `W_tt` anisotropic up to 100; `|v|` over 10^±100,
 //!   `|v_t|/|v_n| ∈ {0, 1e-12, 1, 1e12}`, `μ ∈ {0, 1e-300, 1e-12, 2, 1e3, 1e50}`,

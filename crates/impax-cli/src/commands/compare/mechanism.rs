@@ -92,33 +92,20 @@ fn document(
     let entries: Vec<Value> = results
         .iter()
         .map(|(_, r)| match &r.resolution {
-            Ok(o) => {
-                let mut e = json::outcome_fields(o, "contact_velocity_after");
-                let after = r.velocities_after.as_ref().expect("applied");
-                e.insert(
-                    "velocities_after".into(),
-                    json!(after.iter().map(|&x| num(x)).collect::<Vec<_>>()),
-                );
-                e.insert("energy_after".into(), num(t0 + o.energy_change));
-                e.insert("energy_ratio".into(), num((t0 + o.energy_change) / t0));
-                e.insert(
-                    "energy_change_from_velocities".into(),
-                    r.energy_change_from_velocities.map_or(Value::Null, num),
-                );
-                Value::Object(e)
-            }
-            Err(b) => {
-                let mut e = json::breakdown_fields(b, "contact_velocity_after", false);
-                for k in [
-                    "velocities_after",
-                    "energy_after",
-                    "energy_ratio",
-                    "energy_change_from_velocities",
-                ] {
-                    e.insert(k.into(), Value::Null);
-                }
-                Value::Object(e)
-            }
+            Ok(o) => json::mechanism_entry(
+                json::outcome_fields(o, "contact_velocity_after"),
+                t0,
+                Some((
+                    o.energy_change,
+                    r.velocities_after.as_ref().expect("applied"),
+                    r.energy_change_from_velocities,
+                )),
+            ),
+            Err(b) => json::mechanism_entry(
+                json::breakdown_fields(b, "contact_velocity_after", false),
+                t0,
+                None,
+            ),
         })
         .collect();
     json!({

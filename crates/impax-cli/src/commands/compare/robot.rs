@@ -84,33 +84,16 @@ pub(crate) fn document(
 /// energies.
 fn entry(r: &SpatialMechanismOutcome, t0: f64) -> Value {
     match &r.resolution {
-        Ok(o) => {
-            let mut e = json::spatial_outcome_fields(o);
-            let after = r.velocities_after.as_deref().unwrap_or_default();
-            e.insert(
-                "velocities_after".into(),
-                json!(after.iter().map(|&x| num(x)).collect::<Vec<_>>()),
-            );
-            e.insert("energy_after".into(), num(t0 + o.energy_change));
-            e.insert("energy_ratio".into(), num((t0 + o.energy_change) / t0));
-            e.insert(
-                "energy_change_from_velocities".into(),
-                r.energy_change_from_velocities.map_or(Value::Null, num),
-            );
-            Value::Object(e)
-        }
-        Err(b) => {
-            let mut e = json::spatial_breakdown_fields(b);
-            for k in [
-                "velocities_after",
-                "energy_after",
-                "energy_ratio",
-                "energy_change_from_velocities",
-            ] {
-                e.insert(k.into(), Value::Null);
-            }
-            Value::Object(e)
-        }
+        Ok(o) => json::mechanism_entry(
+            json::spatial_outcome_fields(o),
+            t0,
+            Some((
+                o.energy_change,
+                r.velocities_after.as_deref().unwrap_or_default(),
+                r.energy_change_from_velocities,
+            )),
+        ),
+        Err(b) => json::mechanism_entry(json::spatial_breakdown_fields(b), t0, None),
     }
 }
 

@@ -5,7 +5,8 @@ use super::{Case, Shape, SimSpec, NAMES};
 use crate::input::{CliError, CliResult};
 use crate::output::fmt::Plain;
 use impax::mechanism::builtin::STANDARD_GRAVITY;
-use impax::scenario::MAX_ANGLE_DEG;
+use impax::mechanism::Mechanism;
+use impax::scenario::{MechanismFile, MechanismSpec, MAX_ANGLE_DEG};
 use impax::simulation::scenarios::{self, Initial};
 use impax::simulation::SimulationOptions;
 use impax::LawId;
@@ -39,7 +40,11 @@ type Built = (Initial, Vec<Shape>, String);
 /// Build the scenario, refusing parameters it does not have.
 pub fn build(spec: &SimSpec) -> CliResult<Case> {
     let name = spec.simulation.as_str();
-    let allowed = parameters(name)?;
+    let allowed = if spec.file.is_some() {
+        &["q", "u"][..]
+    } else {
+        parameters(name)?
+    };
     refuse_others(spec, name, allowed)?;
     let g = spec.gravity.unwrap_or(STANDARD_GRAVITY);
     let (law_default, mu_default, e_default, until_default) = match name {
@@ -52,11 +57,12 @@ pub fn build(spec: &SimSpec) -> CliResult<Case> {
     let friction = spec.friction.unwrap_or(mu_default);
     let restitution = spec.restitution.unwrap_or(e_default);
     let until = spec.until.unwrap_or(until_default);
-    let (initial, shapes, description) = match name {
-        "bouncing-ball" => bouncing_ball(spec, g)?,
-        "rod-drop" => rod_drop(spec, g)?,
-        "rocking-block" => rocking_block(spec, g)?,
-        "cradle" => cradle(spec)?,
+    let (initial, shapes, description) = match (&spec.file, name) {
+        (Some(file), _) => mechanism_file(spec, file, g)?,
+        (None, "bouncing-ball") => bouncing_ball(spec, g)?,
+        (None, "rod-drop") => rod_drop(spec, g)?,
+        (None, "rocking-block") => rocking_block(spec, g)?,
+        (None, "cradle") => cradle(spec)?,
         _ => double_pendulum_drop(spec, g)?,
     };
     let samples = spec.samples.unwrap_or(1000);
@@ -131,6 +137,8 @@ fn refuse_others(spec: &SimSpec, name: &str, allowed: &[&str]) -> CliResult<()> 
         ("balls", spec.balls.is_some()),
         ("v0", spec.v0.is_some()),
         ("gap", spec.gap.is_some()),
+        ("q", spec.q.is_some()),
+        ("u", spec.u.is_some()),
         // The cradle's balls move on a horizontal table: gravity acts across it.
         ("gravity", name == "cradle" && spec.gravity.is_some()),
     ];
@@ -243,5 +251,29 @@ fn double_pendulum_drop(spec: &SimSpec, g: f64) -> CliResult<Built> {
             "double pendulum (m = {}, {}; l = {}, {}) released at θ = ({}°, {}°), rates ({}, {}) rad/s, floor y = {floor}",
             m[0], m[1], l[0], l[1], a[0], a[1], u[0], u[1]
         ),
+    ))
+}
+
+/// A planar mechanism file at its state (`q`, `u` from the flags or the file), each body drawn
+/// as a dot at its centre of mass.
+fn mechanism_file(spec: &SimSpec, file: &MechanismFile, g: f64) -> CliResult<Built> {
+    let built = MechanismSpec {
+        mechanism: spec.simulation.clone(),
+        gravity: Some(g),
+        q: spec.q.clone(),
+        u: spec.u.clone(),
+        file: Some(file.clone()),
+        ..MechanismSpec::default()
+    }
+    .build()?;
+    let shapes = vec![Shape::Ball(0.0); built.mechanism.bodies().len()];
+    Ok((
+        Initial {
+            mechanism: built.mechanism,
+            q: built.q,
+            u: built.u,
+        },
+        shapes,
+        built.description,
     ))
 }

@@ -4,6 +4,7 @@
 use super::NAMES;
 use crate::cli::SimulateArgs;
 use crate::input::{CliError, CliResult};
+use impax::scenario::{is_mechanism_file, MechanismFile, Space};
 use serde::Deserialize;
 
 /// Every parameter of every scenario (flags or TOML); each scenario accepts some.
@@ -37,6 +38,11 @@ pub struct SimSpec {
     pub balls: Option<usize>,
     pub v0: Option<f64>,
     pub gap: Option<f64>,
+    pub q: Option<Vec<f64>>,
+    pub u: Option<Vec<f64>>,
+    /// A mechanism file to simulate (then `simulation` is its name). Not a key.
+    #[serde(skip)]
+    pub file: Option<MechanismFile>,
 }
 
 /// The parameters given as flags.
@@ -69,6 +75,9 @@ pub(super) fn flags(args: &SimulateArgs) -> SimSpec {
         balls: args.balls,
         v0: args.v0,
         gap: args.gap,
+        q: args.q.clone(),
+        u: args.u.clone(),
+        file: None,
     }
 }
 
@@ -103,7 +112,9 @@ fn merge(spec: &mut SimSpec, over: &SimSpec) {
         omega,
         balls,
         v0,
-        gap
+        gap,
+        q,
+        u
     );
 }
 
@@ -121,9 +132,44 @@ pub(super) fn load(source: &str, over: &SimSpec) -> CliResult<SimSpec> {
                 NAMES.join(", ")
             ))
         })?;
-        toml::from_str(&text)
-            .map_err(|e| CliError::input(format!("{source}: {}", e.message().replace('\n', " "))))?
+        if is_mechanism_file(&text) {
+            mechanism_file(source, &text)?
+        } else {
+            toml::from_str(&text).map_err(|e| {
+                CliError::input(format!("{source}: {}", e.message().replace('\n', " ")))
+            })?
+        }
     };
     merge(&mut spec, over);
     Ok(spec)
+}
+
+/// A mechanism file to simulate: its name, friction, restitution and its one law (if it names
+/// exactly one).
+fn mechanism_file(source: &str, text: &str) -> CliResult<SimSpec> {
+    let file = MechanismFile::parse(text).map_err(|e| CliError::input(format!("{source}: {e}")))?;
+    if file.space == Space::Spatial {
+        return Err(CliError::input(format!(
+            "{source}: simulating a spatial mechanism is not available yet (`impax compare` and \
+             `impax audit` take it)"
+        )));
+    }
+    let name = file.name.clone().unwrap_or_else(|| {
+        std::path::Path::new(source)
+            .file_stem()
+            .map_or("mechanism".into(), |s| s.to_string_lossy().into_owned())
+    });
+    Ok(SimSpec {
+        simulation: name,
+        law: file
+            .laws
+            .as_ref()
+            .filter(|l| l.len() == 1)
+            .map(|l| l[0].clone()),
+        friction: file.friction,
+        restitution: file.restitution,
+        gravity: file.gravity,
+        file: Some(file),
+        ..SimSpec::default()
+    })
 }

@@ -204,6 +204,22 @@ impl Field {
         field
     }
 
+    /// The tangential impulse rates `T f` for the normal forces `f` (of the first `k`
+    /// contacts).
+    pub(super) fn tangential(&self, k: usize, f: &[f64; MAXK]) -> [f64; MAXK] {
+        let mut pt = [0.0; MAXK];
+        for (ptj, row) in pt.iter_mut().zip(&self.map).take(k) {
+            *ptj = dot(&row[..k], &f[..k]);
+        }
+        pt
+    }
+
+    /// Contact `j`'s divisor of the deflection rate, `ds_j/dτ = −v_nj / div_j` (1 in
+    /// compression, `e_j²` in expansion).
+    pub(super) fn div(&self, j: usize) -> f64 {
+        self.div[j]
+    }
+
     /// The velocities, forces and tangential rates at the state `y` (`N = 4K`).
     #[inline(always)]
     pub(super) fn eval<const N: usize>(&self, setup: &Setup, y: &[f64]) -> Eval {

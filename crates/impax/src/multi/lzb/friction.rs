@@ -16,16 +16,20 @@
 //! is taken: each sticking contact inside its cone (`|x_j| ≤ μ_j F_j`), each slipping one
 //! accelerating in its direction (`σ_j dv_tj/dτ ≥ 0`, to round-off). A contact whose stick
 //! just broke must slip; a contact whose slip just halted sticks or reverses (as in the
-//! one-contact law). If no assignment is consistent (not observed), the least inconsistent
-//! one is taken.
+//! one-contact law). Past six contacts at rest at once, the first six (the contacts of the
+//! event first) are enumerated and the others take the regime the all-stick solve gives them
+//! (stick inside the cone, else slip against the friction needed). If no assignment is
+//! consistent (not observed), the least inconsistent one is taken.
 
 use super::common::pseudo_inverse;
 use super::field::{tangential_acceleration, tangential_rates};
 use super::state::{Modes, Setup, StickSet, Tangent, MAXK};
 
 /// The most contacts whose regimes are chosen by enumeration (`3^6 = 729` assignments);
-/// beyond, the contacts past the sixth keep slipping in the direction the all-stick solve
-/// gives (not observed: it needs seven contacts at rest at once).
+/// beyond, each contact past the sixth takes its regime from the all-stick solve: stick if
+/// that solve keeps it inside its cone, else slip against the friction it would need (seven
+/// contacts at rest at once: the eight-ball cradle with friction, whose seven contacts all
+/// stick).
 const ENUMERATED: usize = 6;
 
 /// The stick set of the contacts `idx` (increasing): `(W_SS^tt)⁺` by Jacobi's rotations.
@@ -76,16 +80,8 @@ pub(super) fn choose(
 ) {
     let k = setup.k;
     let z = rest.len().min(ENUMERATED);
-    // Past the enumerated ones (not observed), slip against the all-stick friction.
     if rest.len() > z {
-        for &j in rest {
-            modes.tangent[j] = Tangent::Stick;
-        }
-        rebuild(setup, modes);
-        let x = tangential_rates(setup, modes, f);
-        for &j in &rest[z..] {
-            modes.tangent[j] = Tangent::Slip(if x[j] > 0.0 { -1.0 } else { 1.0 });
-        }
+        tail(setup, modes, f, rest, allowed, z);
     }
     let fscale = f[..k].iter().fold(0.0f64, |m, x| m.max(x.abs()));
     let mut best = (f64::INFINITY, 0usize);
@@ -110,7 +106,7 @@ pub(super) fn choose(
             }
             assign(modes, rest, z, code);
             rebuild(setup, modes);
-            let bad = violation(setup, modes, f, &rest[..z], fscale);
+            let bad = violation(setup, modes, f, rest, fscale);
             if bad == 0.0 {
                 return;
             }
@@ -121,6 +117,38 @@ pub(super) fn choose(
     }
     assign(modes, rest, z, best.1);
     rebuild(setup, modes);
+}
+
+/// The regimes of the contacts of `rest` past the first `z` (those not enumerated), from the
+/// solve with every contact of `rest` in stick: a contact that may stick and needs no more
+/// friction than its cone holds (`|x_j| ≤ μ_j F_j`) sticks, any other slips against the
+/// friction it would need (the direction its tangential velocity would take), or the way it
+/// is allowed to. The enumeration of the first `z` then checks these contacts too.
+fn tail(
+    setup: &Setup,
+    modes: &mut Modes,
+    f: &[f64; MAXK],
+    rest: &[usize],
+    allowed: &[Allowed],
+    z: usize,
+) {
+    for &j in rest {
+        modes.tangent[j] = Tangent::Stick;
+    }
+    rebuild(setup, modes);
+    let x = tangential_rates(setup, modes, f);
+    for (&j, al) in rest.iter().zip(allowed).skip(z) {
+        if al.stick && x[j].abs() <= setup.mu[j] * f[j] {
+            continue;
+        }
+        let against = if x[j] > 0.0 { -1.0 } else { 1.0 };
+        let sigma = match (al.positive, al.negative) {
+            (true, false) => 1.0,
+            (false, true) => -1.0,
+            _ => against,
+        };
+        modes.tangent[j] = Tangent::Slip(sigma);
+    }
 }
 
 /// Set the regimes of the first `z` contacts of `rest` from the base-3 digits of `code`

@@ -95,6 +95,18 @@
 //! output and the path goes on from the discrete solution there (`events.rs`, `path.rs`). A
 //! primary switch is located on the dense output too.
 //!
+//! **Phases in closed form.** Where the contacts that carry a force load in fixed
+//! proportions — one contact alone (the striking corner of a rocking block, the first ball
+//! of a cradle, the last contact still loaded), or several moving as one (a rod or a block
+//! landing flat) — the path has one degree of freedom: the velocities are linear and the
+//! energies quadratic in the normal impulse, as with one contact, and every event is the
+//! root of a linear or quadratic function. Such a phase is taken in closed form from its start
+//! to its first event, and the integration takes over where the proportions stop holding
+//! (`closed.rs`: the conditions, checked to round-off, and the formulas). At the impact's
+//! start this is done only for a phase that reaches a quarter of its compression's deflection
+//! (one ending earlier, at a contact joining, would leave the integration next to the start's
+//! singular point).
+//!
 //! **The end.** The impact ends when every contact is off (separated, or never engaged) and
 //! none approaches. Two more ends are recognised: the impact has **settled** when every
 //! contact still loaded is at rest to [`SETTLED`] of the largest `|v⁻_i|` and holds less
@@ -115,9 +127,10 @@
 //! (compression, restitution) and friction.
 //!
 //! **Accuracy.** Velocities after to about `1e-12` relative (Newton's cradles against an
-//! independent integration of the chain in the balls' own coordinates, to `2e-12`; the rod
-//! landing flat to `3e-12`); up to `1e-8` where two contacts separate within a hair of each
-//! other (the regularising variable serves one). Housner's block to round-off.
+//! independent integration of the chain in the balls' own coordinates, to `2e-12`); up to
+//! `1e-8` where two contacts separate within a hair of each other (the regularising variable
+//! serves one). The rod landing flat and Housner's block, taken in closed form, to
+//! round-off.
 //!
 //! **With one contact** the law is `energetic` exactly (the path in `p_n` is the
 //! Darboux–Keller one and the bi-stiffness restitution is Stronge's): [`resolve`] takes its
@@ -146,12 +159,14 @@
 //! assert_eq!(primaries[0].contact, 0); // the first contact struck starts as the primary
 //! ```
 
+mod closed;
 pub(in crate::multi) mod common;
 mod events;
 mod field;
 mod friction;
 mod path;
 mod state;
+mod stepper;
 mod variable;
 
 use super::outcome::{assemble, assemble_ending, ContactResult, Ending, LzbPrimary, MultiDetail};

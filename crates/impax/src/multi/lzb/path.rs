@@ -3,7 +3,7 @@
 //! changes, and the record of each contact (works, phases) and of the primary contact.
 //!
 //! An event is located on the step's seventh-order dense output: the root of the event
-//! function in the step's fraction `θ` by the Illinois iteration ([`illinois`]) to `4ε` in
+//! function in the step's fraction `θ` by the Illinois iteration to `4ε` in
 //! `θ` (of the events inside one step, the first). The path goes on from the discrete
 //! solution there, by re-stepping from the step's start to that `θ` (the dense output and
 //! the discrete solution differ by less than the step's error; where the event's function is
@@ -14,20 +14,23 @@
 //! contact `j`'s compression ended (it then expands `1/e_j²` times faster); a separation's
 //! variable starts with the current step of `τ` as a step of `σ`, at most the whole way to
 //! the separation. Between two events the right-hand side is that of one set of regimes, built
-//! once ([`Field`]).
+//! once ([`Field`]). At the start and after every event, the phases where the loaded contacts
+//! keep fixed proportions are taken in closed form first (`closed.rs`); the integration resumes
+//! after them with the step it had, or with `FIRST_STEP` of the shortest compression time (`stepper.rs`).
 
-use super::common::{grow, guard, shrink, NormalWork, Primary};
+use super::closed;
+use super::common::{grow, shrink, NormalWork, Primary};
 use super::events::{self, Event};
 use super::field::{eval, tangential_acceleration, tangential_rates, Eval, Field};
 use super::friction::{choose, rebuild, Allowed};
 use super::state::{Modes, Normal, Setup, StickSet, Tangent, MAXK, PER, PN, PT, S, WT};
+use super::stepper::Stepper;
 use super::variable::Var;
 use super::{MAX_STEPS, RTOL};
 use crate::law::{BreakdownReason, WorkSplit};
 use crate::math::Vec2;
 use crate::multi::{ContactPhaseKind, ContactResult, LzbPrimary};
 use crate::numerics::dop853::{dop853_step, error_measure, Dense};
-use crate::numerics::roots::illinois;
 use crate::planar::SlipDirection;
 
 /// What the path ends with (canonical units).
@@ -61,116 +64,15 @@ struct Path<'a> {
     primary: Primary,
 }
 
-/// The start: the variable, its first step, and the shortest time a contact alone would
-/// compress in. In `u = τ^(1/m)` for a quarter of that time, or in `τ` for an integer
-/// exponent; the first step a tenth of the way.
-fn start(setup: &Setup) -> (Var, f64, f64) {
-    let mut shortest = f64::INFINITY;
-    for j in 0..setup.k {
-        let vn = setup.v0[2 * j + 1];
-        if vn < 0.0 {
-            let wnn = setup.w[2 * j + 1][2 * j + 1];
-            shortest = shortest.min(setup.law.compression_time(setup.kappa[j], wnn, vn));
-        }
-    }
-    if setup.law.m == 1 {
-        (Var::Time, 0.01 * shortest, shortest)
-    } else {
-        let h = 0.1 * (0.25 * shortest).powf(1.0 / f64::from(setup.law.m));
-        (Var::Root, h, shortest)
-    }
-}
-
-/// The integration's state between two accepted points: the variable and where it is, the
-/// step to try, the regimes and their field, the derivative at the point, the events
-/// watched and their functions there.
-struct Stepper<'a, const N: usize> {
-    setup: &'a Setup,
-    var: Var,
-    x: f64,
-    h: f64,
-    modes: Modes,
-    field: Field,
-    k1: [f64; N],
-    watch: events::Watch,
-    g_a: [f64; 3 * MAXK],
-    /// The shortest time a contact alone would compress in, and where the start in `u`
-    /// ends (a quarter of it).
-    shortest: f64,
-    root_end: f64,
-}
-
-impl<'a, const N: usize> Stepper<'a, N> {
-    /// The start ([`start`]) from the point `y` in the regimes `modes`.
-    fn start(setup: &'a Setup, modes: Modes, y: &[f64; N]) -> Self {
-        let (var, h, shortest) = start(setup);
-        let field = Field::new(setup, &modes);
-        let k1 = var.rhs::<N>(setup, &field, 0.0, y);
-        let ev = field.eval::<N>(setup, y);
-        let watch = events::watch(setup, &modes, y, &ev);
-        let g_a = events::values(setup, &modes, &watch, y, &ev);
-        Stepper {
-            setup,
-            var,
-            x: 0.0,
-            h,
-            modes,
-            field,
-            k1,
-            watch,
-            g_a,
-            shortest,
-            root_end: 0.25 * shortest,
-        }
-    }
-
-    /// On from the point `y` in the regimes `modes` (changed by an event; `field` theirs,
-    /// `ev` the point's quantities in it) with the step `h` of `τ`: in time, or in a
-    /// separation's variable if one is near.
-    fn restart(&mut self, modes: Modes, field: Field, ev: &Eval, y: &[f64; N], h: f64) {
-        let setup = self.setup;
-        self.modes = modes;
-        self.field = field;
-        self.var = Var::Time.next(setup, &modes, 0.0, h, y, &ev.v, self.root_end);
-        (self.x, self.h) = self.var.start_from_time(setup, y, h, &ev.v);
-        self.k1 = self.var.rhs::<N>(setup, &self.field, self.x, y);
-        self.watch = events::watch(setup, &modes, y, ev);
-        self.g_a = events::values(setup, &modes, &self.watch, y, ev);
-    }
-
-    /// The step `h` of the current variable at `x` (velocities `v`) as a step of `τ`.
-    fn time_step(&self, h: f64, v: &[f64; 2 * MAXK]) -> f64 {
-        guard(self.var.to_time(self.setup, self.x, h, v), self.shortest)
-    }
-
-    /// The first of the events whose functions go from `g_a` to `g_b` across the step (the
-    /// watched ones that `crosses`), located on the step's dense output: its fraction of the
-    /// step and its index in the watch.
-    fn first_event(
-        &self,
-        dense: &Dense<N>,
-        g_b: &[f64; 3 * MAXK],
-        crosses: impl Fn(usize) -> bool,
-    ) -> (f64, usize) {
-        let (setup, watch) = (self.setup, &self.watch);
-        let mut first: Option<(f64, usize)> = None;
-        for i in (0..watch.n).filter(|&i| crosses(i)) {
-            let seed = if self.g_a[i] == 0.0 {
-                0.0
-            } else {
-                let g = |th: f64| {
-                    let z = dense.at(th);
-                    let ev = self.field.eval::<N>(setup, &z);
-                    events::value(setup, &self.modes, watch, i, &z, &ev)
-                };
-                illinois(g, 0.0, self.g_a[i], 1.0, g_b[i])
-            };
-            if first.is_none_or(|(th, _)| seed < th) {
-                first = Some((seed, i));
-            }
-        }
-        first.expect("a crossing")
-    }
+/// What the phases in closed form at a point did ([`Path::closed`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Closed {
+    /// None was taken.
+    Unchanged,
+    /// The path moved on; contacts still carry a force.
+    Advanced,
+    /// The impact ended.
+    Ended,
 }
 
 /// Integrate the impact to its end (module docs of [`super`]); `N = 4K`.
@@ -178,8 +80,12 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
     debug_assert_eq!(N, PER * setup.k);
     let mut y = [0.0; N];
     let mut path = Path::start(setup, &y);
-    let mut it = Stepper::<N>::start(setup, path.modes, &y);
     let (mut attempts, mut steps) = (0usize, 0usize);
+    let mut it = match path.closed(&mut y, &mut attempts)? {
+        Closed::Ended => return Ok(path.finish(&y, steps)),
+        Closed::Unchanged => Stepper::<N>::start(setup, path.modes, &y),
+        Closed::Advanced => Stepper::<N>::resume(setup, path.modes, &y),
+    };
     while (0..setup.k).any(|j| it.modes.active(j)) {
         attempts += 1;
         if attempts > MAX_STEPS {
@@ -227,9 +133,12 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
             steps += 1;
             if let (true, Some(j)) = (lands, own) {
                 // The contact separates: on in time.
-                path.apply(Event::Separation(j), &mut y);
+                path.apply(&[Event::Separation(j)], &mut y);
                 if settled(setup, &path.modes, &y, &eval(setup, &path.modes, &y).v) {
                     path.end_settled(&y);
+                    break;
+                }
+                if path.closed(&mut y, &mut attempts)? == Closed::Ended {
                     break;
                 }
                 let ht = it.time_step(h, &ev_b.v);
@@ -265,9 +174,12 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
         path.follow_primary(theta, &y, &ye, &|| Dense::new(&f, x, &y, &st, &k_end, h));
         y = ye;
         steps += 1;
-        path.apply(event, &mut y);
+        path.apply(&[event], &mut y);
         if settled(setup, &path.modes, &y, &eval(setup, &path.modes, &y).v) {
             path.end_settled(&y);
+            break;
+        }
+        if path.closed(&mut y, &mut attempts)? == Closed::Ended {
             break;
         }
         // On from the event (its regimes may have changed).
@@ -393,6 +305,33 @@ impl<'a> Path<'a> {
         path
     }
 
+    /// The phases in closed form from the point `y` (`closed.rs`), one after the other, each
+    /// with the events at its end; `attempts` counts them with the integration's steps.
+    fn closed<const N: usize>(
+        &mut self,
+        y: &mut [f64; N],
+        attempts: &mut usize,
+    ) -> Result<Closed, BreakdownReason> {
+        let setup = self.setup;
+        let mut out = Closed::Unchanged;
+        while let Some(end) = closed::phase::<N>(setup, &self.modes, y) {
+            *attempts += 1;
+            if *attempts > MAX_STEPS {
+                return Err(BreakdownReason::TooManySteps { limit: MAX_STEPS });
+            }
+            out = Closed::Advanced;
+            self.apply(&end.events[..end.n], y);
+            if settled(setup, &self.modes, y, &eval(setup, &self.modes, y).v) {
+                self.end_settled(y);
+                return Ok(Closed::Ended);
+            }
+            if !(0..setup.k).any(|j| self.modes.active(j)) {
+                return Ok(Closed::Ended);
+            }
+        }
+        Ok(out)
+    }
+
     /// An active contact with friction at rest (`|v_t| ≤` the round-off) goes to `rest` (its
     /// regime to be chosen); otherwise it slips in the direction of `v_t` (a frictionless
     /// contact at rest: its direction chosen with the others).
@@ -408,19 +347,42 @@ impl<'a> Path<'a> {
 
     /// What `event` changes at the point `y` (located there), then the other contacts'
     /// changes due at the same point and the tangential regimes.
-    fn apply(&mut self, event: Event, y: &mut [f64]) {
+    fn apply(&mut self, events: &[Event], y: &mut [f64]) {
         let setup = self.setup;
-        let j = event.contact();
         let mut rest = Vec::new();
         let mut allowed = Vec::new();
         let v = eval(setup, &self.modes, y).v;
+        let mut done = [false; MAXK];
+        for &event in events {
+            let j = event.contact();
+            done[j] = true;
+            self.change(event, &v, y, &mut rest, &mut allowed);
+        }
+        self.settle(&done, y, &mut rest, &mut allowed);
+        let ev = eval(setup, &self.modes, y);
+        self.decide(&ev.f, &ev.v, y, rest, allowed);
+        self.after_change(y);
+    }
+
+    /// What `event` changes at the point `y` (velocities `v`): the normal regime, or the
+    /// contacts whose tangential regime is to be chosen (`rest`, restricted by `allowed`).
+    fn change(
+        &mut self,
+        event: Event,
+        v: &[f64; 2 * MAXK],
+        y: &mut [f64],
+        rest: &mut Vec<usize>,
+        allowed: &mut Vec<Allowed>,
+    ) {
+        let setup = self.setup;
+        let j = event.contact();
         match event {
             Event::CompressionEnd(_) => self.end_compression(j, y),
             Event::Separation(_) => self.separate(j, y),
             Event::Recompression(_) => self.recompress(j, y),
             Event::Join(_) => {
                 self.join(j, y);
-                self.set_slip_or_rest(j, v[2 * j], &mut rest);
+                self.set_slip_or_rest(j, v[2 * j], rest);
                 allowed.resize(rest.len(), Allowed::ANY);
             }
             Event::Halt(_) => {
@@ -448,17 +410,13 @@ impl<'a> Path<'a> {
                 });
             }
         }
-        self.settle(j, y, &mut rest, &mut allowed);
-        let ev = eval(setup, &self.modes, y);
-        self.decide(&ev.f, &ev.v, y, rest, allowed);
-        self.after_change(y);
     }
 
-    /// The normal changes of the contacts other than `except` already due at `y` (events of
-    /// several contacts at one point: a symmetric body).
+    /// The normal changes of the contacts other than those of `except` already due at `y`
+    /// (events of several contacts at one point: a symmetric body).
     fn settle(
         &mut self,
-        except: usize,
+        except: &[bool; MAXK],
         y: &mut [f64],
         rest: &mut Vec<usize>,
         allowed: &mut Vec<Allowed>,
@@ -467,7 +425,7 @@ impl<'a> Path<'a> {
         for _ in 0..3 * setup.k {
             let v = eval(setup, &self.modes, y).v;
             let mut changed = false;
-            for j in (0..setup.k).filter(|&j| j != except) {
+            for j in (0..setup.k).filter(|&j| !except[j]) {
                 let (vn, s) = (v[2 * j + 1], y[PER * j + S]);
                 match self.modes.normal[j] {
                     Normal::Compression if vn > 0.0 => self.end_compression(j, y),

@@ -7,9 +7,14 @@ use super::{rhs, touching, Advance, Cause, Sim, PARTS, STALL};
 use crate::error::{Error, Result};
 use crate::mechanism::dynamics;
 use crate::mechanism::Mechanism;
-use crate::simulation::closed::{self, Closed, Hint, FORCE_ROUND_OFF};
+use crate::simulation::closed::{self, Closed, Hint, Regime, FORCE_ROUND_OFF};
 use crate::simulation::events::{gap_of, locate, watched, watched_value, Watched};
 use crate::simulation::record::Mode;
+use crate::simulation::StopReason;
+
+/// A sliding contact whose force coefficient is within this fraction of its terms when the
+/// integration cannot go on is jammed at the Painlevé bound ([`Sim::jam`]).
+const JAM: f64 = 1e-6;
 
 /// One step of the integrator and its dense output at the watch times.
 struct Dense {
@@ -46,7 +51,16 @@ impl<M: Mechanism + ?Sized> Sim<'_, M> {
     pub(super) fn advance(&mut self) -> Result<Advance> {
         let closed = self.closed.clone();
         let mut f = rhs(self.m, closed.clone(), self.opt.friction);
-        let dense = self.step(&mut f)?;
+        let dense = match self.step(&mut f) {
+            Ok(dense) => dense,
+            Err(error @ Error::Integration { .. }) => {
+                return match self.jam(&closed)? {
+                    Some(stop) => Ok(Advance::Stop(stop)),
+                    None => Err(error),
+                };
+            }
+            Err(error) => return Err(error),
+        };
         let mut crossings = Crossings::default();
         self.watch_gaps(&closed, &dense, &mut crossings);
         self.watch_closed(&closed, &dense, &mut crossings)?;
@@ -61,6 +75,25 @@ impl<M: Mechanism + ?Sized> Sim<'_, M> {
             return Ok(Advance::Arrival(k));
         }
         self.regime_change(what, mode)
+    }
+
+    /// The sliding motion cannot be integrated on (the step size underflowed) at the current
+    /// state: if a sliding contact's force coefficient has reached zero there ([`JAM`] of its
+    /// terms), the contact is jammed at the Painlevé bound — its force grows without bound as
+    /// the coefficient and the free normal acceleration vanish together (Génot & Brogliato
+    /// 1999; the "dynamic jam") and no bounded force continues the slip: Painlevé's paradox,
+    /// with no solution. Else `None` (the failure stands).
+    fn jam(&self, closed: &[Closed]) -> Result<Option<StopReason>> {
+        let Some(sliding) = closed.iter().find(|c| matches!(c.regime, Regime::Slip(_))) else {
+            return Ok(None);
+        };
+        let w = closed::watch(self.m, closed, self.opt.friction, &self.y)?;
+        Ok(
+            (w.coefficient.abs() <= JAM).then_some(StopReason::Painleve {
+                contact: sliding.contact,
+                solutions: 0,
+            }),
+        )
     }
 
     /// Take a step and interpolate its dense output at the regular samples inside it and at

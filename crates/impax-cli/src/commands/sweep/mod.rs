@@ -5,6 +5,8 @@
 //! order of the laws; chunks are computed in parallel and written in order, so the output is
 //! byte-identical for any `--threads`.
 
+mod mechanism;
+
 use crate::cli::SweepArgs;
 use crate::input::{CliError, CliResult};
 use crate::output::fmt::Table;
@@ -13,7 +15,9 @@ use crate::pipeline::csv_rows::{chunk_bytes, Rows, RowsSetup};
 use crate::pipeline::evaluate::{self, ChunkNotes};
 use crate::pipeline::progress::Progress;
 use crate::pipeline::space::{self, Setup};
+use crate::sources::Source;
 use impax::analysis::{run_ordered, run_ordered_waves, Sequence, Tally};
+use impax::mechanism::builtin::BuiltIn;
 use std::io::Write;
 use std::sync::Mutex;
 
@@ -35,6 +39,27 @@ enum Format {
 
 /// Run the sweep, writing straight to stdout or `--out` (not through `main`'s buffer).
 pub fn run(args: &SweepArgs) -> CliResult<()> {
+    if let Some(path) = &args.space.scenario {
+        let unreadable = |e| {
+            CliError::input(format!(
+                "{}: cannot read scenario file: {e}",
+                path.display()
+            ))
+        };
+        let name = path.to_string_lossy();
+        let source = Source::classify(&name, &BuiltIn::NAMES, unreadable)?;
+        if matches!(
+            source,
+            Source::Robot(_) | Source::Mechanism(_) | Source::BuiltInMechanism(_)
+        ) {
+            return mechanism::run(&source, args);
+        }
+    }
+    if let Some(flag) = args.mechanism.first_given() {
+        return Err(CliError::input(format!(
+            "--{flag}: only for a mechanism or a robot; sweep a body scenario's fields with --grid, --random and --set"
+        )));
+    }
     let format = match args.format.as_str() {
         "csv" => Format::Csv,
         "summary" => Format::Summary,
