@@ -13,9 +13,9 @@
 //!   building the classes of [`body`] (`BodyImpact`, `Body`);
 //! * [`mechanisms`]: `mechanism` (a built-in by name, or a mechanism of one's own),
 //!   `double_pendulum`, `MechanismImpact`;
-//! * [`robots`]: `Mechanism` — a mechanism file (planar or spatial) or a URDF robot read once:
-//!   `M(q)`, contact Jacobians and problems, impacts as records ([`robot_impact`]) and in
-//!   batches over numpy arrays ([`robot_batch`]);
+//! * [`robots`]: `Mechanism` — a mechanism file (planar or spatial) or a URDF robot read once
+//!   ([`robot_load`]): `M(q)`, contact Jacobians and problems, impacts as the command line's
+//!   records ([`robot_impact`]) and in batches over numpy arrays ([`robot_batch`]);
 //! * [`compare`]: every law side by side, as `impax compare --json`;
 //! * [`scenarios`]: `rod_rows`, `sphere_rows` — the rows of many bodies at once, for
 //!   `impax.study`.
@@ -32,6 +32,7 @@ mod multi;
 mod outcome;
 mod robot_batch;
 mod robot_impact;
+mod robot_load;
 mod robots;
 mod scenarios;
 mod shapes;

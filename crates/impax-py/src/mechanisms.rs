@@ -3,7 +3,7 @@
 
 use crate::convert::{arg, lib, mat2, value_error};
 use crate::outcome::{Context, Outcome, Raw};
-use crate::robots;
+use crate::robot_load as robots;
 use impax::math::Vec2;
 use impax::mechanism::builtin::{BuiltIn, STANDARD_GRAVITY};
 use impax::mechanism::impact::MechanismImpact as LibMechanismImpact;
@@ -48,7 +48,6 @@ impl MechanismImpact {
                 velocities_after: r.velocities_after,
                 energy_before: impact.energy_before(),
                 energy_change_from_velocities: r.energy_change_from_velocities,
-                spatial: false,
             },
             problem3: None,
         })
@@ -159,7 +158,7 @@ impl MechanismImpact {
 /// else 0.5). The built-ins' parameters (`masses`, `lengths`, `radius`, `angles`, `rates`,
 /// `position`) are refused for them, and `floating_base`, `contact`, `floor` for a built-in.
 #[pyfunction]
-#[pyo3(signature = (source, /, floating_base = false, contact = None, floor = None, gravity = None, *, masses = None, lengths = None, radius = None, angles = None, rates = None, position = None, friction = None, restitution = None))]
+#[pyo3(signature = (source, /, *, floating_base = false, contact = None, floor = None, gravity = None, masses = None, lengths = None, radius = None, angles = None, rates = None, position = None, friction = None, restitution = None))]
 #[allow(clippy::too_many_arguments)]
 pub fn mechanism<'py>(
     py: Python<'py>,

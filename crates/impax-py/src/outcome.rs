@@ -47,10 +47,6 @@ pub enum Context {
         energy_before: f64,
         /// `½ u⁺ᵀ M u⁺ − ½ u⁻ᵀ M u⁻`.
         energy_change_from_velocities: Option<f64>,
-        /// A spatial mechanism (a URDF robot or a `space = "3d"` file): `to_dict()` is the
-        /// entry of `impax compare ROBOT --json` (`velocity_after`, no hodograph or rays,
-        /// which stay attributes).
-        spatial: bool,
     },
 }
 
@@ -577,10 +573,8 @@ impl Outcome {
     /// mechanism.
     pub fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         let d = PyDict::new(py);
-        let robot = matches!(self.context, Context::Mechanism { spatial: true, .. });
         let velocity_key = match self.context {
             Context::Contact => "velocity_after",
-            _ if robot => "velocity_after",
             _ => "contact_velocity_after",
         };
         d.set_item("law", self.law.as_str())?;
@@ -613,7 +607,7 @@ impl Outcome {
                 d.set_item("phases", PyList::empty(py))?;
             }
         }
-        if self.problem3.is_some() && !robot {
+        if self.problem3.is_some() {
             let pts = self
                 .hodograph_points()
                 .map(|pts| PyList::new(py, pts.iter().map(|q| q.map(num).to_vec())));

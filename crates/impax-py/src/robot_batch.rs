@@ -9,9 +9,8 @@
 
 use crate::batch::{verdict_code, STATUS_BREAKDOWN, STATUS_INVALID};
 use crate::convert::{float_array, threads as thread_count, value_error};
-use crate::robot_impact::{strike, Row};
+use crate::robot_impact::{strike, Resolved};
 use crate::robots::{Kind, Mechanism};
-use crate::outcome::Raw;
 use impax::LawId;
 use numpy::{PyArray1, PyArray2, PyArrayMethods};
 use pyo3::prelude::*;
@@ -42,30 +41,35 @@ impl Out {
         }
     }
 
-    fn of(row: Row) -> Self {
+    fn of(energy_before: f64, resolved: Resolved) -> Self {
         let mut out = Out {
-            velocities_after: row.velocities_after,
+            velocities_after: None,
             impulse: [f64::NAN; 3],
             velocity_after: [f64::NAN; 3],
-            energy_before: row.energy_before,
+            energy_before,
             energy_change: f64::NAN,
             status: STATUS_BREAKDOWN,
             error: None,
         };
-        match &row.raw {
-            Raw::Planar(Ok(o)) => {
-                out.impulse[..2].copy_from_slice(o.impulse.as_slice());
-                out.velocity_after[..2].copy_from_slice(o.velocity_after.as_slice());
-                out.energy_change = o.energy_change;
-                out.status = verdict_code(o.verdict);
+        match resolved {
+            Resolved::Planar(r) => {
+                if let Ok(o) = &r.resolution {
+                    out.impulse[..2].copy_from_slice(o.impulse.as_slice());
+                    out.velocity_after[..2].copy_from_slice(o.velocity_after.as_slice());
+                    out.energy_change = o.energy_change;
+                    out.status = verdict_code(o.verdict);
+                }
+                out.velocities_after = r.velocities_after;
             }
-            Raw::Spatial(Ok(o)) => {
-                out.impulse.copy_from_slice(o.impulse.as_slice());
-                out.velocity_after.copy_from_slice(o.velocity_after.as_slice());
-                out.energy_change = o.energy_change;
-                out.status = verdict_code(o.verdict);
+            Resolved::Spatial(r) => {
+                if let Ok(o) = &r.resolution {
+                    out.impulse.copy_from_slice(o.impulse.as_slice());
+                    out.velocity_after.copy_from_slice(o.velocity_after.as_slice());
+                    out.energy_change = o.energy_change;
+                    out.status = verdict_code(o.verdict);
+                }
+                out.velocities_after = r.velocities_after;
             }
-            Raw::Planar(Err(_)) | Raw::Spatial(Err(_)) => {}
         }
         out
     }
@@ -148,9 +152,9 @@ pub fn run<'py>(
                     |ws, i| {
                         let (qi, ui) = (&qs[i * nq..(i + 1) * nq], &us[i * nv..(i + 1) * nv]);
                         match strike(m, model.as_deref(), ws, qi, ui, contact, |s| {
-                            s.resolve(law, friction, restitution)
+                            Ok((s.energy_before(), s.resolve(law, friction, restitution)?))
                         }) {
-                            Ok(row) => Out::of(row),
+                            Ok((e0, resolved)) => Out::of(e0, resolved),
                             Err(e) => Out::invalid(e),
                         }
                     },

@@ -1,25 +1,30 @@
-//! One state of a [`Mechanism`] struck at one contact — the one path that `impact`,
-//! `contact_problem` and every row of `impact_batch` take, so that a batch row equals the
-//! single call bit for bit.
+//! A state of a [`Mechanism`] struck at one contact, two ways:
 //!
-//! * planar: the linkage with its floor placed at the state (unless given), struck at the
-//!   named contact or the one that strikes (`MechanismImpact::named`);
-//! * spatial: `q` checked (quaternions normalised, [`Model::check_state`]), the contact
-//!   chosen ([`impax::scenario::Robot::striking_contact`]) and the impact reduced to contact
-//!   space by `SpatialMechanismImpact` on the model struck at that contact — exactly what
-//!   `BuiltRobot::impact` (the command line) does, the floor aside (it moves no number but
-//!   the gap).
+//! * [`record`] — `Mechanism.impact`: the command line's path and writer, step for step
+//!   (`impax compare FILE --q .. --u .. --json`): a planar file built at the state by
+//!   `impax::scenario::MechanismSpec`, a spatial one or a URDF robot put at it by
+//!   `impax::scenario::Robot::at`; every law resolved; the document written by
+//!   `impax::json::mechanism_document` / `impax::json::robot_document`;
+//! * [`strike`] — `contact_problem` and every row of `impact_batch`: the description read
+//!   once, the spatial model struck at the contact built once and a `Workspace` reused, so a
+//!   row allocates only what one impact does. Both reduce the same model at the same state
+//!   with the same functions, so a batch row equals the record's numbers bit for bit
+//!   (tested).
 
-use crate::outcome::{Context, Outcome, Raw};
 use crate::robots::{Kind, Mechanism, Planar};
 use impax::mechanism::builtin::BuiltIn;
-use impax::mechanism::impact::MechanismImpact as LibMechanismImpact;
-use impax::multibody::{forward_kinematics, BodyPose, Model, SpatialMechanismImpact, Workspace};
-use impax::scenario::Robot;
-use impax::{spatial, LawId};
+use impax::mechanism::impact::{MechanismImpact as LibMechanismImpact, MechanismOutcome};
+use impax::multibody::{
+    forward_kinematics, BodyPose, Model, SpatialMechanismImpact, SpatialMechanismOutcome,
+    Workspace,
+};
+use impax::scenario::{MechanismSpec, Robot};
+use impax::LawId;
 use std::borrow::Cow;
 
 /// A state struck at a contact, reduced to contact space.
+// One lives at a time on a worker's stack; boxing the larger variant would allocate per row.
+#[allow(clippy::large_enum_variant)]
 pub enum Struck<'a> {
     /// A planar mechanism file.
     Planar(LibMechanismImpact<'a, BuiltIn>),
@@ -27,42 +32,25 @@ pub enum Struck<'a> {
     Spatial(SpatialMechanismImpact<'a>),
 }
 
-/// One law's result on a struck state: the record's numbers.
-pub struct Row {
-    pub law: LawId,
-    pub raw: Raw,
-    pub approach_energy: f64,
-    pub velocities_after: Option<Vec<f64>>,
-    pub energy_before: f64,
-    pub energy_change_from_velocities: Option<f64>,
-    pub problem3: Option<spatial::ContactProblem>,
+/// One law's result on a struck state (the core's outcome).
+pub enum Resolved {
+    Planar(MechanismOutcome),
+    Spatial(SpatialMechanismOutcome),
 }
 
-impl Row {
-    /// The record `impact` returns.
-    pub fn into_outcome(self) -> Outcome {
-        Outcome {
-            law: self.law,
-            context: Context::Mechanism {
-                velocities_after: self.velocities_after,
-                energy_before: self.energy_before,
-                energy_change_from_velocities: self.energy_change_from_velocities,
-                spatial: matches!(self.raw, Raw::Spatial(_)),
-            },
-            raw: self.raw,
-            approach_energy: self.approach_energy,
-            problem3: self.problem3,
-        }
-    }
-}
+/// `W` (row-major, `d × d`) and `v⁻` (`d`).
+pub type Reduced = (Vec<f64>, Vec<f64>);
 
 impl Struck<'_> {
-    /// `W` (row-major, `d × d`) and `v⁻` (`d`).
-    pub fn reduced(&self) -> (Vec<f64>, Vec<f64>) {
+    /// `W` and `v⁻`.
+    pub fn reduced(&self) -> Reduced {
         match self {
             Struck::Planar(i) => {
                 let (w, v) = (i.inverse_inertia(), i.contact_velocity());
-                (vec![w[(0, 0)], w[(0, 1)], w[(1, 0)], w[(1, 1)]], vec![v.x, v.y])
+                (
+                    vec![w[(0, 0)], w[(0, 1)], w[(1, 0)], w[(1, 1)]],
+                    vec![v.x, v.y],
+                )
             }
             Struck::Spatial(i) => {
                 let (w, v) = (i.inverse_inertia(), i.contact_velocity());
@@ -72,7 +60,7 @@ impl Struck<'_> {
         }
     }
 
-    /// Check the contact-space problem with these coefficients (as `resolve` would).
+    /// Check the contact-space problem with these coefficients (as `resolve` does).
     pub fn check_problem(&self, friction: f64, restitution: f64) -> impax::Result<()> {
         match self {
             Struck::Planar(i) => i.problem(friction, restitution).map(|_| ()),
@@ -80,36 +68,26 @@ impl Struck<'_> {
         }
     }
 
-    /// Resolve with one law: the contact-space outcome, `u⁺` and the energies.
-    pub fn resolve(&self, law: LawId, friction: f64, restitution: f64) -> impax::Result<Row> {
+    /// `T⁻ = ½ u⁻ᵀ M u⁻`.
+    pub fn energy_before(&self) -> f64 {
         match self {
+            Struck::Planar(i) => i.energy_before(),
+            Struck::Spatial(i) => i.energy_before(),
+        }
+    }
+
+    /// Resolve with one law (the problem checked first, as the record does).
+    pub fn resolve(&self, law: LawId, friction: f64, restitution: f64) -> impax::Result<Resolved> {
+        Ok(match self {
             Struck::Planar(i) => {
-                let problem = i.problem(friction, restitution)?;
-                let r = i.resolve(law, friction, restitution)?;
-                Ok(Row {
-                    law,
-                    raw: Raw::Planar(r.resolution),
-                    approach_energy: problem.approach_energy(),
-                    velocities_after: r.velocities_after,
-                    energy_before: i.energy_before(),
-                    energy_change_from_velocities: r.energy_change_from_velocities,
-                    problem3: None,
-                })
+                i.problem(friction, restitution)?;
+                Resolved::Planar(i.resolve(law, friction, restitution)?)
             }
             Struck::Spatial(i) => {
-                let problem = i.problem(friction, restitution)?;
-                let r = i.resolve(law, friction, restitution)?;
-                Ok(Row {
-                    law,
-                    raw: Raw::Spatial(r.resolution),
-                    approach_energy: problem.approach_energy(),
-                    velocities_after: r.velocities_after,
-                    energy_before: i.energy_before(),
-                    energy_change_from_velocities: r.energy_change_from_velocities,
-                    problem3: Some(problem),
-                })
+                i.problem(friction, restitution)?;
+                Resolved::Spatial(i.resolve(law, friction, restitution)?)
             }
-        }
+        })
     }
 }
 
@@ -155,7 +133,66 @@ pub fn strike<R>(
             }
             r
         }
-        (Kind::Spatial(_), None) => unreachable!("a spatial mechanism is struck on its model"),
+        (Kind::Spatial(s), None) => Err(impax::Error::Invalid {
+            field: "contact".into(),
+            reason: format!("`{}` has no contact point to strike", s.robot.name()),
+        }),
+    }
+}
+
+/// The record of `Mechanism.impact`: the document `impax compare ... --q Q --u U --json`
+/// writes for this mechanism, contact, coefficients and laws.
+///
+/// # Errors
+/// Every error of the state, the contact, the coefficients and the problem (not
+/// approaching), each naming its field.
+pub fn record(
+    m: &Mechanism,
+    q: &[f64],
+    u: &[f64],
+    contact: Option<&str>,
+    friction: f64,
+    restitution: f64,
+    laws: &[LawId],
+) -> impax::Result<serde_json::Value> {
+    match &m.kind {
+        Kind::Planar(p) => {
+            let built = MechanismSpec {
+                mechanism: m.name.clone(),
+                gravity: p.gravity,
+                file: Some(p.file.clone()),
+                q: Some(q.to_vec()),
+                u: Some(u.to_vec()),
+                ..MechanismSpec::default()
+            }
+            .build()?;
+            let impact = LibMechanismImpact::named(&built.mechanism, &built.q, &built.u, contact)?;
+            let problem = impact.problem(friction, restitution)?;
+            let results = laws
+                .iter()
+                .map(|&l| Ok((l, impact.resolve(l, friction, restitution)?)))
+                .collect::<impax::Result<Vec<_>>>()?;
+            Ok(impax::json::mechanism_document(
+                &m.name,
+                &built.description,
+                &impact,
+                &built.u,
+                &problem,
+                &results,
+            ))
+        }
+        Kind::Spatial(s) => {
+            let built = s.robot.at(Some(q), Some(u), contact)?;
+            let impact = built.impact()?;
+            let problem = impact.problem(friction, restitution)?;
+            let results = laws
+                .iter()
+                .map(|&l| Ok((l, impact.resolve(l, friction, restitution)?)))
+                .collect::<impax::Result<Vec<_>>>()?;
+            Ok(impax::json::robot_document(
+                &built, &impact, &problem, &results,
+            ))
+        }
     }
 }
 
