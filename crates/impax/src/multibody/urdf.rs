@@ -358,6 +358,13 @@ struct Tree {
 
 impl Tree {
     fn new(robot: &urdf_rs::Robot) -> Result<Tree> {
+        if robot.links.is_empty() {
+            return Err(urdf_error(
+                "the links".into(),
+                "the robot has no <link> (an empty description, e.g. a xacro file not expanded)"
+                    .into(),
+            ));
+        }
         let mut link = HashMap::new();
         for (i, l) in robot.links.iter().enumerate() {
             if link.insert(l.name.clone(), i).is_some() {
