@@ -7,7 +7,8 @@ Each figure is the median over R repeats of the time per state, over N random st
 with a floating base (18 speeds), the foot FL_FOOT approaching the floor:
 
 * Pinocchio: `crba` + `computeFrameJacobian` (LOCAL_WORLD_ALIGNED) + `cholesky.decompose`
-  + three `cholesky.solve` (M⁻¹ Jᵀ, for W = J M⁻¹ Jᵀ), one Python call each;
+  + three `cholesky.solve` (M⁻¹ Jᵀ, for W = J M⁻¹ Jᵀ), one Python call each; and `crba`
+  alone, which bounds what one call costs through the binding;
 * impax `contact_problem(q, u, contact)`: the same quantities (M, J, its factorisation, W and
   v⁻ = J u) in one Python call;
 * impax `impact(q, u, contact, laws="energetic")`: state → u⁺ (and the whole record, a
@@ -82,6 +83,10 @@ def main() -> None:
             for r in range(3):
                 pin.cholesky.solve(model, data, j[r])
 
+    def crba_alone():
+        for i in range(n):
+            pin.crba(model, data, qp[i])
+
     def problem():
         for i in range(n):
             m.contact_problem(q[i], u[i], FOOT)
@@ -95,6 +100,7 @@ def main() -> None:
 
     rows = [
         ("Pinocchio crba + frame Jacobian + Cholesky (M⁻¹Jᵀ), Python calls", median_per_state(pinocchio, n, repeats)),
+        ("Pinocchio crba alone (one Python call: its C++ cost and one call's overhead)", median_per_state(crba_alone, n, repeats)),
         ("impax contact_problem: W, v⁻ (one Python call)", median_per_state(problem, n, repeats)),
         ("impax impact, energetic: state → u⁺ and the record (one Python call)", median_per_state(single, n, repeats)),
         ("impax impact_batch, energetic: state → u⁺ (one thread, per state)", median_per_state(batch, n, repeats)),
@@ -102,10 +108,10 @@ def main() -> None:
     print(f"solo12, floating base (18 speeds), {FOOT} striking; {n} random states, median of {repeats} repeats")
     print(f"impax {impax.__version__}, Pinocchio {pin.__version__}")
     for label, t in rows:
-        print(f"  {label:<72} {t * 1e6:8.2f} µs")
+        print(f"  {label:<80} {t * 1e6:8.2f} µs")
     base = rows[0][1]
-    print(f"  ratio impax batch impact / Pinocchio dynamics: {rows[3][1] / base:.2f}")
-    print(f"  ratio impax contact_problem / Pinocchio dynamics (both one state per Python call): {rows[1][1] / base:.2f}")
+    print(f"  ratio impax batch impact / Pinocchio dynamics: {rows[4][1] / base:.2f}")
+    print(f"  ratio impax contact_problem / Pinocchio dynamics (both one state per Python call): {rows[2][1] / base:.2f}")
 
 
 if __name__ == "__main__":
