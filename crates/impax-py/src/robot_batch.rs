@@ -64,7 +64,8 @@ impl Out {
             Resolved::Spatial(r) => {
                 if let Ok(o) = &r.resolution {
                     out.impulse.copy_from_slice(o.impulse.as_slice());
-                    out.velocity_after.copy_from_slice(o.velocity_after.as_slice());
+                    out.velocity_after
+                        .copy_from_slice(o.velocity_after.as_slice());
                     out.energy_change = o.energy_change;
                     out.status = verdict_code(o.verdict);
                 }
@@ -190,7 +191,10 @@ fn write<'py>(
     let velocities = PyArray2::<f64>::zeros(py, [n, nv], false);
     let impulse = PyArray2::<f64>::zeros(py, [n, dim], false);
     let velocity = PyArray2::<f64>::zeros(py, [n, dim], false);
-    let (e0, de) = (PyArray1::<f64>::zeros(py, [n], false), PyArray1::<f64>::zeros(py, [n], false));
+    let (e0, de) = (
+        PyArray1::<f64>::zeros(py, [n], false),
+        PyArray1::<f64>::zeros(py, [n], false),
+    );
     let status = PyArray1::<u8>::zeros(py, [n], false);
     {
         // SAFETY: the arrays are new and referenced nowhere else.
@@ -201,7 +205,13 @@ fn write<'py>(
                 velocity.as_slice_mut()?,
             )
         };
-        let (ea, da, sa) = unsafe { (e0.as_slice_mut()?, de.as_slice_mut()?, status.as_slice_mut()?) };
+        let (ea, da, sa) = unsafe {
+            (
+                e0.as_slice_mut()?,
+                de.as_slice_mut()?,
+                status.as_slice_mut()?,
+            )
+        };
         for (i, r) in rows.iter().enumerate() {
             match &r.velocities_after {
                 Some(v) => va[i * nv..(i + 1) * nv].copy_from_slice(v),

@@ -15,8 +15,7 @@ use crate::robots::{Kind, Mechanism, Planar};
 use impax::mechanism::builtin::BuiltIn;
 use impax::mechanism::impact::{MechanismImpact as LibMechanismImpact, MechanismOutcome};
 use impax::multibody::{
-    forward_kinematics, BodyPose, Model, SpatialMechanismImpact, SpatialMechanismOutcome,
-    Workspace,
+    forward_kinematics, BodyPose, Model, SpatialMechanismImpact, SpatialMechanismOutcome, Workspace,
 };
 use impax::scenario::{MechanismSpec, Robot};
 use impax::LawId;

@@ -59,7 +59,9 @@ pub fn source(obj: &Bound<'_, PyAny>) -> PyResult<Option<Source>> {
     }
     let path = std::path::Path::new(&text);
     let lower = text.to_ascii_lowercase();
-    let file_like = [".toml", ".urdf", ".xml"].iter().any(|x| lower.ends_with(x))
+    let file_like = [".toml", ".urdf", ".xml"]
+        .iter()
+        .any(|x| lower.ends_with(x))
         || text.contains(std::path::MAIN_SEPARATOR)
         || text.contains('/');
     if !(path.is_file() || file_like) {
@@ -100,11 +102,16 @@ pub fn load(py: Python<'_>, source: Source, options: Options) -> PyResult<Mechan
             return Err(value_error(if source.text.contains("mechanism") {
                 "mechanism: this TOML describes a built-in mechanism (its `mechanism` key): call impax.mechanism(NAME, ...) with its parameters".to_string()
             } else {
-                "mechanism: not a mechanism file (no [[body]] or [[joint]] tables) nor a URDF robot".to_string()
+                "mechanism: not a mechanism file (no [[body]] or [[joint]] tables) nor a URDF robot"
+                    .to_string()
             }));
         }
         let file = MechanismFile::parse(&source.text).map_err(|e| {
-            let what = if source.path.is_empty() { "mechanism" } else { &source.path };
+            let what = if source.path.is_empty() {
+                "mechanism"
+            } else {
+                &source.path
+            };
             value_error(format!("{what}: {e}"))
         })?;
         (RobotSource::File(Box::new(file.clone())), Some(file))
@@ -112,7 +119,10 @@ pub fn load(py: Python<'_>, source: Source, options: Options) -> PyResult<Mechan
     let file_laws = file.as_ref().and_then(|f| f.laws.clone());
     let coefficient = |given: Option<f64>, of_file: Option<f64>| given.or(of_file).unwrap_or(0.5);
     let friction = coefficient(options.friction, file.as_ref().and_then(|f| f.friction));
-    let restitution = coefficient(options.restitution, file.as_ref().and_then(|f| f.restitution));
+    let restitution = coefficient(
+        options.restitution,
+        file.as_ref().and_then(|f| f.restitution),
+    );
     let (name, kind, description) = match file {
         Some(file) if file.space == Space::Planar => planar(source.stem, file, &options)?,
         _ => spatial(source.stem, robot_source, &options)?,
@@ -147,8 +157,18 @@ pub fn load(py: Python<'_>, source: Source, options: Options) -> PyResult<Mechan
 fn check_contact(m: &Mechanism, contact: &str) -> PyResult<()> {
     let names: Vec<String> = match &m.kind {
         Kind::Spatial(s) if s.robot.is_urdf() => return s.model(Some(contact)).map(|_| ()),
-        Kind::Planar(p) => p.mechanism.contacts().iter().map(|c| c.name.to_string()).collect(),
-        Kind::Spatial(s) => s.robot.contact_names().iter().map(|c| c.to_string()).collect(),
+        Kind::Planar(p) => p
+            .mechanism
+            .contacts()
+            .iter()
+            .map(|c| c.name.to_string())
+            .collect(),
+        Kind::Spatial(s) => s
+            .robot
+            .contact_names()
+            .iter()
+            .map(|c| c.to_string())
+            .collect(),
     };
     if names.iter().any(|n| n == contact) {
         return Ok(());

@@ -398,7 +398,11 @@ impl Mechanism {
     /// The gap of the contact at `q` above the floor (0 when the floor passes through the
     /// striking contact: no `floor=`, no height in the file).
     #[pyo3(signature = (q, contact = None))]
-    fn gap(&self, #[pyo3(from_py_with = q_arg)] q: Vec<f64>, contact: Option<&str>) -> PyResult<f64> {
+    fn gap(
+        &self,
+        #[pyo3(from_py_with = q_arg)] q: Vec<f64>,
+        contact: Option<&str>,
+    ) -> PyResult<f64> {
         let contact = self.contact(contact);
         match &self.kind {
             Kind::Planar(p) => {
@@ -475,4 +479,3 @@ impl Mechanism {
         format!("Mechanism({})", self.description)
     }
 }
-
