@@ -555,3 +555,92 @@ pub fn mechanism_entry(
     }
     Value::Object(fields)
 }
+
+/// The document of `impax compare MECHANISM --json` for a planar mechanism (a built-in or a
+/// mechanism file) struck at one contact: `mechanism` (its name), `scenario` (the built
+/// mechanism's description), `coordinates`, `q`, `u_before`, `contact`, `gap`, `problem`,
+/// `energy_before` and `results` (one [`mechanism_entry`] per law, in the order given).
+pub fn mechanism_document<M: crate::mechanism::Mechanism + ?Sized>(
+    name: &str,
+    description: &str,
+    impact: &crate::mechanism::impact::MechanismImpact<'_, M>,
+    u: &[f64],
+    contact_problem: &ContactProblem,
+    results: &[(crate::LawId, crate::mechanism::impact::MechanismOutcome)],
+) -> Value {
+    let m = impact.mechanism();
+    let t0 = impact.energy_before();
+    let entries: Vec<Value> = results
+        .iter()
+        .map(|(_, r)| match &r.resolution {
+            Ok(o) => mechanism_entry(
+                outcome_fields(o, "contact_velocity_after"),
+                t0,
+                Some((
+                    o.energy_change,
+                    r.velocities_after.as_deref().unwrap_or_default(),
+                    r.energy_change_from_velocities,
+                )),
+            ),
+            Err(b) => mechanism_entry(
+                breakdown_fields(b, "contact_velocity_after", false),
+                t0,
+                None,
+            ),
+        })
+        .collect();
+    json!({
+        "mechanism": name,
+        "scenario": description,
+        "coordinates": m.coordinates(),
+        "q": impact.configuration(),
+        "u_before": u,
+        "contact": m.contacts()[impact.contact()].name,
+        "gap": num(impact.gap()),
+        "problem": problem(contact_problem),
+        "energy_before": t0,
+        "results": entries,
+    })
+}
+
+/// The document of `impax compare ROBOT --json` for a spatial mechanism (a URDF robot or a
+/// `space = "3d"` mechanism file) at its state: `mechanism`, `scenario` (its description),
+/// `coordinates`, `speeds`, `mimic_joints`, `q`, `u_before`, `contact`, `gap`, `problem`,
+/// `energy_before` and `results` (one [`mechanism_entry`] per law, in the order given).
+pub fn robot_document(
+    built: &crate::scenario::BuiltRobot,
+    impact: &crate::multibody::SpatialMechanismImpact<'_>,
+    problem: &spatial::ContactProblem,
+    results: &[(crate::LawId, crate::multibody::SpatialMechanismOutcome)],
+) -> Value {
+    let t0 = impact.energy_before();
+    let entries: Vec<Value> = results
+        .iter()
+        .map(|(_, r)| match &r.resolution {
+            Ok(o) => mechanism_entry(
+                spatial_outcome_fields(o),
+                t0,
+                Some((
+                    o.energy_change,
+                    r.velocities_after.as_deref().unwrap_or_default(),
+                    r.energy_change_from_velocities,
+                )),
+            ),
+            Err(b) => mechanism_entry(spatial_breakdown_fields(b), t0, None),
+        })
+        .collect();
+    json!({
+        "mechanism": built.name,
+        "scenario": built.description(),
+        "coordinates": built.coordinates(),
+        "speeds": built.model.speeds(),
+        "mimic_joints": built.mimic_joints,
+        "q": built.q,
+        "u_before": built.u,
+        "contact": built.model.contacts()[built.contact].name,
+        "gap": num(impact.gap()),
+        "problem": spatial_problem(problem),
+        "energy_before": num(t0),
+        "results": entries,
+    })
+}

@@ -4,7 +4,7 @@
 use crate::cli::CompareArgs;
 use crate::input::{CliError, CliResult};
 use crate::output::fmt::{signed, Table};
-use crate::output::json::{self, num};
+use crate::output::json;
 use crate::sources::mechanism::{self, MechanismCase, MechanismSpec};
 use crate::sources::scenario::parse_laws;
 use crate::sources::Source;
@@ -12,7 +12,6 @@ use impax::mechanism::impact::{MechanismImpact, MechanismOutcome};
 use impax::mechanism::Mechanism;
 use impax::planar::Verdict;
 use impax::LawId;
-use serde_json::{json, Value};
 
 /// The mechanism flags of `compare` as a spec (for merging over a file or a built-in).
 pub fn flags(args: &CompareArgs) -> MechanismSpec {
@@ -70,56 +69,21 @@ pub fn run(args: &CompareArgs, source: &Source, out: &mut Vec<u8>) -> CliResult<
         .map(|&law| Ok((law, impact.resolve(law, friction, restitution)?)))
         .collect::<CliResult<Vec<_>>>()?;
     let text = if args.json {
-        serde_json::to_string_pretty(&document(&spec, &case, &impact, &problem, &results))
-            .map_err(CliError::failure)?
+        serde_json::to_string_pretty(&json::mechanism_document(
+            &spec.mechanism,
+            &case.description,
+            &impact,
+            &case.u,
+            &problem,
+            &results,
+        ))
+        .map_err(CliError::failure)?
             + "\n"
     } else {
         table(&case, &impact, &problem, &results)
     };
     out.extend_from_slice(text.as_bytes());
     Ok(())
-}
-
-fn document(
-    spec: &MechanismSpec,
-    case: &MechanismCase,
-    impact: &MechanismImpact<'_, impax::mechanism::builtin::BuiltIn>,
-    problem: &impax::planar::ContactProblem,
-    results: &[(LawId, MechanismOutcome)],
-) -> Value {
-    let m = &case.mechanism;
-    let t0 = impact.energy_before();
-    let entries: Vec<Value> = results
-        .iter()
-        .map(|(_, r)| match &r.resolution {
-            Ok(o) => json::mechanism_entry(
-                json::outcome_fields(o, "contact_velocity_after"),
-                t0,
-                Some((
-                    o.energy_change,
-                    r.velocities_after.as_ref().expect("applied"),
-                    r.energy_change_from_velocities,
-                )),
-            ),
-            Err(b) => json::mechanism_entry(
-                json::breakdown_fields(b, "contact_velocity_after", false),
-                t0,
-                None,
-            ),
-        })
-        .collect();
-    json!({
-        "mechanism": spec.mechanism,
-        "scenario": case.description,
-        "coordinates": m.coordinates(),
-        "q": case.q,
-        "u_before": case.u,
-        "contact": m.contacts()[impact.contact()].name,
-        "gap": num(impact.gap()),
-        "problem": json::problem(problem),
-        "energy_before": t0,
-        "results": entries,
-    })
 }
 
 fn table(
