@@ -29,7 +29,7 @@ fn simulate(args: &[&str]) -> Value {
 }
 
 fn csv_rows(args: &[&str]) -> Vec<Vec<f64>> {
-    let path = std::env::temp_dir().join(format!(
+    let path = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!(
         "impax-floor-{}-{}.csv",
         std::process::id(),
         args.join("_").replace(['/', ','], "-")
