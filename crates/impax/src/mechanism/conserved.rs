@@ -424,6 +424,51 @@ impl Track {
         };
         symmetric && self.relative_deviation() <= tolerance
     }
+
+    /// The kind's stable id: `generalized-momentum`, `energy`, `linear-momentum`,
+    /// `angular-momentum` or `noether-charge`.
+    pub fn kind_id(&self) -> &'static str {
+        match self.kind {
+            QuantityKind::GeneralizedMomentum { .. } => "generalized-momentum",
+            QuantityKind::Energy => "energy",
+            QuantityKind::LinearMomentum { .. } => "linear-momentum",
+            QuantityKind::AngularMomentum { .. } => "angular-momentum",
+            QuantityKind::Noether { .. } => "noether-charge",
+        }
+    }
+
+    /// What the quantity is, in words, with the mechanism's coordinate names: `generalized
+    /// momentum of x (cyclic)`, `total energy T + V`, `Newtonian momentum Σ m v_x`, …
+    pub fn description(&self, coordinates: &[&str]) -> String {
+        match &self.kind {
+            QuantityKind::GeneralizedMomentum { coordinate, cyclic } => format!(
+                "generalized momentum of {}{}",
+                coordinates[*coordinate],
+                if *cyclic { " (cyclic)" } else { "" }
+            ),
+            QuantityKind::Energy => "total energy T + V".into(),
+            QuantityKind::LinearMomentum { axis } => {
+                format!(
+                    "Newtonian momentum Σ m v_{}",
+                    if *axis == 0 { "x" } else { "y" }
+                )
+            }
+            QuantityKind::AngularMomentum { about } => {
+                format!("angular momentum about ({}, {})", about.x, about.y)
+            }
+            QuantityKind::Noether { .. } => "Noether charge Σ p ξ − F".into(),
+        }
+    }
+
+    /// The verdict in words: `conserved`, `NOT conserved`, or for a Noether charge whose
+    /// transformation fails the check, `not a symmetry (δL ≠ dF/dt)`.
+    pub fn verdict(&self, tolerance: f64) -> &'static str {
+        match &self.kind {
+            QuantityKind::Noether { check } if !check.holds() => "not a symmetry (δL ≠ dF/dt)",
+            _ if self.conserved(tolerance) => "conserved",
+            _ => "NOT conserved",
+        }
+    }
 }
 
 /// Quantities tracked along an integrated motion.
@@ -431,6 +476,9 @@ impl Track {
 pub struct Tracking {
     /// Sample times.
     pub times: Vec<f64>,
+    /// The generalized coordinates `q` at each sample time (for drawing the motion: the
+    /// bodies' poses are [`Mechanism::poses`] of these).
+    pub positions: Vec<Vec<f64>>,
     /// The quantities.
     pub tracks: Vec<Track>,
     /// Coordinates found cyclic.
@@ -566,7 +614,9 @@ pub fn track<M: Mechanism + ?Sized>(
     let mut y: Vec<f64> = q0.iter().chain(u0).copied().collect();
     let mut ode = Dopri5::new(2 * n, options.tolerances)?;
     let mut times = Vec::with_capacity(options.intervals + 1);
+    let mut positions = Vec::with_capacity(options.intervals + 1);
     times.push(0.0);
+    positions.push(y[..n].to_vec());
     record(&mut tracks, &y, 0.0);
     for k in 1..=options.intervals {
         let (t0, t1) = (
@@ -581,6 +631,7 @@ pub fn track<M: Mechanism + ?Sized>(
             |_| None,
         )?;
         times.push(t1);
+        positions.push(y[..n].to_vec());
         record(&mut tracks, &y, t1);
     }
     // Every value, magnitude and deviation must be a number: an angular momentum about a
@@ -607,6 +658,7 @@ pub fn track<M: Mechanism + ?Sized>(
     }
     Ok(Tracking {
         times,
+        positions,
         tracks,
         cyclic,
         steps: (ode.accepted, ode.rejected),

@@ -4,7 +4,6 @@
 use crate::cli::CompareArgs;
 use crate::input::{CliError, CliResult};
 use crate::output::fmt::{signed, Table};
-use crate::output::json::{self, num};
 use crate::sources::mechanism::{self, MechanismCase, MechanismSpec};
 use crate::sources::scenario::parse_laws;
 use crate::sources::Source;
@@ -12,7 +11,6 @@ use impax::mechanism::impact::{MechanismImpact, MechanismOutcome};
 use impax::mechanism::Mechanism;
 use impax::planar::Verdict;
 use impax::LawId;
-use serde_json::{json, Value};
 
 /// The mechanism flags of `compare` as a spec (for merging over a file or a built-in).
 pub fn flags(args: &CompareArgs) -> MechanismSpec {
@@ -51,8 +49,10 @@ pub fn run(args: &CompareArgs, source: &Source, out: &mut Vec<u8>) -> CliResult<
     }
     let spec = mechanism::load_source(source, &flags(args))?;
     let case = mechanism::build(&spec)?;
-    let friction = spec.friction.unwrap_or(0.5);
-    let restitution = spec.restitution.unwrap_or(0.5);
+    let friction = spec.friction.unwrap_or(impax::scenario::DEFAULT_FRICTION);
+    let restitution = spec
+        .restitution
+        .unwrap_or(impax::scenario::DEFAULT_RESTITUTION);
     let laws = match &spec.laws {
         Some(ids) => parse_laws(ids)?,
         None => LawId::CONTACT_SPACE.to_vec(),
@@ -70,69 +70,20 @@ pub fn run(args: &CompareArgs, source: &Source, out: &mut Vec<u8>) -> CliResult<
         .map(|&law| Ok((law, impact.resolve(law, friction, restitution)?)))
         .collect::<CliResult<Vec<_>>>()?;
     let text = if args.json {
-        serde_json::to_string_pretty(&document(&spec, &case, &impact, &problem, &results))
-            .map_err(CliError::failure)?
+        serde_json::to_string_pretty(&impax::json::mechanism_compare(
+            &spec.mechanism,
+            &case,
+            &impact,
+            &problem,
+            &results,
+        ))
+        .map_err(CliError::failure)?
             + "\n"
     } else {
         table(&case, &impact, &problem, &results)
     };
     out.extend_from_slice(text.as_bytes());
     Ok(())
-}
-
-fn document(
-    spec: &MechanismSpec,
-    case: &MechanismCase,
-    impact: &MechanismImpact<'_, impax::mechanism::builtin::BuiltIn>,
-    problem: &impax::planar::ContactProblem,
-    results: &[(LawId, MechanismOutcome)],
-) -> Value {
-    let m = &case.mechanism;
-    let t0 = impact.energy_before();
-    let entries: Vec<Value> = results
-        .iter()
-        .map(|(_, r)| match &r.resolution {
-            Ok(o) => {
-                let mut e = json::outcome_fields(o, "contact_velocity_after");
-                let after = r.velocities_after.as_ref().expect("applied");
-                e.insert(
-                    "velocities_after".into(),
-                    json!(after.iter().map(|&x| num(x)).collect::<Vec<_>>()),
-                );
-                e.insert("energy_after".into(), num(t0 + o.energy_change));
-                e.insert("energy_ratio".into(), num((t0 + o.energy_change) / t0));
-                e.insert(
-                    "energy_change_from_velocities".into(),
-                    r.energy_change_from_velocities.map_or(Value::Null, num),
-                );
-                Value::Object(e)
-            }
-            Err(b) => {
-                let mut e = json::breakdown_fields(b, "contact_velocity_after", false);
-                for k in [
-                    "velocities_after",
-                    "energy_after",
-                    "energy_ratio",
-                    "energy_change_from_velocities",
-                ] {
-                    e.insert(k.into(), Value::Null);
-                }
-                Value::Object(e)
-            }
-        })
-        .collect();
-    json!({
-        "mechanism": spec.mechanism,
-        "scenario": case.description,
-        "coordinates": m.coordinates(),
-        "q": case.q,
-        "u_before": case.u,
-        "contact": m.contacts()[impact.contact()].name,
-        "gap": num(impact.gap()),
-        "problem": json::problem(problem),
-        "energy_before": t0,
-        "results": entries,
-    })
 }
 
 fn table(

@@ -5,13 +5,11 @@
 use crate::cli::CompareArgs;
 use crate::input::{CliError, CliResult};
 use crate::output::fmt::{signed, Table};
-use crate::output::json::{self, num};
 use crate::sources::robot::{self, RobotCase};
 use crate::sources::File;
 use impax::multibody::{SpatialMechanismImpact, SpatialMechanismOutcome};
 use impax::scenario::BuiltRobot;
 use impax::LawId;
-use serde_json::{json, Value};
 
 pub fn run(args: &CompareArgs, file: &File, out: &mut Vec<u8>) -> CliResult<()> {
     for (flag, given) in [
@@ -44,74 +42,16 @@ pub fn run(args: &CompareArgs, file: &File, out: &mut Vec<u8>) -> CliResult<()> 
         .map(|&law| Ok((law, impact.resolve(law, case.friction, case.restitution)?)))
         .collect::<CliResult<Vec<_>>>()?;
     let text = if args.json {
-        serde_json::to_string_pretty(&document(&built, &impact, &problem, &results))
-            .map_err(CliError::failure)?
+        serde_json::to_string_pretty(&impax::json::robot_compare(
+            &built, &impact, &problem, &results,
+        ))
+        .map_err(CliError::failure)?
             + "\n"
     } else {
         table(&built, &case, &impact, &results)
     };
     out.extend_from_slice(text.as_bytes());
     Ok(())
-}
-
-/// The JSON document: the keys (`mechanism`, `coordinates`, `q`, `u_before`,
-/// `contact`, `gap`, `problem`, `energy_before`, `results`) and the description.
-pub(crate) fn document(
-    built: &BuiltRobot,
-    impact: &SpatialMechanismImpact<'_>,
-    problem: &impax::spatial::ContactProblem,
-    results: &[(LawId, SpatialMechanismOutcome)],
-) -> Value {
-    let t0 = impact.energy_before();
-    let entries: Vec<Value> = results.iter().map(|(_, r)| entry(r, t0)).collect();
-    json!({
-        "mechanism": built.name,
-        "scenario": built.description(),
-        "coordinates": built.coordinates(),
-        "speeds": built.model.speeds(),
-        "mimic_joints": built.mimic_joints,
-        "q": built.q,
-        "u_before": built.u,
-        "contact": built.model.contacts()[built.contact].name,
-        "gap": num(impact.gap()),
-        "problem": json::spatial_problem(problem),
-        "energy_before": num(t0),
-        "results": entries,
-    })
-}
-
-/// One law's entry: the spatial outcome's keys with the generalized velocities after and the
-/// energies.
-fn entry(r: &SpatialMechanismOutcome, t0: f64) -> Value {
-    match &r.resolution {
-        Ok(o) => {
-            let mut e = json::spatial_outcome_fields(o);
-            let after = r.velocities_after.as_deref().unwrap_or_default();
-            e.insert(
-                "velocities_after".into(),
-                json!(after.iter().map(|&x| num(x)).collect::<Vec<_>>()),
-            );
-            e.insert("energy_after".into(), num(t0 + o.energy_change));
-            e.insert("energy_ratio".into(), num((t0 + o.energy_change) / t0));
-            e.insert(
-                "energy_change_from_velocities".into(),
-                r.energy_change_from_velocities.map_or(Value::Null, num),
-            );
-            Value::Object(e)
-        }
-        Err(b) => {
-            let mut e = json::spatial_breakdown_fields(b);
-            for k in [
-                "velocities_after",
-                "energy_after",
-                "energy_ratio",
-                "energy_change_from_velocities",
-            ] {
-                e.insert(k.into(), Value::Null);
-            }
-            Value::Object(e)
-        }
-    }
 }
 
 fn table(

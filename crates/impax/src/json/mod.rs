@@ -11,6 +11,11 @@ use crate::planar::{Breakdown, ContactProblem, LawDetail, Outcome, SmithReading}
 use crate::spatial::{self, PhaseKind};
 use serde_json::{json, Map, Value};
 
+mod mechanism;
+pub use mechanism::{
+    conserved, mechanism_compare, mechanism_entry, quantity, robot_compare, robot_entry,
+};
+
 /// JSON numbers: `-0` printed as `0`.
 pub fn num(x: f64) -> Value {
     json!(if x == 0.0 { 0.0 } else { x })

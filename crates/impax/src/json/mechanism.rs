@@ -1,0 +1,236 @@
+//! The documents of a mechanism: every law on the impact of a planar mechanism (a built-in or
+//! a mechanism file) or of a spatial one (a robot from URDF, a `space = "3d"` file), and the
+//! quantities tracked along a planar mechanism's free motion. `impax compare MECHANISM --json`,
+//! `impax compare ROBOT --json`, `impax conserved --json` and the explorer write these.
+//!
+//! ```
+//! use impax::mechanism::impact::MechanismImpact;
+//! use impax::scenario::MechanismSpec;
+//! use impax::LawId;
+//! let spec = MechanismSpec { mechanism: "double-pendulum".into(), ..MechanismSpec::default() };
+//! let case = spec.build()?;
+//! let impact = MechanismImpact::striking(&case.mechanism, &case.q, &case.u)?;
+//! let problem = impact.problem(0.5, 0.5)?;
+//! let results = vec![(LawId::Whittaker, impact.resolve(LawId::Whittaker, 0.5, 0.5)?)];
+//! let doc = impax::json::mechanism_compare("double-pendulum", &case, &impact, &problem, &results);
+//! assert_eq!(doc["contact"], "tip of rod 2");
+//! let ratio = doc["results"][0]["energy_ratio"].as_f64().unwrap();
+//! assert!((ratio - 1.26087).abs() < 5e-6); // Kane's paradox: Whittaker's rule gains energy
+//! # Ok::<(), impax::Error>(())
+//! ```
+
+use super::{
+    breakdown_fields, num, outcome_fields, problem, spatial_breakdown_fields,
+    spatial_outcome_fields, spatial_problem,
+};
+use crate::mechanism::builtin::BuiltIn;
+use crate::mechanism::conserved::{QuantityKind, Track, Tracking};
+use crate::mechanism::impact::{MechanismImpact, MechanismOutcome};
+use crate::mechanism::Mechanism;
+use crate::multibody::{SpatialMechanismImpact, SpatialMechanismOutcome};
+use crate::planar::ContactProblem;
+use crate::scenario::{BuiltMechanism, BuiltRobot};
+use crate::spatial;
+use crate::LawId;
+use serde_json::{json, Map, Value};
+
+/// The keys every law's entry of a mechanism adds to the contact-space record: the
+/// generalized velocities after, `T⁺`, `T⁺/T⁻` and `T⁺ − T⁻` from the velocities.
+fn energies(
+    mut e: Map<String, Value>,
+    after: Option<&[f64]>,
+    energy_change: Option<f64>,
+    from_velocities: Option<f64>,
+    t0: f64,
+) -> Value {
+    match (after, energy_change) {
+        (Some(after), Some(de)) => {
+            e.insert(
+                "velocities_after".into(),
+                json!(after.iter().map(|&x| num(x)).collect::<Vec<_>>()),
+            );
+            e.insert("energy_after".into(), num(t0 + de));
+            e.insert("energy_ratio".into(), num((t0 + de) / t0));
+            e.insert(
+                "energy_change_from_velocities".into(),
+                from_velocities.map_or(Value::Null, num),
+            );
+        }
+        _ => {
+            for k in [
+                "velocities_after",
+                "energy_after",
+                "energy_ratio",
+                "energy_change_from_velocities",
+            ] {
+                e.insert(k.into(), Value::Null);
+            }
+        }
+    }
+    Value::Object(e)
+}
+
+/// One law's entry on a planar mechanism: the contact-space record
+/// ([`outcome_fields`], the velocity after as `contact_velocity_after`) with
+/// `velocities_after`, `energy_after`, `energy_ratio` and `energy_change_from_velocities`
+/// (each null when the law broke down). `t0` is the kinetic energy before.
+pub fn mechanism_entry(r: &MechanismOutcome, t0: f64) -> Value {
+    match &r.resolution {
+        Ok(o) => energies(
+            outcome_fields(o, "contact_velocity_after"),
+            r.velocities_after.as_deref(),
+            Some(o.energy_change),
+            r.energy_change_from_velocities,
+            t0,
+        ),
+        Err(b) => energies(
+            breakdown_fields(b, "contact_velocity_after", false),
+            None,
+            None,
+            None,
+            t0,
+        ),
+    }
+}
+
+/// Every law on a planar mechanism's impact: `mechanism` (`name`), `scenario`,
+/// `coordinates`, `q`, `u_before`, `contact` (the striking contact's name), `gap`,
+/// `problem`, `energy_before` and `results` ([`mechanism_entry`] per law).
+pub fn mechanism_compare(
+    name: &str,
+    case: &BuiltMechanism,
+    impact: &MechanismImpact<'_, BuiltIn>,
+    problem_: &ContactProblem,
+    results: &[(LawId, MechanismOutcome)],
+) -> Value {
+    let m = &case.mechanism;
+    let t0 = impact.energy_before();
+    let entries: Vec<Value> = results
+        .iter()
+        .map(|(_, r)| mechanism_entry(r, t0))
+        .collect();
+    json!({
+        "mechanism": name,
+        "scenario": case.description,
+        "coordinates": m.coordinates(),
+        "q": case.q,
+        "u_before": case.u,
+        "contact": m.contacts()[impact.contact()].name,
+        "gap": num(impact.gap()),
+        "problem": problem(problem_),
+        "energy_before": t0,
+        "results": entries,
+    })
+}
+
+/// One law's entry on a spatial mechanism: the spatial record
+/// ([`spatial_outcome_fields`]) with `velocities_after`, `energy_after`, `energy_ratio` and
+/// `energy_change_from_velocities` (null when the law broke down).
+pub fn robot_entry(r: &SpatialMechanismOutcome, t0: f64) -> Value {
+    match &r.resolution {
+        Ok(o) => energies(
+            spatial_outcome_fields(o),
+            Some(r.velocities_after.as_deref().unwrap_or_default()),
+            Some(o.energy_change),
+            r.energy_change_from_velocities,
+            t0,
+        ),
+        Err(b) => energies(spatial_breakdown_fields(b), None, None, None, t0),
+    }
+}
+
+/// Every law on a spatial mechanism's impact: `mechanism`, `scenario`, `coordinates`,
+/// `speeds`, `mimic_joints`, `q`, `u_before`, `contact`, `gap`, `problem`, `energy_before`
+/// and `results` ([`robot_entry`] per law).
+pub fn robot_compare(
+    built: &BuiltRobot,
+    impact: &SpatialMechanismImpact<'_>,
+    problem_: &spatial::ContactProblem,
+    results: &[(LawId, SpatialMechanismOutcome)],
+) -> Value {
+    let t0 = impact.energy_before();
+    let entries: Vec<Value> = results.iter().map(|(_, r)| robot_entry(r, t0)).collect();
+    json!({
+        "mechanism": built.name,
+        "scenario": built.description(),
+        "coordinates": built.coordinates(),
+        "speeds": built.model.speeds(),
+        "mimic_joints": built.mimic_joints,
+        "q": built.q,
+        "u_before": built.u,
+        "contact": built.model.contacts()[built.contact].name,
+        "gap": num(impact.gap()),
+        "problem": spatial_problem(problem_),
+        "energy_before": num(t0),
+        "results": entries,
+    })
+}
+
+/// One tracked quantity: `name`, `kind` ([`Track::kind_id`]), `description`, `initial`,
+/// `final`, `largest_deviation`, `relative_deviation`, `magnitude`, `conserved` (at
+/// `tolerance`), and by kind `coordinate` and `cyclic`, `about`, `axis` or `symmetry_check`
+/// (`holds`, `variation`, `gauge_rate`).
+pub fn quantity(t: &Track, coordinates: &[&str], tolerance: f64) -> Value {
+    let mut q = json!({
+        "name": t.name,
+        "kind": t.kind_id(),
+        "description": t.description(coordinates),
+        "initial": num(t.initial()),
+        "final": num(*t.values.last().expect("samples")),
+        "largest_deviation": num(t.largest_deviation()),
+        "relative_deviation": num(t.relative_deviation()),
+        "magnitude": num(t.magnitude),
+        "conserved": t.conserved(tolerance),
+    });
+    match &t.kind {
+        QuantityKind::GeneralizedMomentum { coordinate, cyclic } => {
+            q["coordinate"] = json!(coordinates[*coordinate]);
+            q["cyclic"] = json!(cyclic);
+        }
+        QuantityKind::AngularMomentum { about } => q["about"] = json!([about.x, about.y]),
+        QuantityKind::LinearMomentum { axis } => {
+            q["axis"] = json!(if *axis == 0 { "x" } else { "y" })
+        }
+        QuantityKind::Noether { check } => {
+            q["symmetry_check"] = json!({
+                "holds": check.holds(),
+                "variation": num(check.variation),
+                "gauge_rate": num(check.gauge_rate),
+            })
+        }
+        QuantityKind::Energy => {}
+    }
+    q
+}
+
+/// The quantities along a planar mechanism's free motion (`impax conserved --json`):
+/// `mechanism` (`name`), `scenario`, `coordinates`, `q`, `u`, `duration`, `samples`,
+/// `tolerance`, `steps` (`accepted`, `rejected`), `cyclic` (the cyclic coordinates' names)
+/// and `quantities` ([`quantity`] each).
+pub fn conserved(
+    name: &str,
+    case: &BuiltMechanism,
+    tracking: &Tracking,
+    tolerance: f64,
+    duration: f64,
+) -> Value {
+    let coords = case.mechanism.coordinates();
+    let quantities: Vec<Value> = tracking
+        .tracks
+        .iter()
+        .map(|t| quantity(t, coords, tolerance))
+        .collect();
+    json!({
+        "mechanism": name,
+        "scenario": case.description,
+        "coordinates": coords,
+        "q": case.q,
+        "u": case.u,
+        "duration": duration,
+        "samples": tracking.times.len(),
+        "tolerance": tolerance,
+        "steps": { "accepted": tracking.steps.0, "rejected": tracking.steps.1 },
+        "cyclic": tracking.cyclic.iter().map(|&i| coords[i]).collect::<Vec<_>>(),
+        "quantities": quantities,
+    })
+}
