@@ -145,6 +145,18 @@ FLAGS = [
     for f in ["--balls", "--v0", "--gap", "--mass", "--radius"]
 ] + [
     (["audit", "rod"], f, 1) for f in ["--friction", "--restitution", "--gravity"]
+] + [
+    (["compare", "examples/mechanisms/double-pendulum.toml"], f, n)
+    for f, n in [("--q", 2), ("--u", 2), ("--friction", 1), ("--gravity", 1)]
+] + [
+    (["compare", "examples/mechanisms/arm-3d.toml"], f, n)
+    for f, n in [("--q", 3), ("--u", 3), ("--floor", 1), ("--restitution", 1)]
+] + [
+    (["compare", "crates/impax/tests/data/urdf/solo12.urdf", "--floating-base", "--contact",
+      "FL_FOOT"], f, n) for f, n in [("--q", 19), ("--u", 18), ("--floor", 1)]
+] + [
+    (["sweep", "examples/mechanisms/arm-3d.toml", "--quiet", "--grid"], "q.elbow=-1:", 1),
+    (["simulate", "examples/mechanisms/rod.toml", "--until", "0.3"], "--q", 3),
 ]
 
 

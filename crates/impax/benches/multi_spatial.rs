@@ -12,7 +12,7 @@ fn bench_box_flat(c: &mut Criterion) {
     // The built-in's defaults: m = 1, half-extents (0.5, 0.3, 0.2), v = (0, 0, −1), ω_z = 2,
     // μ = 0.3, e = 0.5 (the corners slip round the vertical, halt together and stick).
     let sc = BoxFlat::default().build().unwrap();
-    let p = sc.impact.problem3(&[0.3], &[0.5]).unwrap();
+    let p = sc.impact.spatial_problem(&[0.3], &[0.5]).unwrap();
     let mut g = c.benchmark_group("box-flat");
     for law in [LawId::Lzb, LawId::Lcp, LawId::Sequential] {
         g.bench_with_input(BenchmarkId::from_parameter(law), &p, |b, p| {

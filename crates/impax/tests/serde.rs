@@ -491,7 +491,7 @@ fn spatial_outcomes_at_several_contacts_round_trip() {
         }
         .build()
         .unwrap();
-        let p = sc.impact.problem3(&[mu], &[e]).unwrap();
+        let p = sc.impact.spatial_problem(&[mu], &[e]).unwrap();
         let v = round_trip(&p);
         assert_eq!(v["w"].as_array().unwrap().len(), 12);
         for law in [LawId::Lcp, LawId::Sequential] {

@@ -107,7 +107,14 @@ impl Axis {
     #[inline(always)]
     fn value_over(&self, i: u64, n: f64) -> f64 {
         let i = i as f64;
-        (self.start * (n - i) + self.stop * i) / n
+        let v = (self.start * (n - i) + self.stop * i) / n;
+        if v.is_finite() {
+            return v;
+        }
+        // The products overflow for ends near f64::MAX: weigh first, then keep the value
+        // between the ends (the weights' rounding could step just past one).
+        let (lo, hi) = (self.start.min(self.stop), self.start.max(self.stop));
+        (self.start * ((n - i) / n) + self.stop * (i / n)).clamp(lo, hi)
     }
 
     /// Index of the grid value nearest to `x` (clamped to the axis).
@@ -456,6 +463,17 @@ mod tests {
             let want: Vec<f64> = (0..3).map(|k| g.axes()[k].value(idx[k])).collect();
             assert_eq!(v, want);
         }
+    }
+
+    #[test]
+    fn axes_near_the_largest_float_stay_finite_and_ordered() {
+        let a = Axis::new("x", -f64::MAX, f64::MAX, 5).unwrap();
+        let v: Vec<f64> = (0..5).map(|i| a.value(i)).collect();
+        assert_eq!((v[0], v[4]), (-f64::MAX, f64::MAX));
+        assert_eq!(v[2], 0.0);
+        assert!(v.windows(2).all(|w| w[0] < w[1]), "{v:?}");
+        let b = Axis::new("x", -1.0, 1e308, 3).unwrap();
+        assert_eq!([b.value(0), b.value(1), b.value(2)], [-1.0, 5e307, 1e308]);
     }
 
     #[test]

@@ -34,68 +34,65 @@ use crate::spatial;
 use crate::LawId;
 use serde_json::{json, Map, Value};
 
-/// The keys every law's entry of a mechanism adds to the contact-space record: the
-/// generalized velocities after, `T⁺`, `T⁺/T⁻` and `T⁺ − T⁻` from the velocities.
-fn energies(
-    mut e: Map<String, Value>,
-    after: Option<&[f64]>,
-    energy_change: Option<f64>,
-    from_velocities: Option<f64>,
+/// The keys a mechanism's impact adds to a law's entry (`fields`: the outcome's or the
+/// breakdown's): `velocities_after` (`u⁺`), `energy_after` and `energy_ratio` (of the energy
+/// before `t0`), `energy_change_from_velocities` — all null when the law broke down
+/// (`applied` is `None`).
+pub fn mechanism_entry(
+    mut fields: Map<String, Value>,
     t0: f64,
+    applied: Option<(f64, &[f64], Option<f64>)>,
 ) -> Value {
-    match (after, energy_change) {
-        (Some(after), Some(de)) => {
-            e.insert(
+    match applied {
+        Some((energy_change, after, from_velocities)) => {
+            fields.insert(
                 "velocities_after".into(),
                 json!(after.iter().map(|&x| num(x)).collect::<Vec<_>>()),
             );
-            e.insert("energy_after".into(), num(t0 + de));
-            e.insert("energy_ratio".into(), num((t0 + de) / t0));
-            e.insert(
+            fields.insert("energy_after".into(), num(t0 + energy_change));
+            fields.insert("energy_ratio".into(), num((t0 + energy_change) / t0));
+            fields.insert(
                 "energy_change_from_velocities".into(),
                 from_velocities.map_or(Value::Null, num),
             );
         }
-        _ => {
+        None => {
             for k in [
                 "velocities_after",
                 "energy_after",
                 "energy_ratio",
                 "energy_change_from_velocities",
             ] {
-                e.insert(k.into(), Value::Null);
+                fields.insert(k.into(), Value::Null);
             }
         }
     }
-    Value::Object(e)
+    Value::Object(fields)
 }
 
 /// One law's entry on a planar mechanism: the contact-space record
 /// ([`outcome_fields`], the velocity after as `contact_velocity_after`) with
 /// `velocities_after`, `energy_after`, `energy_ratio` and `energy_change_from_velocities`
 /// (each null when the law broke down). `t0` is the kinetic energy before.
-pub fn mechanism_entry(r: &MechanismOutcome, t0: f64) -> Value {
-    match &r.resolution {
-        Ok(o) => energies(
+pub fn mechanism_result(r: &MechanismOutcome, t0: f64) -> Value {
+    match (&r.resolution, r.velocities_after.as_deref()) {
+        (Ok(o), Some(after)) => mechanism_entry(
             outcome_fields(o, "contact_velocity_after"),
-            r.velocities_after.as_deref(),
-            Some(o.energy_change),
-            r.energy_change_from_velocities,
             t0,
+            Some((o.energy_change, after, r.energy_change_from_velocities)),
         ),
-        Err(b) => energies(
+        (Ok(o), None) => mechanism_entry(outcome_fields(o, "contact_velocity_after"), t0, None),
+        (Err(b), _) => mechanism_entry(
             breakdown_fields(b, "contact_velocity_after", false),
-            None,
-            None,
-            None,
             t0,
+            None,
         ),
     }
 }
 
 /// Every law on a planar mechanism's impact: `mechanism` (`name`), `scenario`,
 /// `coordinates`, `q`, `u_before`, `contact` (the striking contact's name), `gap`,
-/// `problem`, `energy_before` and `results` ([`mechanism_entry`] per law).
+/// `problem`, `energy_before` and `results` ([`mechanism_result`] per law).
 pub fn mechanism_compare(
     name: &str,
     case: &BuiltMechanism,
@@ -107,7 +104,7 @@ pub fn mechanism_compare(
     let t0 = impact.energy_before();
     let entries: Vec<Value> = results
         .iter()
-        .map(|(_, r)| mechanism_entry(r, t0))
+        .map(|(_, r)| mechanism_result(r, t0))
         .collect();
     json!({
         "mechanism": name,
@@ -126,22 +123,24 @@ pub fn mechanism_compare(
 /// One law's entry on a spatial mechanism: the spatial record
 /// ([`spatial_outcome_fields`]) with `velocities_after`, `energy_after`, `energy_ratio` and
 /// `energy_change_from_velocities` (null when the law broke down).
-pub fn robot_entry(r: &SpatialMechanismOutcome, t0: f64) -> Value {
+pub fn robot_result(r: &SpatialMechanismOutcome, t0: f64) -> Value {
     match &r.resolution {
-        Ok(o) => energies(
+        Ok(o) => mechanism_entry(
             spatial_outcome_fields(o),
-            Some(r.velocities_after.as_deref().unwrap_or_default()),
-            Some(o.energy_change),
-            r.energy_change_from_velocities,
             t0,
+            Some((
+                o.energy_change,
+                r.velocities_after.as_deref().unwrap_or_default(),
+                r.energy_change_from_velocities,
+            )),
         ),
-        Err(b) => energies(spatial_breakdown_fields(b), None, None, None, t0),
+        Err(b) => mechanism_entry(spatial_breakdown_fields(b), t0, None),
     }
 }
 
 /// Every law on a spatial mechanism's impact: `mechanism`, `scenario`, `coordinates`,
 /// `speeds`, `mimic_joints`, `q`, `u_before`, `contact`, `gap`, `problem`, `energy_before`
-/// and `results` ([`robot_entry`] per law).
+/// and `results` ([`robot_result`] per law).
 pub fn robot_compare(
     built: &BuiltRobot,
     impact: &SpatialMechanismImpact<'_>,
@@ -149,7 +148,7 @@ pub fn robot_compare(
     results: &[(LawId, SpatialMechanismOutcome)],
 ) -> Value {
     let t0 = impact.energy_before();
-    let entries: Vec<Value> = results.iter().map(|(_, r)| robot_entry(r, t0)).collect();
+    let entries: Vec<Value> = results.iter().map(|(_, r)| robot_result(r, t0)).collect();
     json!({
         "mechanism": built.name,
         "scenario": built.description(),

@@ -13,7 +13,8 @@ use serde_json::{json, Map, Value};
 
 mod mechanism;
 pub use mechanism::{
-    conserved, mechanism_compare, mechanism_entry, quantity, robot_compare, robot_entry,
+    conserved, mechanism_compare, mechanism_entry, mechanism_result, quantity, robot_compare,
+    robot_result,
 };
 
 /// JSON numbers: `-0` printed as `0`.

@@ -471,6 +471,10 @@ impl Track {
     }
 }
 
+/// Largest number of integrator steps (accepted and rejected) [`track`] takes over the
+/// whole motion before it gives up with [`Error::Integration`].
+pub const TRACK_MAX_STEPS: usize = 1_000_000;
+
 /// Quantities tracked along an integrated motion.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Tracking {
@@ -619,6 +623,9 @@ pub fn track<M: Mechanism + ?Sized>(
     positions.push(y[..n].to_vec());
     record(&mut tracks, &y, 0.0);
     for k in 1..=options.intervals {
+        // One budget for the whole motion, not per sample interval: a state spinning at
+        // 10⁷ rad/s would otherwise take 10⁶ steps in each of a thousand intervals.
+        ode.max_steps = TRACK_MAX_STEPS.saturating_sub(ode.accepted + ode.rejected);
         let (t0, t1) = (
             times[k - 1],
             options.duration * k as f64 / options.intervals as f64,

@@ -60,7 +60,7 @@ pub use outcome::{
 };
 pub use problem::{MultiProblem, HERTZ_EXPONENT, RANGE_TOL, RANK_TOL};
 pub use scenarios::MultiScenario;
-pub use system::{MultiImpact, SystemOutcome};
+pub use system::{MultiImpact, SystemOutcome, SystemProblem};
 
 use crate::error::{Error, Result};
 use crate::law::LawId;

@@ -22,10 +22,9 @@
 
 use super::{spatial, MultiProblem, MultiResolution};
 use crate::error::{Error, Num, Result};
-use crate::law::LawId;
-use crate::math::{Vec2, Vec3};
+use crate::law::{self, LawId, Options};
 use crate::mechanism::{dynamics, Mechanism};
-use nalgebra::{Cholesky, DMatrix, DVector, Dyn};
+use nalgebra::{Cholesky, DMatrix, DVector, Dyn, SVector};
 
 /// A system at the instant of an impact at `K` contacts (module docs).
 #[derive(Debug, Clone)]
@@ -292,7 +291,8 @@ impl MultiImpact {
         if self.dim == 3 {
             return Err(Error::Invalid {
                 field: "jacobian".into(),
-                reason: "the system is spatial (three rows per contact): use problem3".into(),
+                reason: "the system is spatial (three rows per contact): use spatial_problem"
+                    .into(),
             });
         }
         MultiProblem::new(
@@ -307,7 +307,11 @@ impl MultiImpact {
     ///
     /// # Errors
     /// As [`spatial::MultiProblem::new`]; a planar system (`jacobian`).
-    pub fn problem3(&self, friction: &[f64], restitution: &[f64]) -> Result<spatial::MultiProblem> {
+    pub fn spatial_problem(
+        &self,
+        friction: &[f64],
+        restitution: &[f64],
+    ) -> Result<spatial::MultiProblem> {
         if self.dim != 3 {
             return Err(Error::Invalid {
                 field: "jacobian".into(),
@@ -322,19 +326,21 @@ impl MultiImpact {
         )
     }
 
-    /// `u⁺ = u⁻ + M⁻¹ Jᵀ p` for the impulses `p` (one per contact).
-    pub fn velocities_after(&self, p: &[Vec2]) -> Vec<f64> {
+    /// `u⁺ = u⁻ + M⁻¹ Jᵀ p` for the impulses `p` (one per contact): `Vec2` (tangent, normal)
+    /// for a planar system, `Vec3` (two tangents, normal) for a spatial one.
+    ///
+    /// # Panics
+    /// When `D` is not the system's number of rows per contact or `p` has not one impulse
+    /// per contact.
+    pub fn velocities_after<const D: usize>(&self, p: &[SVector<f64, D>]) -> Vec<f64> {
+        assert_eq!(
+            D, self.dim,
+            "impulses of {D} components for {} rows per contact",
+            self.dim
+        );
         self.after_flat(DVector::from_iterator(
-            2 * p.len(),
-            p.iter().flat_map(|x| [x.x, x.y]),
-        ))
-    }
-
-    /// `u⁺ = u⁻ + M⁻¹ Jᵀ p` for the impulses `p` of a spatial system.
-    pub fn velocities_after3(&self, p: &[Vec3]) -> Vec<f64> {
-        self.after_flat(DVector::from_iterator(
-            3 * p.len(),
-            p.iter().flat_map(|x| [x.x, x.y, x.z]),
+            D * p.len(),
+            p.iter().flat_map(|x| x.iter().copied()),
         ))
     }
 
@@ -344,23 +350,26 @@ impl MultiImpact {
             .to_vec()
     }
 
-    /// [`MultiImpact::resolve`] for a spatial system and problem ([`MultiImpact::problem3`]).
+    /// Resolve `problem` (built by [`MultiImpact::problem`] for a planar system,
+    /// [`MultiImpact::spatial_problem`] for a spatial one) with `law` and map the impulses back
+    /// to the generalized velocities.
     ///
     /// # Errors
-    /// As [`spatial::resolve`].
-    pub fn resolve3(
+    /// As [`LawId::resolve`] (a one-contact law with several contacts names `law`).
+    pub fn resolve<P: SystemProblem>(
         &self,
         law: LawId,
-        problem: &spatial::MultiProblem,
-    ) -> Result<SystemOutcome<spatial::MultiResolution>> {
-        let resolution = spatial::resolve(law, problem)?;
-        let (velocities_after, energy_change_from_velocities) = match &resolution {
-            Ok(o) => {
-                let after = self.velocities_after3(&o.impulses());
+        problem: &P,
+    ) -> Result<SystemOutcome<P::Outcome>> {
+        let resolution = problem.resolve_by(law, &Options::default())?;
+        let (velocities_after, energy_change_from_velocities) = match P::flat_impulses(&resolution)
+        {
+            Some(flat) => {
+                let after = self.after_flat(flat);
                 let de = self.kinetic_energy(&after) - self.energy_before();
                 (Some(after), Some(de))
             }
-            Err(_) => (None, None),
+            None => (None, None),
         };
         Ok(SystemOutcome {
             resolution,
@@ -368,26 +377,46 @@ impl MultiImpact {
             energy_change_from_velocities,
         })
     }
+}
 
-    /// Resolve `problem` (built by [`MultiImpact::problem`]) with `law` and map the impulses
-    /// back to the generalized velocities.
-    ///
-    /// # Errors
-    /// As [`LawId::resolve`] (a one-contact law with several contacts names `law`).
-    pub fn resolve(&self, law: LawId, problem: &MultiProblem) -> Result<SystemOutcome> {
-        let resolution = law.resolve(problem)?;
-        let (velocities_after, energy_change_from_velocities) = match &resolution {
-            Ok(o) => {
-                let after = self.velocities_after(&o.impulses());
-                let de = self.kinetic_energy(&after) - self.energy_before();
-                (Some(after), Some(de))
-            }
-            Err(_) => (None, None),
-        };
-        Ok(SystemOutcome {
-            resolution,
-            velocities_after,
-            energy_change_from_velocities,
-        })
+/// A contact-space problem of several contacts that a [`MultiImpact`] resolves and maps back:
+/// the planar [`MultiProblem`] or the spatial [`spatial::MultiProblem`] (sealed).
+pub trait SystemProblem:
+    law::Problem<Resolution = Result<<Self as SystemProblem>::Outcome>> + sealed::Sealed
+{
+    /// The law's result: an outcome or a breakdown.
+    type Outcome;
+
+    /// The impulses of a result, contact by contact, flattened (`None` for a breakdown).
+    fn flat_impulses(resolution: &Self::Outcome) -> Option<DVector<f64>>;
+}
+
+mod sealed {
+    pub trait Sealed {}
+    impl Sealed for super::MultiProblem {}
+    impl Sealed for super::spatial::MultiProblem {}
+}
+
+impl SystemProblem for MultiProblem {
+    type Outcome = MultiResolution;
+
+    fn flat_impulses(resolution: &MultiResolution) -> Option<DVector<f64>> {
+        let p = resolution.as_ref().ok()?.impulses();
+        Some(DVector::from_iterator(
+            2 * p.len(),
+            p.iter().flat_map(|x| [x.x, x.y]),
+        ))
+    }
+}
+
+impl SystemProblem for spatial::MultiProblem {
+    type Outcome = spatial::MultiResolution;
+
+    fn flat_impulses(resolution: &spatial::MultiResolution) -> Option<DVector<f64>> {
+        let p = resolution.as_ref().ok()?.impulses();
+        Some(DVector::from_iterator(
+            3 * p.len(),
+            p.iter().flat_map(|x| [x.x, x.y, x.z]),
+        ))
     }
 }

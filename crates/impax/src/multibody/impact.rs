@@ -255,7 +255,7 @@ impl crate::impact::Impact for SpatialMechanismImpact<'_> {
         self.energy_before()
     }
 
-    /// `½ Δuᵀ M (u⁺ + u⁻)` ([`SpatialMechanismImpact::energy_change`]: no cancellation).
+    /// `½ Δuᵀ M (u⁺ + u⁻)` ([`SpatialMechanismImpact::energy_change_to`]: no cancellation).
     fn energy_change(&self, p: &Vec3) -> f64 {
         SpatialMechanismImpact::energy_change_to(
             self,

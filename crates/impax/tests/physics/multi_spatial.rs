@@ -350,9 +350,9 @@ fn box_flat_spin_under_lcp() {
             ..BoxFlat::default()
         };
         let sc = bx.build().unwrap();
-        let p = sc.impact.problem3(&[mu], &[e]).unwrap();
+        let p = sc.impact.spatial_problem(&[mu], &[e]).unwrap();
         assert_eq!(p.rank(), 6);
-        let r = sc.impact.resolve3(LawId::Lcp, &p).unwrap();
+        let r = sc.impact.resolve(LawId::Lcp, &p).unwrap();
         let out = r.resolution.as_ref().unwrap();
         let after = r.velocities_after.unwrap();
         let [a, b, _] = bx.half_extents;
@@ -372,7 +372,7 @@ fn box_flat_spin_under_lcp() {
             (r.energy_change_from_velocities.unwrap() - out.energy_change).abs() < 1e-12,
             "ΔT two ways"
         );
-        let seq = sc.impact.resolve3(LawId::Sequential, &p).unwrap();
+        let seq = sc.impact.resolve(LawId::Sequential, &p).unwrap();
         let seq = seq.resolution.unwrap();
         assert!(seq.energy_change <= 1e-12, "{}", seq.energy_change);
     }

@@ -342,12 +342,12 @@ fn a_box_landing_flat_leaves_level() {
             let sc = bx.build().unwrap();
             let p = sc
                 .impact
-                .problem3(&[mu], &[e])
+                .spatial_problem(&[mu], &[e])
                 .unwrap()
                 .with_exponent(eta)
                 .unwrap();
             assert_eq!(p.rank(), 6);
-            let r = sc.impact.resolve3(LawId::Lzb, &p).unwrap();
+            let r = sc.impact.resolve(LawId::Lzb, &p).unwrap();
             let out = r.resolution.as_ref().unwrap();
             let after = r.velocities_after.unwrap();
             let expect = [0.0, 0.0, e, 0.0, 0.0, 0.0];
@@ -390,8 +390,8 @@ fn a_spinning_box_landing_flat() {
             ..BoxFlat::default()
         };
         let sc = bx.build().unwrap();
-        let p = sc.impact.problem3(&[mu], &[e]).unwrap();
-        let r = sc.impact.resolve3(LawId::Lzb, &p).unwrap();
+        let p = sc.impact.spatial_problem(&[mu], &[e]).unwrap();
+        let r = sc.impact.resolve(LawId::Lzb, &p).unwrap();
         let out = r.resolution.as_ref().unwrap();
         let after = r.velocities_after.unwrap();
         // Energy: no gain, ΔT two ways; no contact approaching after.

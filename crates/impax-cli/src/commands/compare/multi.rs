@@ -278,7 +278,7 @@ pub fn resolve_all(
     if sc.impact.is_spatial() {
         let mut p = sc
             .impact
-            .problem3(
+            .spatial_problem(
                 &[friction.unwrap_or(sc.friction)],
                 &[restitution.unwrap_or(sc.restitution)],
             )
@@ -306,7 +306,7 @@ pub fn resolve_all(
         };
         let mut rows = Vec::new();
         for law in laws {
-            let r = sc.impact.resolve3(law, &p)?;
+            let r = sc.impact.resolve(law, &p)?;
             rows.push(LawRow {
                 law,
                 entry: json::multi3_entry(&r.resolution),

@@ -110,90 +110,120 @@ impl Base {
     /// `energy_ratio`, `normal_impulse`, `phases` and the velocities after.
     fn rows(&self, point: &State, laws: &[LawId], values: &str, out: &mut String) {
         let blank = ",".repeat(self.speeds.len());
-        let invalid = |out: &mut String, reason: &str| {
-            for law in laws {
-                let _ = writeln!(
-                    out,
-                    "{values},{law},invalid,,,,,\"{}\"{blank}",
-                    reason.replace('"', "'")
-                );
-            }
-        };
-        let broken = |out: &mut String, law: LawId, b: &Breakdown| {
-            let _ = writeln!(out, "{values},{law},breakdown,{},,,,{blank}", b.reason.id());
-        };
-        let ok = |out: &mut String,
-                  law: LawId,
-                  verdict: &str,
-                  de: f64,
-                  t0: f64,
-                  pn: f64,
-                  phases: &str,
-                  after: &[f64]| {
-            let _ = write!(
-                out,
-                "{values},{law},ok,{verdict},{de},{},{pn},{phases}",
-                (t0 + de) / t0
-            );
-            for x in after {
-                let _ = write!(out, ",{x}");
-            }
-            out.push('\n');
-        };
-        match &self.swept {
+        let results = match &self.swept {
             Swept::Planar(m) => {
-                let impact = match MechanismImpact::new(m, &point.q, &point.u, self.contact) {
-                    Ok(i) => i,
-                    Err(e) => return invalid(out, &e.to_string()),
-                };
-                let t0 = impact.energy_before();
-                for &law in laws {
-                    match impact.resolve(law, point.friction, point.restitution) {
-                        Err(e) => return invalid(out, &e.to_string()),
-                        Ok(r) => match (&r.resolution, &r.velocities_after) {
-                            (Ok(o), Some(after)) => ok(
-                                out,
-                                law,
-                                o.verdict.id(),
-                                o.energy_change,
+                MechanismImpact::new(m, &point.q, &point.u, self.contact).and_then(|impact| {
+                    let t0 = impact.energy_before();
+                    laws.iter()
+                        .map(|&law| {
+                            let r = impact.resolve(law, point.friction, point.restitution)?;
+                            Ok(Law::of(
+                                r.resolution.map(|o| {
+                                    let after = r.velocities_after.unwrap_or_default();
+                                    (
+                                        o.verdict.id(),
+                                        o.energy_change,
+                                        o.impulse.y,
+                                        o.phases.summary(),
+                                        after,
+                                    )
+                                }),
                                 t0,
-                                o.impulse.y,
-                                &o.phases.summary(),
-                                after,
-                            ),
-                            (Err(b), _) => broken(out, law, b),
-                            (Ok(_), None) => unreachable!("a resolved impact has velocities after"),
-                        },
-                    }
-                }
+                            ))
+                        })
+                        .collect::<impax::Result<Vec<_>>>()
+                })
             }
             Swept::Spatial(model) => {
-                let impact =
-                    match SpatialMechanismImpact::new(model, &point.q, &point.u, self.contact) {
-                        Ok(i) => i,
-                        Err(e) => return invalid(out, &e.to_string()),
-                    };
-                let t0 = impact.energy_before();
-                for &law in laws {
-                    match impact.resolve(law, point.friction, point.restitution) {
-                        Err(e) => return invalid(out, &e.to_string()),
-                        Ok(r) => match (&r.resolution, &r.velocities_after) {
-                            (Ok(o), Some(after)) => ok(
-                                out,
-                                law,
-                                o.verdict.id(),
-                                o.energy_change,
-                                t0,
-                                o.impulse.z,
-                                &o.phases.summary(),
-                                after,
-                            ),
-                            (Err(b), _) => broken(out, law, b),
-                            (Ok(_), None) => unreachable!("a resolved impact has velocities after"),
-                        },
+                SpatialMechanismImpact::new(model, &point.q, &point.u, self.contact).and_then(
+                    |impact| {
+                        let t0 = impact.energy_before();
+                        laws.iter()
+                            .map(|&law| {
+                                let r = impact.resolve(law, point.friction, point.restitution)?;
+                                Ok(Law::of(
+                                    r.resolution.map(|o| {
+                                        let after = r.velocities_after.unwrap_or_default();
+                                        (
+                                            o.verdict.id(),
+                                            o.energy_change,
+                                            o.impulse.z,
+                                            o.phases.summary(),
+                                            after,
+                                        )
+                                    }),
+                                    t0,
+                                ))
+                            })
+                            .collect::<impax::Result<Vec<_>>>()
+                    },
+                )
+            }
+        };
+        let results = match results {
+            Ok(r) => r,
+            Err(e) => {
+                let reason = e.to_string().replace('"', "'");
+                for law in laws {
+                    let _ = writeln!(out, "{values},{law},invalid,,,,,\"{reason}\"{blank}");
+                }
+                return;
+            }
+        };
+        for (law, r) in laws.iter().zip(results) {
+            match r {
+                Law::Resolved {
+                    verdict,
+                    de,
+                    ratio,
+                    pn,
+                    phases,
+                    after,
+                } => {
+                    let _ = write!(
+                        out,
+                        "{values},{law},ok,{verdict},{de},{ratio},{pn},{phases}"
+                    );
+                    for x in after {
+                        let _ = write!(out, ",{x}");
                     }
+                    out.push('\n');
+                }
+                Law::Broken(id) => {
+                    let _ = writeln!(out, "{values},{law},breakdown,{id},,,,{blank}");
                 }
             }
+        }
+    }
+}
+
+/// One law's result at a point, whatever the mechanism's dimension.
+enum Law {
+    Resolved {
+        verdict: &'static str,
+        de: f64,
+        ratio: f64,
+        pn: f64,
+        phases: String,
+        after: Vec<f64>,
+    },
+    /// The breakdown's id.
+    Broken(&'static str),
+}
+
+impl Law {
+    /// From `(verdict, ΔT, p_n, phases, u⁺)` or a breakdown, with the energy before `t0`.
+    fn of(r: Result<(&'static str, f64, f64, String, Vec<f64>), Breakdown>, t0: f64) -> Self {
+        match r {
+            Ok((verdict, de, pn, phases, after)) => Law::Resolved {
+                verdict,
+                de,
+                ratio: (t0 + de) / t0,
+                pn,
+                phases,
+                after,
+            },
+            Err(b) => Law::Broken(b.reason.id()),
         }
     }
 }

@@ -113,7 +113,7 @@
 //! // impulse, although W (12 × 12) has rank 6.
 //! let bx = impax::multi::scenarios::BoxFlat { spin: 0.0, ..Default::default() };
 //! let sc = bx.build().unwrap();
-//! let p = sc.impact.problem3(&[0.3], &[0.5]).unwrap();
+//! let p = sc.impact.spatial_problem(&[0.3], &[0.5]).unwrap();
 //! let out = lzb::resolve(&p).unwrap();
 //! for c in &out.contacts {
 //!     assert!((c.velocity_after.z - 0.5).abs() < 1e-10);
