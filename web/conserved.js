@@ -113,7 +113,7 @@
       body.appendChild(tr);
     }
     const steps = `${a.steps.accepted} steps (${a.steps.rejected} rejected)`;
-    $("cons-notes").textContent = `Dormand–Prince 5(4) at relative tolerance 1e−12, ${steps}, ${a.samples} samples over ${a.duration} s. ` +
+    $("cons-notes").textContent = `Dormand–Prince 5(4) at relative tolerance ${sci(a.tolerances.relative)}, ${steps}, ${a.samples} samples over ${a.duration} s. ` +
       `Relative: the largest deviation from the initial value over the magnitude of the quantity's terms; conserved when at most ${a.tolerance}. ` +
       `Cyclic coordinates (∂L/∂q ≡ 0): ${a.cyclic.length ? a.cyclic.join(", ") : "none"}.`;
   }
@@ -170,7 +170,8 @@
       ctx.fillText(tick(t), box.x0 - 4, Y(t));
     }
     ctx.textAlign = "center"; ctx.textBaseline = "top";
-    for (const t of niceTicks(0, t1, 5)) ctx.fillText(tick(t), X(t), box.y0 + box.h + 4);
+    // The axis' name at its right end, where no tick label is written.
+    for (const t of niceTicks(0, t1, 5)) if (X(t) < box.x0 + box.w - 30) ctx.fillText(tick(t), X(t), box.y0 + box.h + 4);
     ctx.textAlign = "right";
     ctx.fillText("t (s)", box.x0 + box.w, box.y0 + box.h + 4);
     ctx.strokeStyle = "#888"; ctx.strokeRect(box.x0, box.y0, box.w, box.h);

@@ -23,11 +23,14 @@ const Views = {
     if (view.shown) view.shown();
   },
 
-  // The view the address names (after every view's script has registered).
-  start() {
+  // The view the address names (after every view's script has registered); on a change of
+  // the address, the first view when it names none.
+  start(changed) {
     const view = this.list.find((v) => v.hash && v.hash === location.hash);
     if (view) this.show(view.name);
+    else if (changed) this.show(this.list[0].name);
   },
 };
 
-document.addEventListener("DOMContentLoaded", () => Views.start());
+document.addEventListener("DOMContentLoaded", () => Views.start(false));
+window.addEventListener("hashchange", () => Views.start(true));

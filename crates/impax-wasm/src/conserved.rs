@@ -19,6 +19,7 @@
 //! with the page's keys:
 //!
 //! ```text
+//! "tolerances": {"relative", "absolute"},     // the integrator's (Dormand–Prince 5(4))
 //! "times": [t0, t1, …],                       // the sample times
 //! "quantities": [{ …, "values": [Q(t0), Q(t1), …], "verdict": one phrase }],
 //! "scene": null | {"bodies": [{"name", "shape": "ring" | "cart" | "bob", "radius"}],
@@ -177,6 +178,10 @@ pub fn answer(request: &str) -> Result<Value, String> {
         q["values"] = t.values.iter().map(|&x| num(x)).collect();
         q["verdict"] = json!(t.verdict(run.tolerance));
     }
+    doc["tolerances"] = json!({
+        "relative": options.tolerances.relative,
+        "absolute": options.tolerances.absolute,
+    });
     doc["times"] = json!(tracking.times);
     doc["scene"] = scene(&case.mechanism);
     doc["poses"] = poses(&case.mechanism, &tracking);

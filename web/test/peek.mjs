@@ -1,0 +1,26 @@
+// scratch: screenshots of the new views (not committed)
+import { spawn } from "node:child_process";
+import { chromium } from "playwright-core";
+const server = spawn("/work/wt-web/target/debug/impax", ["explore", "--port", "8799"], { stdio: ["ignore", "pipe", "pipe"] });
+await new Promise((r) => setTimeout(r, 1500));
+const browser = await chromium.launch({ executablePath: "/usr/bin/chromium", args: ["--headless", "--no-sandbox", "--disable-gpu"] });
+const page = await browser.newPage({ viewport: { width: 1366, height: 768 } });
+const errors = [];
+page.on("pageerror", (e) => errors.push(e.message));
+page.on("console", (m) => { if (m.type() === "error" || m.type() === "warning") errors.push(m.text()); });
+await page.goto("http://127.0.0.1:8799/");
+await page.waitForSelector('body[data-ready="1"]', { timeout: 20000 });
+await page.click("#tab-mechanism");
+await page.waitForSelector('#mechanism[data-ready="1"]', { timeout: 20000 });
+await page.screenshot({ path: "/tmp/wt-web-shots/mech.png", fullPage: true });
+await page.selectOption("#mech-example", "arm-3d.toml");
+await page.waitForTimeout(300);
+await page.screenshot({ path: "/tmp/wt-web-shots/mech-arm.png", fullPage: true });
+await page.click("#tab-conserved");
+await page.waitForSelector('#conserved[data-ready="1"]', { timeout: 20000 });
+await page.waitForTimeout(1000);
+await page.screenshot({ path: "/tmp/wt-web-shots/cons.png", fullPage: true });
+const [sw, iw] = await page.evaluate(() => [document.documentElement.scrollWidth, window.innerWidth]);
+console.log("scroll", sw, iw, "errors", JSON.stringify(errors));
+await browser.close();
+server.kill();
