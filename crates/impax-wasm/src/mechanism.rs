@@ -124,7 +124,10 @@ pub fn answer(request: &MechanismRequest) -> Result<Value, String> {
         .friction
         .or(file.friction)
         .unwrap_or(DEFAULT_FRICTION);
-    let restitution = (request.restitution.or(file.restitution)).unwrap_or(DEFAULT_RESTITUTION);
+    let restitution = request
+        .restitution
+        .or(file.restitution)
+        .unwrap_or(DEFAULT_RESTITUTION);
     let laws = file.law_ids().map_err(at)?;
     if file.contacts.is_empty() {
         return Err(format!(

@@ -108,7 +108,9 @@ pub fn load(
     Ok(RobotCase {
         spec,
         friction: friction.or(file_friction).unwrap_or(DEFAULT_FRICTION),
-        restitution: (restitution.or(file_restitution)).unwrap_or(DEFAULT_RESTITUTION),
+        restitution: restitution
+            .or(file_restitution)
+            .unwrap_or(DEFAULT_RESTITUTION),
         laws,
     })
 }

@@ -78,7 +78,10 @@ fn the_series_are_the_trackers() {
     )
     .unwrap();
     assert_eq!(v["times"], json!(run.times));
-    assert_eq!(v["tolerances"]["relative"], json!(options.tolerances.relative));
+    assert_eq!(
+        v["tolerances"]["relative"],
+        json!(options.tolerances.relative)
+    );
     assert_eq!(v["quantities"].as_array().unwrap().len(), run.tracks.len());
     for t in &run.tracks {
         let q = quantity(&v, &t.name);

@@ -554,49 +554,43 @@ pub fn track<M: Mechanism + ?Sized>(
         .map(|s| verify_symmetry(m, s.as_ref(), q0, u0, 0.0, 16))
         .collect::<Result<Vec<_>>>()?;
 
-    let mut tracks: Vec<Track> = Vec::new();
-    let names = m.coordinates();
-    for (i, name) in names.iter().enumerate() {
-        tracks.push(Track {
-            name: format!("p_{name}"),
-            kind: QuantityKind::GeneralizedMomentum {
+    // The quantities, in the order they are measured at each sample.
+    let mut kinds: Vec<(String, QuantityKind)> = m
+        .coordinates()
+        .iter()
+        .enumerate()
+        .map(|(i, name)| {
+            let cyclic = cyclic.contains(&i);
+            let kind = QuantityKind::GeneralizedMomentum {
                 coordinate: i,
-                cyclic: cyclic.contains(&i),
-            },
-            values: Vec::new(),
-            magnitude: 0.0,
-        });
-    }
-    tracks.push(Track {
-        name: "energy".into(),
-        kind: QuantityKind::Energy,
-        values: Vec::new(),
-        magnitude: 0.0,
-    });
+                cyclic,
+            };
+            (format!("p_{name}"), kind)
+        })
+        .collect();
+    kinds.push(("energy".into(), QuantityKind::Energy));
     for (axis, name) in ["P_x", "P_y"].iter().enumerate() {
-        tracks.push(Track {
-            name: (*name).into(),
-            kind: QuantityKind::LinearMomentum { axis },
-            values: Vec::new(),
-            magnitude: 0.0,
-        });
+        kinds.push(((*name).into(), QuantityKind::LinearMomentum { axis }));
     }
     for o in about {
-        tracks.push(Track {
-            name: format!("L({}, {})", o.x, o.y),
-            kind: QuantityKind::AngularMomentum { about: *o },
-            values: Vec::new(),
-            magnitude: 0.0,
-        });
+        let kind = QuantityKind::AngularMomentum { about: *o };
+        kinds.push((format!("L({}, {})", o.x, o.y), kind));
     }
     for (s, check) in symmetries.iter().zip(&checks) {
-        tracks.push(Track {
-            name: s.name().to_string(),
-            kind: QuantityKind::Noether { check: *check },
+        kinds.push((
+            s.name().to_string(),
+            QuantityKind::Noether { check: *check },
+        ));
+    }
+    let mut tracks: Vec<Track> = kinds
+        .into_iter()
+        .map(|(name, kind)| Track {
+            name,
+            kind,
             values: Vec::new(),
             magnitude: 0.0,
-        });
-    }
+        })
+        .collect();
 
     let record = |tracks: &mut [Track], y: &[f64], t: f64| {
         let (q, u) = y.split_at(n);
