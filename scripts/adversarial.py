@@ -157,6 +157,20 @@ FLAGS = [
 ] + [
     (["sweep", "examples/mechanisms/arm-3d.toml", "--quiet", "--grid"], "q.elbow=-1:", 1),
     (["simulate", "examples/mechanisms/rod.toml", "--until", "0.3"], "--q", 3),
+] + [
+    (["simulate", "examples/mechanisms/hopper-3d.toml", "--until", "0.5"], f, n)
+    for f, n in [("--q", 8), ("--u", 7), ("--floor", 1), ("--gravity", 1), ("--friction", 1),
+                 ("--restitution", 1), ("--until", 1), ("--samples", 1)]
+] + [
+    (["simulate", "crates/impax/tests/data/urdf/solo12.urdf", "--floating-base", "--contact",
+      "FL_FOOT", "--contact", "HR_FOOT", "--floor", "-0.5", "--until", "0.5"], f, n)
+    for f, n in [("--q", 19), ("--u", 18), ("--floor", 1)]
+] + [
+    (["conserved", "examples/mechanisms/hopper-3d.toml", "--duration", "0.2"], f, n)
+    for f, n in [("--q", 8), ("--u", 7), ("--about", 3), ("--gravity", 1), ("--duration", 1)]
+] + [
+    (["conserved", "crates/impax/tests/data/urdf/solo12.urdf", "--floating-base",
+      "--duration", "0.2"], f, n) for f, n in [("--q", 19), ("--u", 18)]
 ]
 
 

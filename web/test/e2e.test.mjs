@@ -546,12 +546,23 @@ test("your mechanism: a broken file is one line naming its field as the command 
 test("your mechanism: every example of examples/mechanisms/ answers; the arm in space as impax compare FILE --json", async () => {
   const files = await page.$$eval("#mech-example option", (os) => os.map((o) => o.value).filter((v) => v));
   assert.deepEqual([...files].sort(), fs.readdirSync(path.join(root, "examples/mechanisms")).filter((f) => f.endsWith(".toml")).sort());
+  // Numbers written as # (the last digit of a velocity may differ between the builds).
+  const words = (m) => m.replace(/-?\d[\d.e+-]*/g, "#");
   for (const f of files) {
     await mechUpdate(() => page.selectOption("#mech-example", f));
     const message = await mechError();
-    // A file without a contact point has nothing to strike: it says so.
-    if (message) assert.match(message, /^contact: .*\[\[contact\]\]/, `${f}: ${message}`);
-    else await checkMechanismTable(impax("compare", `examples/mechanisms/${f}`, "--json"));
+    let cli = null;
+    try { cli = impax("compare", `examples/mechanisms/${f}`, "--json"); } catch { /* the error below */ }
+    if (cli) {
+      assert.equal(message, "", f);
+      await checkMechanismTable(cli);
+    } else if (/has no contact point to strike/.test(impaxError("compare", `examples/mechanisms/${f}`))) {
+      // A planar file without a contact point: the command line suggests `impax conserved`.
+      assert.match(message, /^contact: `[^`]+` has no contact point to strike/, f);
+    } else {
+      // The command line's message (the hopper is thrown upwards: its foot does not approach).
+      assert.equal(words(message), words(impaxError("compare", `examples/mechanisms/${f}`)), f);
+    }
   }
   await mechUpdate(() => page.selectOption("#mech-example", "arm-3d.toml"));
   assert.equal(await page.evaluate(() => window.explorerMechanism.answer.space), "3d");

@@ -328,10 +328,11 @@ pub struct MechanismFlags {
         value_name = "U,.."
     )]
     pub u: Option<Vec<f64>>,
-    /// Robot (URDF): the link that strikes, `LINK` or `LINK:x,y,z` (a point in the link's
-    /// frame); a 3D mechanism file: the name of its striking contact (default: the lowest).
+    /// Robot (URDF): a contact point, `LINK` or `LINK:x,y,z` (a point in the link's frame);
+    /// repeat it for several (the lowest at the state strikes; `simulate` watches them all);
+    /// a 3D mechanism file: the name of its striking contact (default: the lowest).
     #[arg(long, value_name = "LINK[:x,y,z]")]
-    pub contact: Option<String>,
+    pub contact: Vec<String>,
     /// Robot (URDF): a floating base, put first: q = (x, y, z, qw, qx, qy, qz, joints…),
     /// u = (the base origin's velocity, its angular velocity — world frame, joints…).
     #[arg(long)]
@@ -355,7 +356,7 @@ impl MechanismFlags {
             ("position", self.position.is_some()),
             ("q", self.q.is_some()),
             ("u", self.u.is_some()),
-            ("contact", self.contact.is_some()),
+            ("contact", !self.contact.is_empty()),
             ("floating-base", self.floating_base),
             ("floor", self.floor.is_some()),
         ]
@@ -367,7 +368,8 @@ impl MechanismFlags {
 #[derive(Debug, Args)]
 pub struct ConservedArgs {
     /// A built-in mechanism (`ring-pendulum`, `cart-pendulum`, `double-pendulum`, `sphere`,
-    /// `rod`) or a TOML file with a `mechanism` key.
+    /// `rod`), a TOML file with a `mechanism` key, a mechanism file (planar or
+    /// `space = "3d"`) or a URDF robot (`--floating-base`, `--q`, `--u`, `--gravity`).
     pub mechanism: String,
     #[command(flatten)]
     pub params: MechanismFlags,
@@ -380,8 +382,9 @@ pub struct ConservedArgs {
     /// Number of sample intervals along the motion.
     #[arg(long, default_value_t = 1000)]
     pub samples: usize,
-    /// A fixed point for the angular momentum, X,Y (repeatable; default the origin).
-    #[arg(long, value_name = "X,Y", allow_hyphen_values = true)]
+    /// A fixed point for the angular momentum, X,Y (a robot or 3D file: X,Y,Z; repeatable;
+    /// default the origin).
+    #[arg(long, value_name = "X,Y[,Z]", allow_hyphen_values = true)]
     pub about: Vec<String>,
     /// A quantity is conserved when its largest deviation is at most this fraction of the
     /// magnitude of its terms.
@@ -398,8 +401,9 @@ pub struct ConservedArgs {
 #[derive(Debug, Args)]
 pub struct SimulateArgs {
     /// A built-in scenario (`bouncing-ball`, `rod-drop`, `double-pendulum-drop`,
-    /// `rocking-block`, `cradle`), a TOML file with a `simulation` key, or a planar mechanism
-    /// file (`[[body]]`, `[[joint]]`, `[[contact]]`).
+    /// `rocking-block`, `cradle`), a TOML file with a `simulation` key, a mechanism file
+    /// (`[[body]]`, `[[joint]]`, `[[contact]]`; planar or `space = "3d"`) or a URDF robot
+    /// (`--contact` for each foot, `--floating-base`).
     pub scenario: String,
     /// The impact law (default `energetic`).
     #[arg(long)]
@@ -416,9 +420,17 @@ pub struct SimulateArgs {
     /// Number of sample intervals of the trajectory output (default 1000).
     #[arg(long)]
     pub samples: Option<usize>,
-    /// Gravitational acceleration along −y (default 9.81).
+    /// Gravitational acceleration along −y (a robot or 3D file: along −z; default 9.81).
     #[arg(long, allow_hyphen_values = true)]
     pub gravity: Option<f64>,
+    /// Robot (URDF): a contact point watched for impacts with the floor, `LINK` or
+    /// `LINK:x,y,z` (a point in the link's frame); repeat it for every foot.
+    #[arg(long, value_name = "LINK[:x,y,z]")]
+    pub contact: Vec<String>,
+    /// Robot (URDF): a floating base, put first: q = (x, y, z, qw, qx, qy, qz, joints…),
+    /// u = (the base origin's velocity, its angular velocity — world frame, joints…).
+    #[arg(long)]
+    pub floating_base: bool,
     /// bouncing-ball, rod-drop, rocking-block, cradle: the mass (of each ball).
     #[arg(long, allow_hyphen_values = true)]
     pub mass: Option<f64>,
@@ -465,8 +477,9 @@ pub struct SimulateArgs {
     /// cradle: the gap between neighbouring balls (0: touching).
     #[arg(long, allow_hyphen_values = true)]
     pub gap: Option<f64>,
-    /// A mechanism file: the initial generalized coordinates (SI: radians, metres), every one
-    /// in the order of its coordinates (default: the file's `q`).
+    /// A mechanism file or robot: the initial generalized coordinates (SI: radians, metres),
+    /// every one in the order of its coordinates (default: the file's `q`; a robot's neutral
+    /// state).
     #[arg(
         long,
         value_delimiter = ',',
@@ -474,7 +487,8 @@ pub struct SimulateArgs {
         value_name = "Q,.."
     )]
     pub q: Option<Vec<f64>>,
-    /// A mechanism file: the initial generalized velocities (default: the file's `u`).
+    /// A mechanism file or robot: the initial generalized velocities (default: the file's
+    /// `u`, else zero).
     #[arg(
         long,
         value_delimiter = ',',
@@ -494,7 +508,8 @@ pub struct SimulateArgs {
     /// double-pendulum-drop: the release rates, rad/s.
     #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
     pub rates: Option<Vec<f64>>,
-    /// double-pendulum-drop: the floor's height (the pivot is at the origin).
+    /// double-pendulum-drop: the floor's height (the pivot is at the origin); a robot or 3D
+    /// file: the floor's height z (default: the file's, else through the lowest contact).
     #[arg(long, allow_hyphen_values = true)]
     pub floor: Option<f64>,
     /// Print one JSON object instead of the table.

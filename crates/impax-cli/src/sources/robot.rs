@@ -78,7 +78,8 @@ pub fn load(
     };
     let spec = RobotSpec {
         floating_base: flags.floating_base,
-        contact: flags.contact.clone(),
+        contact: flags.contact.first().cloned(),
+        more_contacts: flags.contact.iter().skip(1).cloned().collect(),
         floor: flags.floor,
         gravity: flags.gravity,
         q: flags.q.clone(),

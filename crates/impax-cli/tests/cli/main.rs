@@ -23,6 +23,7 @@ mod regression_sweep_inputs;
 mod resolve3d;
 mod resolve_contacts;
 mod robots;
+mod robots_motion;
 mod shape_box;
 mod simulate;
 mod sweep;

@@ -439,6 +439,18 @@ fn multi3_phases(list: &[multi3::ContactPhase]) -> Value {
     )
 }
 
+/// One contact of a spatial impact at several contacts: `impulse`, `velocity_after`
+/// (`{t1, t2, n}`), `phases` (as [`phase3`], `off` where it had no impulse), `work`
+/// (`compression`, `restitution`, `friction`) — the objects of [`multi3_entry`]'s `contacts`.
+pub fn multi3_contact(c: &multi3::ContactResult) -> Value {
+    contact_of(
+        vec3(c.impulse),
+        vec3(c.velocity_after),
+        multi3_phases(&c.phases),
+        &c.work,
+    )
+}
+
 /// The spatial problem with `K` contacts: `contacts`, `w` (3K × 3K), `v` (one `{t1, t2, n}`
 /// per contact), `friction`, `restitution`, `stiffness` (K each), `exponent`, `rank`.
 pub fn multi3_problem(p: &multi3::MultiProblem) -> Value {
@@ -463,17 +475,7 @@ pub fn multi3_entry(r: &multi3::MultiResolution) -> Value {
         Ok(o) => entry_of(
             o.law,
             o.verdict,
-            o.contacts
-                .iter()
-                .map(|c| {
-                    contact_of(
-                        vec3(c.impulse),
-                        vec3(c.velocity_after),
-                        multi3_phases(&c.phases),
-                        &c.work,
-                    )
-                })
-                .collect(),
+            o.contacts.iter().map(multi3_contact).collect(),
             o.energy_change,
             o.inconsistency,
             multi3_detail(o),

@@ -205,3 +205,42 @@ pub fn contact_position<D: Real>(model: &Model, poses: &[BodyPose<D>], k: usize)
 pub fn gap<D: Real>(model: &Model, poses: &[BodyPose<D>], k: usize) -> D {
     contact_position(model, poses, k)[2] - D::from(model.floor)
 }
+
+/// The gap of contact `k` and its first two time derivatives along the motion `(q, u, u̇)`:
+/// `[φ, φ̇, φ̈]` with `φ̇ = ∇φ·q̇` and `φ̈ = ∇φ·q̈ + q̇ᵀ ∇²φ q̇` (`q̇`, `q̈` from
+/// [`super::configuration_rate`] and [`super::configuration_acceleration`]), by one
+/// hyper-dual pass of the forward kinematics seeded `q + ε₁ q̇ + ε₂ q̇ + ε₁ε₂ q̈`.
+///
+/// `q`, `u` and `udot` must have `nq`, `nv` and `nv` entries (unchecked; `q` with unit
+/// quaternions).
+///
+/// ```
+/// use impax::multibody::{gap_rates, Body, ContactPoint, Joint, Model};
+/// use impax::math::{Mat3, Vec3};
+/// // A ball of radius 0.1 at height 1, falling at 2 m/s and spinning: φ = 0.9, φ̇ = −2,
+/// // φ̈ = −g.
+/// let ball = Body::new("ball", 1.0, Vec3::zeros(), Mat3::identity() * 0.004);
+/// let foot = ContactPoint::new("bottom", 0, Vec3::zeros(), 0.1);
+/// let model = Model::new(vec![ball], vec![Joint::free("root", 0)], vec![foot])?;
+/// let q = [0.0, 0.0, 1.0, 1.0, 0.0, 0.0, 0.0];
+/// let u = [0.0, 0.0, -2.0, 3.0, 0.0, 1.0];
+/// let udot = [0.0, 0.0, -9.81, 0.0, 0.0, 0.0];
+/// let [phi, rate, accel] = gap_rates(&model, &q, &u, &udot, 0);
+/// assert!((phi - 0.9).abs() < 1e-15 && (rate + 2.0).abs() < 1e-15);
+/// assert!((accel + 9.81).abs() < 1e-14);
+/// # Ok::<(), impax::Error>(())
+/// ```
+pub fn gap_rates(model: &Model, q: &[f64], u: &[f64], udot: &[f64], k: usize) -> [f64; 3] {
+    use num_dual::HyperDual64;
+    let mut qdot = vec![0.0; q.len()];
+    let mut qddot = vec![0.0; q.len()];
+    super::configuration_rate(model, q, u, &mut qdot);
+    super::configuration_acceleration(model, q, u, udot, &mut qddot);
+    let qh: Vec<HyperDual64> = (0..q.len())
+        .map(|i| HyperDual64::new(q[i], qdot[i], qdot[i], qddot[i]))
+        .collect();
+    let mut poses = vec![BodyPose::identity(); model.bodies.len()];
+    forward_kinematics(model, &qh, &mut poses);
+    let g = gap(model, &poses, k);
+    [g.re, g.eps1, g.eps1eps2]
+}

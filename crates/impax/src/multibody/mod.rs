@@ -54,7 +54,9 @@
 //! # Ok::<(), impax::Error>(())
 //! ```
 
+pub mod conserved;
 pub mod crba;
+pub mod energy;
 pub mod impact;
 pub mod jacobian;
 pub mod joint;
@@ -62,21 +64,25 @@ pub mod kinematics;
 pub mod model;
 pub mod multi_impact;
 pub mod rnea;
+pub mod simulate;
 pub mod urdf;
 pub mod workspace;
 
 pub use crba::{crba, factor, mass_matrix, solve};
+pub use energy::{body_velocities, kinetic_energy, potential_energy, total_energy, BodyVelocity};
 pub use impact::{SpatialMechanismImpact, SpatialMechanismOutcome};
 pub use jacobian::{
     contact_jacobian, contact_space, point_jacobian, point_jacobian_at, ContactSpace,
 };
 pub use joint::{Joint, JointKind, Placement};
-pub use kinematics::{contact_position, forward_kinematics, gap, BodyPose};
+pub use kinematics::{contact_position, forward_kinematics, gap, gap_rates, BodyPose};
 pub use model::{Body, ContactPoint, Model, STANDARD_GRAVITY};
 pub use multi_impact::{SpatialMechanismMultiImpact, SpatialMechanismMultiOutcome};
 pub use rnea::{
-    bias_forces, configuration_rate, forward_dynamics, forward_dynamics_in, inverse_dynamics,
+    bias_forces, configuration_acceleration, configuration_rate, forward_dynamics,
+    forward_dynamics_in, inverse_dynamics,
 };
+pub use simulate::simulate;
 pub use urdf::{read_urdf, ContactSpec, LinkFrame, MimicJoint, UrdfOptions, UrdfRobot};
 pub use workspace::Workspace;
 

@@ -181,3 +181,35 @@ pub fn configuration_rate(model: &Model, q: &[f64], u: &[f64], qdot: &mut [f64])
         }
     }
 }
+
+/// The second derivative of the configuration, `q̈`, from `(q, u, u̇)` (into `qddot`, `nq`
+/// entries): `q̈ = u̇` for revolute and prismatic joints; for a free joint the position's
+/// `(v̇x, v̇y, v̇z)` and the quaternion's `½ (0, ω̇) ⊗ q + ½ (0, ω) ⊗ q̇`, the derivative of
+/// [`configuration_rate`] along the motion.
+///
+/// `q`, `u` and `udot` must have `nq`, `nv` and `nv` entries (unchecked).
+pub fn configuration_acceleration(
+    model: &Model,
+    q: &[f64],
+    u: &[f64],
+    udot: &[f64],
+    qddot: &mut [f64],
+) {
+    let mut qdot = vec![0.0; q.len()];
+    configuration_rate(model, q, u, &mut qdot);
+    configuration_rate(model, q, udot, qddot);
+    let d = &model.data;
+    for (j, joint) in model.joints.iter().enumerate() {
+        if joint.kind == JointKind::Free {
+            let (oq, ov) = (d.q_offset[j], d.v_offset[j]);
+            let w = Vec3::new(u[ov + 3], u[ov + 4], u[ov + 5]);
+            let rw = qdot[oq + 3];
+            let rv = Vec3::new(qdot[oq + 4], qdot[oq + 5], qdot[oq + 6]);
+            qddot[oq + 3] -= 0.5 * w.dot(&rv);
+            let r = (w * rw + w.cross(&rv)) * 0.5;
+            for k in 0..3 {
+                qddot[oq + 4 + k] += r[k];
+            }
+        }
+    }
+}

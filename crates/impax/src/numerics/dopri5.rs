@@ -222,6 +222,12 @@ impl Dopri5 {
         Ok(())
     }
 
+    /// Steps (accepted and rejected) since the last [`Dopri5::start`], the count that
+    /// [`Dopri5::max_steps`] bounds.
+    pub(crate) fn steps_since_start(&self) -> usize {
+        self.steps
+    }
+
     /// The time of the current state (the end of the last accepted step).
     pub fn time(&self) -> f64 {
         self.t

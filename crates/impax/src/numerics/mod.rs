@@ -8,8 +8,10 @@
 //!   [`crate::ode::Dopri5`] (mechanisms' free motion, the simulation);
 //! * [`chebyshev`] — quadrature and interpolation on 17-node Chebyshev–Lobatto panels (the
 //!   spatial slip in the angle variable);
-//! * [`roots`] — every scalar root finder of the library, each with its contract.
+//! * [`roots`] — every scalar root finder of the library, each with its contract;
+//! * [`budget`] — the step budget of a whole integrated motion, with an early verdict.
 
+pub(crate) mod budget;
 pub(crate) mod chebyshev;
 pub(crate) mod dop853;
 pub(crate) mod dopri5;

@@ -53,6 +53,10 @@ pub struct RobotSpec {
     /// The contact that strikes: URDF `LINK` or `LINK:x,y,z` (a point in the link's frame;
     /// required); a file's contact by name (default: the lowest at the state).
     pub contact: Option<String>,
+    /// URDF: more contact points (`LINK` or `LINK:x,y,z` each), after `contact`: a
+    /// simulation watches them all, and the lowest at the state strikes. A file's contacts
+    /// are its own (this must be empty).
+    pub more_contacts: Vec<String>,
     /// The floor's height (default: a file's `height`, else through the striking contact at
     /// the state).
     pub floor: Option<f64>,
@@ -74,6 +78,7 @@ impl RobotSpec {
             source,
             floating_base: false,
             contact: None,
+            more_contacts: Vec::new(),
             floor: None,
             gravity: None,
             q: None,
@@ -81,70 +86,36 @@ impl RobotSpec {
         }
     }
 
-    /// Build the model at its state, its floor placed and its striking contact chosen.
+    /// Build the model at its state, its floor placed and its striking contact chosen: a
+    /// file's named `contact`, else the lowest contact at the state (a URDF robot's contacts
+    /// are `contact` and `more_contacts`, in that order; ties go to the first).
     ///
     /// # Errors
-    /// Every error of [`read_urdf`] and [`MechanismFile::spatial`]; a URDF robot without
-    /// `contact`; an unknown contact; `floating_base` for a file (it has its joints); `q` or
-    /// `u` of the wrong length or not finite — each naming its field.
+    /// Every error of [`RobotSpec::build_free`]; a URDF robot without `contact`; a mechanism
+    /// without contacts; an unknown contact — each naming its field.
     pub fn build(&self) -> Result<BuiltRobot> {
-        let (mut model, name, mimic_joints, file_q, file_u, floor) = match &self.source {
-            RobotSource::Urdf(text) => {
-                let spec = self.contact.as_deref().ok_or_else(|| Error::Invalid {
-                    field: "contact".into(),
-                    reason: "which link strikes: LINK or LINK:x,y,z (a point in its frame)".into(),
-                })?;
-                let options = UrdfOptions::default()
-                    .floating_base(self.floating_base)
-                    .contact(ContactSpec::parse(spec)?);
-                let robot = read_urdf(text, &options)?;
-                let name = if self.name.is_empty() {
-                    robot.name.clone()
-                } else {
-                    self.name.clone()
-                };
-                let mimic = robot.mimic_joints.iter().map(|m| m.joint.clone()).collect();
-                (robot.model, name, mimic, None, None, None)
-            }
-            RobotSource::File(file) => {
-                if self.floating_base {
-                    return Err(Error::Invalid {
-                        field: "floating_base".into(),
-                        reason: "a mechanism file gives its base a `free` joint itself".into(),
-                    });
-                }
-                let floor = file
-                    .floor_given()
-                    .then(|| file.spatial().map(|m| m.floor()));
-                let model = file.spatial()?;
-                let name = file.name.clone().unwrap_or_else(|| self.name.clone());
-                (
-                    model,
-                    name,
-                    Vec::new(),
-                    file.q.clone(),
-                    file.u.clone(),
-                    floor.transpose()?,
-                )
-            }
-        };
+        if matches!(self.source, RobotSource::Urdf(_)) && self.contact.is_none() {
+            return Err(Error::Invalid {
+                field: "contact".into(),
+                reason: "which link strikes: LINK or LINK:x,y,z (a point in its frame)".into(),
+            });
+        }
+        let free = self.build_free()?;
+        let FreeRobot {
+            name,
+            mut model,
+            q,
+            u,
+            mimic_joints,
+        } = free;
         if model.contacts().is_empty() {
             return Err(Error::Invalid {
                 field: "contact".into(),
                 reason: format!("`{name}` has no contact point to strike"),
             });
         }
-        let q = self.q.clone().or(file_q).unwrap_or_else(|| model.neutral());
-        let q = model.check_state(&q, None)?;
-        let u = self
-            .u
-            .clone()
-            .or(file_u)
-            .unwrap_or_else(|| vec![0.0; model.nv()]);
-        model.check_speeds(&u)?;
         let heights = contact_heights(&model, &q);
         let contact = match (&self.source, &self.contact) {
-            (RobotSource::Urdf(_), _) => 0,
             (RobotSource::File(_), Some(c)) => {
                 model.contact_index(c).ok_or_else(|| Error::Invalid {
                     field: "contact".into(),
@@ -159,24 +130,89 @@ impl RobotSpec {
                     ),
                 })?
             }
-            (RobotSource::File(_), None) => (0..heights.len())
+            _ => (0..heights.len())
                 .min_by(|&a, &b| heights[a].total_cmp(&heights[b]))
                 .unwrap_or(0),
         };
-        let floor = match self.floor {
-            Some(h) => crate::error::finite("floor", h)?,
-            None => floor.unwrap_or(heights[contact]),
+        let floor = match (self.floor, &self.source) {
+            (Some(h), _) => crate::error::finite("floor", h)?,
+            (None, RobotSource::File(file)) if file.floor_given() => model.floor(),
+            (None, _) => heights[contact],
         };
         model = model.with_floor(floor)?;
-        if let Some(g) = self.gravity {
-            model = model.with_gravity(g)?;
-        }
         Ok(BuiltRobot {
             name,
             model,
             q,
             u,
             contact,
+            mimic_joints,
+        })
+    }
+
+    /// Build the model at its state for its free motion (`impax conserved`): no contact needs
+    /// to be given or chosen, and the floor is the file's or `floor` (else `z = 0`; it plays
+    /// no part in a free motion).
+    ///
+    /// # Errors
+    /// Every error of [`read_urdf`] and [`MechanismFile::spatial`]; `floating_base` or
+    /// `more_contacts` for a file (it has its joints and contacts); `q` or `u` of the wrong
+    /// length or not finite — each naming its field.
+    pub fn build_free(&self) -> Result<FreeRobot> {
+        let (mut model, name, mimic_joints, file_q, file_u) = match &self.source {
+            RobotSource::Urdf(text) => {
+                let mut options = UrdfOptions::default().floating_base(self.floating_base);
+                for spec in self.contact.iter().chain(&self.more_contacts) {
+                    options = options.contact(ContactSpec::parse(spec)?);
+                }
+                let robot = read_urdf(text, &options)?;
+                let name = if self.name.is_empty() {
+                    robot.name.clone()
+                } else {
+                    self.name.clone()
+                };
+                let mimic = robot.mimic_joints.iter().map(|m| m.joint.clone()).collect();
+                (robot.model, name, mimic, None, None)
+            }
+            RobotSource::File(file) => {
+                if self.floating_base {
+                    return Err(Error::Invalid {
+                        field: "floating_base".into(),
+                        reason: "a mechanism file gives its base a `free` joint itself".into(),
+                    });
+                }
+                if !self.more_contacts.is_empty() {
+                    return Err(Error::Invalid {
+                        field: "contact".into(),
+                        reason: "a mechanism file's contacts are its [[contact]] tables (name \
+                                 one to strike)"
+                            .into(),
+                    });
+                }
+                let model = file.spatial()?;
+                let name = file.name.clone().unwrap_or_else(|| self.name.clone());
+                (model, name, Vec::new(), file.q.clone(), file.u.clone())
+            }
+        };
+        let q = self.q.clone().or(file_q).unwrap_or_else(|| model.neutral());
+        let q = model.check_state(&q, None)?;
+        let u = self
+            .u
+            .clone()
+            .or(file_u)
+            .unwrap_or_else(|| vec![0.0; model.nv()]);
+        model.check_speeds(&u)?;
+        if let Some(h) = self.floor {
+            model = model.with_floor(crate::error::finite("floor", h)?)?;
+        }
+        if let Some(g) = self.gravity {
+            model = model.with_gravity(g)?;
+        }
+        Ok(FreeRobot {
+            name,
+            model,
+            q,
+            u,
             mimic_joints,
         })
     }
@@ -189,6 +225,65 @@ fn contact_heights(model: &Model, q: &[f64]) -> Vec<f64> {
     (0..model.contacts().len())
         .map(|k| contact_position(model, &poses, k)[2])
         .collect()
+}
+
+/// A spatial mechanism built from its [`RobotSpec`] for its free motion, at its state
+/// ([`RobotSpec::build_free`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct FreeRobot {
+    /// Its name.
+    pub name: String,
+    /// The model (its contacts, if any; the floor the file's or the spec's).
+    pub model: Model,
+    /// The generalized coordinates (free joints' quaternions normalised).
+    pub q: Vec<f64>,
+    /// The generalized velocities.
+    pub u: Vec<f64>,
+    /// URDF joints that mimic another, kept as independent coordinates.
+    pub mimic_joints: Vec<String>,
+}
+
+impl FreeRobot {
+    /// The names of the entries of `q`.
+    pub fn coordinates(&self) -> &[String] {
+        self.model.coordinates()
+    }
+
+    /// One line describing the mechanism: its name, base, bodies, coordinates and gravity.
+    pub fn description(&self) -> String {
+        describe(&self.name, &self.model, &self.mimic_joints, None)
+    }
+}
+
+/// `name (floating base, 13 bodies, 19 coordinates; g = 9.81)`, with the striking contact and
+/// the floor when `contact` is given, and the mimic joints.
+fn describe(name: &str, model: &Model, mimic_joints: &[String], contact: Option<usize>) -> String {
+    let base = match model.joints().first() {
+        Some(j) if j.kind == crate::multibody::JointKind::Free => "floating base",
+        _ => "fixed base",
+    };
+    let mut s = format!(
+        "{} ({}, {} bodies, {} coordinates; g = {})",
+        name,
+        base,
+        model.bodies().len(),
+        model.nq(),
+        model.gravity(),
+    );
+    if let Some(k) = contact {
+        s.push_str(&format!(
+            ": contact `{}` strikes the floor z = {:.6}",
+            model.contacts()[k].name,
+            model.floor(),
+        ));
+    }
+    if !mimic_joints.is_empty() {
+        s.push_str(&format!(
+            "; mimic joints kept independent: {}",
+            mimic_joints.join(", ")
+        ));
+    }
+    s
 }
 
 /// A spatial mechanism built from its [`RobotSpec`], at its state.
@@ -225,26 +320,38 @@ impl BuiltRobot {
 
     /// One line describing the case.
     pub fn description(&self) -> String {
-        let base = match self.model.joints().first() {
-            Some(j) if j.kind == crate::multibody::JointKind::Free => "floating base",
-            _ => "fixed base",
-        };
-        let mut s = format!(
-            "{} ({}, {} bodies, {} coordinates; g = {}): contact `{}` strikes the floor z = {:.6}",
-            self.name,
-            base,
-            self.model.bodies().len(),
-            self.model.nq(),
-            self.model.gravity(),
-            self.model.contacts()[self.contact].name,
-            self.model.floor(),
-        );
-        if !self.mimic_joints.is_empty() {
-            s.push_str(&format!(
-                "; mimic joints kept independent: {}",
-                self.mimic_joints.join(", ")
-            ));
-        }
+        describe(
+            &self.name,
+            &self.model,
+            &self.mimic_joints,
+            Some(self.contact),
+        )
+    }
+
+    /// Every contact's gap `φ_k = z_k − h` above the floor at the state.
+    pub fn gaps(&self) -> Vec<f64> {
+        let floor = self.model.floor();
+        contact_heights(&self.model, &self.q)
+            .into_iter()
+            .map(|z| z - floor)
+            .collect()
+    }
+
+    /// One line describing the mechanism for a motion (`impax simulate`): its name, base,
+    /// bodies, coordinates, gravity, contacts and floor.
+    pub fn motion_description(&self) -> String {
+        let mut s = describe(&self.name, &self.model, &self.mimic_joints, None);
+        let names: Vec<String> = self
+            .model
+            .contacts()
+            .iter()
+            .map(|c| format!("`{}`", c.name))
+            .collect();
+        s.push_str(&format!(
+            "; contacts {} above the floor z = {:.6}",
+            names.join(", "),
+            self.model.floor()
+        ));
         s
     }
 }

@@ -62,7 +62,7 @@
 
 pub mod closed;
 mod contact;
-mod events;
+pub(crate) mod events;
 mod impacts;
 mod options;
 mod record;

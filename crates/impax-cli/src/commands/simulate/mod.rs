@@ -20,6 +20,8 @@
 
 mod csv;
 mod json;
+pub mod robot;
+mod robot_json;
 mod scenario;
 mod spec;
 mod table;
@@ -30,6 +32,7 @@ pub use spec::SimSpec;
 use crate::cli::SimulateArgs;
 use crate::input::{CliError, CliResult};
 use crate::output::plot;
+use impax::mechanism::Mechanism;
 use impax::simulation::scenarios::Initial;
 use impax::simulation::{simulate, SimulationOptions};
 
@@ -64,8 +67,30 @@ pub struct Case {
     pub shapes: Vec<Shape>,
 }
 
-/// `impax simulate`: build the scenario, run it, write the outputs asked for.
+/// `impax simulate`: build the scenario, run it, write the outputs asked for (a robot or a
+/// `space = "3d"` mechanism file in [`robot`]).
 pub fn run(args: &SimulateArgs, out: &mut Vec<u8>) -> CliResult<()> {
+    if !NAMES.contains(&args.scenario.as_str()) {
+        if let Ok(text) = std::fs::read_to_string(&args.scenario) {
+            if crate::sources::robot::is_robot(&args.scenario, &text) {
+                let file = crate::sources::File {
+                    name: args.scenario.clone(),
+                    text,
+                };
+                return robot::run(args, &file, out);
+            }
+        }
+    }
+    for (flag, given) in [
+        ("contact", !args.contact.is_empty()),
+        ("floating-base", args.floating_base),
+    ] {
+        if given {
+            return Err(CliError::input(format!(
+                "--{flag}: for a robot (URDF) or a 3D mechanism file"
+            )));
+        }
+    }
     for (flag, path) in [("plot", &args.plot), ("animate", &args.animate)] {
         if let Some(p) = path {
             plot::Format::of(flag, p)?;
@@ -84,7 +109,13 @@ pub fn run(args: &SimulateArgs, out: &mut Vec<u8>) -> CliResult<()> {
     let m = &case.initial.mechanism;
     let run = simulate(m, &case.initial.q, &case.initial.u, &case.options)?;
     if let Some(path) = &args.csv {
-        csv::write(path, m, &run)?;
+        let coordinates: Vec<String> = m.coordinates().iter().map(|c| c.to_string()).collect();
+        csv::write(
+            path,
+            &coordinates,
+            &csv::speed_columns(&coordinates, &coordinates),
+            &run.samples,
+        )?;
     }
     if let Some(path) = &args.plot {
         plot::render(

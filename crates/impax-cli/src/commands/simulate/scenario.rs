@@ -65,20 +65,7 @@ pub fn build(spec: &SimSpec) -> CliResult<Case> {
         (None, "cradle") => cradle(spec)?,
         _ => double_pendulum_drop(spec, g)?,
     };
-    let samples = spec.samples.unwrap_or(1000);
-    if samples == 0 || samples > 1_000_000 {
-        return Err(CliError::input(format!(
-            "samples: must be between 1 and 10⁶, got {samples}"
-        )));
-    }
-    let mut options = SimulationOptions::new(law, friction, restitution, until);
-    options.sample_interval = until / samples as f64;
-    if !(until.is_finite() && until > 0.0 && until <= 1e5) {
-        return Err(CliError::input(format!(
-            "until: must be positive and at most 1e5 s, got {}",
-            Plain(until)
-        )));
-    }
+    let options = run_options(law, friction, restitution, until, spec.samples)?;
     Ok(Case {
         name: name.into(),
         description,
@@ -86,6 +73,32 @@ pub fn build(spec: &SimSpec) -> CliResult<Case> {
         options,
         shapes,
     })
+}
+
+/// The options of a run: its law and coefficients, `until` (in (0, 1e5] s) and `samples`
+/// sample intervals (1 to 10⁶, default 1000).
+pub(super) fn run_options(
+    law: LawId,
+    friction: f64,
+    restitution: f64,
+    until: f64,
+    samples: Option<usize>,
+) -> CliResult<SimulationOptions> {
+    let samples = samples.unwrap_or(1000);
+    if samples == 0 || samples > 1_000_000 {
+        return Err(CliError::input(format!(
+            "samples: must be between 1 and 10⁶, got {samples}"
+        )));
+    }
+    if !(until.is_finite() && until > 0.0 && until <= 1e5) {
+        return Err(CliError::input(format!(
+            "until: must be positive and at most 1e5 s, got {}",
+            Plain(until)
+        )));
+    }
+    let mut options = SimulationOptions::new(law, friction, restitution, until);
+    options.sample_interval = until / samples as f64;
+    Ok(options)
 }
 
 /// The parameters of the scenario `name` (besides law, friction, restitution, until, samples

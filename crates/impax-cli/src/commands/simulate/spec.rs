@@ -4,7 +4,7 @@
 use super::NAMES;
 use crate::cli::SimulateArgs;
 use crate::input::{CliError, CliResult};
-use impax::scenario::{is_mechanism_file, MechanismFile, Space};
+use impax::scenario::{is_mechanism_file, MechanismFile};
 use serde::Deserialize;
 
 /// Every parameter of every scenario (flags or TOML); each scenario accepts some.
@@ -147,13 +147,8 @@ pub(super) fn load(source: &str, over: &SimSpec) -> CliResult<SimSpec> {
 /// A mechanism file to simulate: its name, friction, restitution and its one law (if it names
 /// exactly one).
 fn mechanism_file(source: &str, text: &str) -> CliResult<SimSpec> {
+    // A `space = "3d"` file is a robot's (`super::robot`): it does not come here.
     let file = MechanismFile::parse(text).map_err(|e| CliError::input(format!("{source}: {e}")))?;
-    if file.space == Space::Spatial {
-        return Err(CliError::input(format!(
-            "{source}: simulating a spatial mechanism is not available yet (`impax compare` and \
-             `impax audit` take it)"
-        )));
-    }
     let name = file.name.clone().unwrap_or_else(|| {
         std::path::Path::new(source)
             .file_stem()

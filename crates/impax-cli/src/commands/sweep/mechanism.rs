@@ -265,7 +265,7 @@ fn base(source: &Source, args: &SweepArgs) -> CliResult<(Base, Vec<LawId>)> {
                 },
             )?;
             for (flag, given) in [
-                ("contact", flags.contact.is_some()),
+                ("contact", !flags.contact.is_empty()),
                 ("floating-base", flags.floating_base),
                 ("floor", flags.floor.is_some()),
             ] {

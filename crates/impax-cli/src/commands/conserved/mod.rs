@@ -1,6 +1,9 @@
 //! `impax conserved MECHANISM`: integrate a mechanism's free motion and report, per quantity
 //! (generalized momenta, energy, linear and angular momentum, Noether charges), its initial
-//! value, its largest deviation and whether it is conserved (paper B).
+//! value, its largest deviation and whether it is conserved (paper B); a robot or a
+//! `space = "3d"` mechanism file in [`robot`].
+
+pub mod robot;
 
 use crate::cli::ConservedArgs;
 use crate::input::{parse_numbers, CliError, CliResult};
@@ -8,11 +11,23 @@ use crate::output::fmt::{Plain, Table};
 use crate::output::plot;
 use crate::sources::mechanism::{self, MechanismSpec};
 use impax::math::Vec2;
+use impax::mechanism::builtin::BuiltIn;
 use impax::mechanism::conserved::{self, QuantityKind, TrackOptions, Tracking};
 use impax::mechanism::Mechanism;
 use impax::ode::Tolerances;
 
 pub fn run(args: &ConservedArgs, out: &mut Vec<u8>) -> CliResult<()> {
+    if !BuiltIn::NAMES.contains(&args.mechanism.as_str()) {
+        if let Ok(text) = std::fs::read_to_string(&args.mechanism) {
+            if crate::sources::robot::is_robot(&args.mechanism, &text) {
+                let file = crate::sources::File {
+                    name: args.mechanism.clone(),
+                    text,
+                };
+                return robot::run(args, &file, out);
+            }
+        }
+    }
     if let Some(path) = &args.plot {
         plot::Format::of("plot", path)?;
     }
@@ -29,13 +44,13 @@ pub fn run(args: &ConservedArgs, out: &mut Vec<u8>) -> CliResult<()> {
         ..MechanismSpec::default()
     };
     for (flag, given) in [
-        ("contact", args.params.contact.is_some()),
+        ("contact", !args.params.contact.is_empty()),
         ("floating-base", args.params.floating_base),
         ("floor", args.params.floor.is_some()),
     ] {
         if given {
             return Err(CliError::input(format!(
-                "--{flag}: not used by `conserved` (the motion is free; no impact)"
+                "--{flag}: not used by `conserved` for a planar mechanism (the motion is free; no impact)"
             )));
         }
     }
@@ -56,25 +71,8 @@ pub fn run(args: &ConservedArgs, out: &mut Vec<u8>) -> CliResult<()> {
         }
     }
     let case = mechanism::build(&spec)?;
-    let duration = args.duration;
-    if !(duration.is_finite() && duration > 0.0 && duration <= 1e6) {
-        return Err(CliError::input(format!(
-            "--duration: must be positive and at most 1e6 s, got {}",
-            Plain(duration)
-        )));
-    }
-    if args.samples == 0 || args.samples > 1_000_000 {
-        return Err(CliError::input(format!(
-            "--samples: must be between 1 and 10⁶, got {}",
-            args.samples
-        )));
-    }
-    if !(args.tolerance.is_finite() && args.tolerance > 0.0 && args.tolerance < 1.0) {
-        return Err(CliError::input(format!(
-            "--tolerance: must be in (0, 1), got {}",
-            Plain(args.tolerance)
-        )));
-    }
+    let options = track_options(args)?;
+    let duration = options.duration;
     let mut about = Vec::new();
     for a in &args.about {
         let v = parse_numbers("about", a, 2, "X,Y")?;
@@ -83,11 +81,6 @@ pub fn run(args: &ConservedArgs, out: &mut Vec<u8>) -> CliResult<()> {
     if about.is_empty() {
         about.push(Vec2::zeros());
     }
-    let options = TrackOptions {
-        duration,
-        intervals: args.samples,
-        tolerances: Tolerances::TIGHT,
-    };
     let symmetries = case.mechanism.symmetries();
     let tracking = conserved::track(
         &case.mechanism,
@@ -124,6 +117,35 @@ pub fn run(args: &ConservedArgs, out: &mut Vec<u8>) -> CliResult<()> {
     };
     out.extend_from_slice(text.as_bytes());
     Ok(())
+}
+
+/// The options of the tracking from `--duration` (in (0, 1e6] s), `--samples` (1 to 10⁶)
+/// and `--tolerance` (checked in (0, 1)); the integrator's tolerances are tight.
+pub(crate) fn track_options(args: &ConservedArgs) -> CliResult<TrackOptions> {
+    let duration = args.duration;
+    if !(duration.is_finite() && duration > 0.0 && duration <= 1e6) {
+        return Err(CliError::input(format!(
+            "--duration: must be positive and at most 1e6 s, got {}",
+            Plain(duration)
+        )));
+    }
+    if args.samples == 0 || args.samples > 1_000_000 {
+        return Err(CliError::input(format!(
+            "--samples: must be between 1 and 10⁶, got {}",
+            args.samples
+        )));
+    }
+    if !(args.tolerance.is_finite() && args.tolerance > 0.0 && args.tolerance < 1.0) {
+        return Err(CliError::input(format!(
+            "--tolerance: must be in (0, 1), got {}",
+            Plain(args.tolerance)
+        )));
+    }
+    Ok(TrackOptions {
+        duration,
+        intervals: args.samples,
+        tolerances: Tolerances::TIGHT,
+    })
 }
 
 fn table(case: &mechanism::MechanismCase, tr: &Tracking, tolerance: f64, duration: f64) -> String {
