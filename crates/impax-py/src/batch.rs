@@ -55,11 +55,14 @@ pub const SEQUENCES_3D: [&str; 8] = [
     "other",
 ];
 
-const STATUS_INVALID: u8 = 4;
-const STATUS_BREAKDOWN: u8 = 3;
+/// The status code of an invalid row.
+pub(crate) const STATUS_INVALID: u8 = 4;
+/// The status code of a breakdown.
+pub(crate) const STATUS_BREAKDOWN: u8 = 3;
 
+/// The status code of a verdict.
 #[allow(unreachable_patterns)]
-fn verdict_code(v: Verdict) -> u8 {
+pub(crate) fn verdict_code(v: Verdict) -> u8 {
     match v {
         Verdict::Consistent => 0,
         Verdict::EnergyGained => 1,

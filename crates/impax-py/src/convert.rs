@@ -32,6 +32,37 @@ pub fn mat2<'py>(py: Python<'py>, w: Mat2) -> PyResult<Bound<'py, PyArray2<f64>>
     )?)
 }
 
+/// A JSON record of the core's writers (`impax::json`) as the Python objects `json.loads`
+/// gives for the command line's output: dicts, lists, strings, booleans, None, integers for
+/// integers and floats for floats (the same `f64`, no text in between).
+pub fn json_to_py<'py>(py: Python<'py>, v: &serde_json::Value) -> PyResult<Bound<'py, PyAny>> {
+    use serde_json::Value;
+    Ok(match v {
+        Value::Null => py.None().into_bound(py),
+        Value::Bool(b) => PyBool::new(py, *b).to_owned().into_any(),
+        Value::Number(n) => match (n.as_i64(), n.as_u64()) {
+            (Some(i), _) => i.into_pyobject(py)?.into_any(),
+            (None, Some(u)) => u.into_pyobject(py)?.into_any(),
+            _ => n.as_f64().unwrap_or(f64::NAN).into_pyobject(py)?.into_any(),
+        },
+        Value::String(s) => PyString::new(py, s).into_any(),
+        Value::Array(a) => {
+            let items = a
+                .iter()
+                .map(|x| json_to_py(py, x))
+                .collect::<PyResult<Vec<_>>>()?;
+            pyo3::types::PyList::new(py, items)?.into_any()
+        }
+        Value::Object(m) => {
+            let d = pyo3::types::PyDict::new(py);
+            for (k, x) in m {
+                d.set_item(k, json_to_py(py, x)?)?;
+            }
+            d.into_any()
+        }
+    })
+}
+
 /// A law id, parsed as the CLI parses it (`law: unknown impact law ...`).
 pub fn law(id: &str) -> PyResult<LawId> {
     lib(id.parse::<LawId>())
@@ -328,6 +359,7 @@ pub mod arg {
         b,
         contact,
         exponent,
+        floor,
         friction,
         gravity,
         inertia,

@@ -11,7 +11,11 @@
 //! * [`shapes`]: `sphere`, `disc`, `rod`, `ellipse`, `rigid_body`, `body_impact` (any shape by
 //!   name) and `body` (a struck body B) — adapters over the core's `impax::scenario::BodySpec`,
 //!   building the classes of [`body`] (`BodyImpact`, `Body`);
-//! * [`mechanisms`]: `mechanism` (a built-in by name), `double_pendulum`, `MechanismImpact`;
+//! * [`mechanisms`]: `mechanism` (a built-in by name, or a mechanism of one's own),
+//!   `double_pendulum`, `MechanismImpact`;
+//! * [`robots`]: `Mechanism` — a mechanism file (planar or spatial) or a URDF robot read once
+//!   ([`robot_load`]): `M(q)`, contact Jacobians and problems, impacts as the command line's
+//!   records ([`robot_impact`]) and in batches over numpy arrays ([`robot_batch`]);
 //! * [`compare`]: every law side by side, as `impax compare --json`;
 //! * [`scenarios`]: `rod_rows`, `sphere_rows` — the rows of many bodies at once, for
 //!   `impax.study`.
@@ -26,6 +30,10 @@ mod convert;
 mod mechanisms;
 mod multi;
 mod outcome;
+mod robot_batch;
+mod robot_impact;
+mod robot_load;
+mod robots;
 mod scenarios;
 mod shapes;
 mod single;
@@ -76,6 +84,7 @@ fn _impax(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<body::Body>()?;
     m.add_class::<body::BodyImpact>()?;
     m.add_class::<mechanisms::MechanismImpact>()?;
+    m.add_class::<robots::Mechanism>()?;
     m.add_function(wrap_pyfunction!(single::resolve, m)?)?;
     m.add_function(wrap_pyfunction!(batch::resolve_batch, m)?)?;
     m.add_function(wrap_pyfunction!(batch::check_threads, m)?)?;

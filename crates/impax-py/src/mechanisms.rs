@@ -3,6 +3,7 @@
 
 use crate::convert::{arg, lib, mat2, value_error};
 use crate::outcome::{Context, Outcome, Raw};
+use crate::robot_load as robots;
 use impax::math::Vec2;
 use impax::mechanism::builtin::{BuiltIn, STANDARD_GRAVITY};
 use impax::mechanism::impact::MechanismImpact as LibMechanismImpact;
@@ -133,9 +134,12 @@ impl MechanismImpact {
     }
 }
 
-/// A built-in mechanism by name, with the CLI's defaults (`impax compare MECHANISM`); the
-/// description, its checks and its defaults are the core's (`impax::scenario::MechanismSpec`),
-/// with angles in radians.
+/// A mechanism: a built-in by name, with the CLI's defaults (`impax compare MECHANISM`), or
+/// a mechanism of one's own — a path to (or the text of) a mechanism file (`.toml`, planar or
+/// `space = "3d"`) or a URDF robot (`.urdf`).
+///
+/// A built-in returns a [`MechanismImpact`] at its state; its description, checks and
+/// defaults are the core's (`impax::scenario::MechanismSpec`), with angles in radians:
 ///
 /// | name | coordinates | `masses`, `lengths`, `radius` | defaults |
 /// |---|---|---|---|
@@ -144,30 +148,115 @@ impl MechanismImpact {
 /// | `rod` | x, y, θ from the floor | m; l | 50°, lower end on the floor, velocity (0.5, −1) |
 ///
 /// `ring-pendulum` and `cart-pendulum` have no contact to strike (see `impax conserved`).
+///
+/// A file or a robot returns a [`crate::robots::Mechanism`], read once, to evaluate at any
+/// state: `floating_base` (URDF: a free joint first, `q = (x, y, z, qw, qx, qy, qz, …)`,
+/// `u = (v, ω, …)` in the world frame), `contact` (the default contact of its calls: a
+/// file's contact, a URDF robot's `LINK` or `LINK:x,y,z`), `floor` (the floor's height;
+/// default: a file's `height`, else through the striking contact at each state),
+/// `gravity`, `friction` and `restitution` (the defaults of its impacts; else the file's,
+/// else 0.5). The built-ins' parameters (`masses`, `lengths`, `radius`, `angles`, `rates`,
+/// `position`) are refused for them, and `floating_base`, `contact`, `floor` for a built-in.
 #[pyfunction]
-#[pyo3(signature = (name, *, masses = None, lengths = None, radius = None, gravity = None, angles = None, rates = None, position = None, friction = 0.5, restitution = 0.5))]
+#[pyo3(signature = (source, /, *, floating_base = false, contact = None, floor = None, gravity = None, masses = None, lengths = None, radius = None, angles = None, rates = None, position = None, friction = None, restitution = None))]
 #[allow(clippy::too_many_arguments)]
-pub fn mechanism(
-    name: &str,
+pub fn mechanism<'py>(
+    py: Python<'py>,
+    source: &Bound<'py, PyAny>,
+    floating_base: bool,
+    contact: Option<String>,
+    #[pyo3(from_py_with = arg::floor)] floor: Option<f64>,
+    #[pyo3(from_py_with = arg::gravity)] gravity: Option<f64>,
     #[pyo3(from_py_with = arg::masses)] masses: Option<Vec<f64>>,
     #[pyo3(from_py_with = arg::lengths)] lengths: Option<Vec<f64>>,
     #[pyo3(from_py_with = arg::radius)] radius: Option<f64>,
-    #[pyo3(from_py_with = arg::gravity)] gravity: Option<f64>,
     #[pyo3(from_py_with = arg::angles)] angles: Option<Vec<f64>>,
     #[pyo3(from_py_with = arg::rates)] rates: Option<Vec<f64>>,
     #[pyo3(from_py_with = arg::position)] position: Option<Vec<f64>>,
-    #[pyo3(from_py_with = arg::friction)] friction: f64,
-    #[pyo3(from_py_with = arg::restitution)] restitution: f64,
+    #[pyo3(from_py_with = arg::friction)] friction: Option<f64>,
+    #[pyo3(from_py_with = arg::restitution)] restitution: Option<f64>,
+) -> PyResult<Bound<'py, PyAny>> {
+    let Some(own) = robots::source(source)? else {
+        for (field, given) in [
+            ("floating_base", floating_base),
+            ("contact", contact.is_some()),
+            ("floor", floor.is_some()),
+        ] {
+            if given {
+                return Err(value_error(format!(
+                    "{field}: not a parameter of a built-in mechanism (of a mechanism file or a URDF robot)"
+                )));
+            }
+        }
+        let name: String = source.extract()?;
+        let built = builtin(
+            &name,
+            BuiltInArgs {
+                masses,
+                lengths,
+                radius,
+                gravity,
+                angles,
+                rates,
+                position,
+            },
+            friction.unwrap_or(0.5),
+            restitution.unwrap_or(0.5),
+        )?;
+        return Ok(Bound::new(py, built)?.into_any());
+    };
+    for (field, given) in [
+        ("masses", masses.is_some()),
+        ("lengths", lengths.is_some()),
+        ("radius", radius.is_some()),
+        ("angles", angles.is_some()),
+        ("rates", rates.is_some()),
+        ("position", position.is_some()),
+    ] {
+        if given {
+            return Err(value_error(format!(
+                "{field}: a parameter of the built-in mechanisms; a mechanism file's or a robot's state is q and u, given to each call"
+            )));
+        }
+    }
+    let options = robots::Options {
+        floating_base,
+        contact,
+        floor,
+        gravity,
+        friction,
+        restitution,
+    };
+    Ok(Bound::new(py, robots::load(py, own, options)?)?.into_any())
+}
+
+/// The parameters of a built-in.
+struct BuiltInArgs {
+    masses: Option<Vec<f64>>,
+    lengths: Option<Vec<f64>>,
+    radius: Option<f64>,
+    gravity: Option<f64>,
+    angles: Option<Vec<f64>>,
+    rates: Option<Vec<f64>>,
+    position: Option<Vec<f64>>,
+}
+
+/// A built-in mechanism by name at its state (`mechanism(name, ...)`).
+fn builtin(
+    name: &str,
+    a: BuiltInArgs,
+    friction: f64,
+    restitution: f64,
 ) -> PyResult<MechanismImpact> {
     let spec = MechanismSpec {
         mechanism: name.into(),
-        masses,
-        lengths,
-        radius,
-        gravity,
-        angles,
-        rates,
-        position,
+        masses: a.masses,
+        lengths: a.lengths,
+        radius: a.radius,
+        gravity: a.gravity,
+        angles: a.angles,
+        rates: a.rates,
+        position: a.position,
         angle_unit: AngleUnit::Radians,
         ..MechanismSpec::default()
     };
@@ -214,15 +303,17 @@ pub fn double_pendulum(
     #[pyo3(from_py_with = arg::friction)] friction: f64,
     #[pyo3(from_py_with = arg::restitution)] restitution: f64,
 ) -> PyResult<MechanismImpact> {
-    mechanism(
+    builtin(
         "double-pendulum",
-        Some(vec![masses.0, masses.1]),
-        Some(vec![lengths.0, lengths.1]),
-        None,
-        Some(gravity),
-        Some(vec![angles.0, angles.1]),
-        Some(vec![rates.0, rates.1]),
-        None,
+        BuiltInArgs {
+            masses: Some(vec![masses.0, masses.1]),
+            lengths: Some(vec![lengths.0, lengths.1]),
+            radius: None,
+            gravity: Some(gravity),
+            angles: Some(vec![angles.0, angles.1]),
+            rates: Some(vec![rates.0, rates.1]),
+            position: None,
+        },
         friction,
         restitution,
     )

@@ -11,8 +11,8 @@
 //!
 //! `q`, `u`, `friction` and `restitution` are optional (null or absent): the file's, else
 //! zero (a free joint's quaternion 1) and 0.5. The answer is the document of
-//! `impax compare FILE --json` ([`impax::json::mechanism_compare`] in the plane,
-//! [`impax::json::robot_compare`] in space) with the page's keys:
+//! `impax compare FILE --json` ([`impax::json::mechanism_document`] in the plane,
+//! [`impax::json::robot_document`] in space) with the page's keys:
 //!
 //! ```text
 //! "space": "2d" | "3d", "friction", "restitution",
@@ -172,7 +172,14 @@ fn planar(
         .iter()
         .map(|&law| Ok((law, impact.resolve(law, friction, restitution).map_err(at)?)))
         .collect::<Result<Vec<_>, String>>()?;
-    let mut doc = impax::json::mechanism_compare(name, &case, &impact, &problem, &results);
+    let mut doc = impax::json::mechanism_document(
+        name,
+        &case.description,
+        &impact,
+        &case.u,
+        &problem,
+        &results,
+    );
     let coords = case.mechanism.coordinates();
     let mut rows: Vec<Value> = coords
         .iter()
@@ -243,7 +250,7 @@ fn spatial(
         .iter()
         .map(|&law| Ok((law, impact.resolve(law, friction, restitution).map_err(at)?)))
         .collect::<Result<_, String>>()?;
-    let mut doc = impax::json::robot_compare(&built, &impact, &problem, &results);
+    let mut doc = impax::json::robot_document(&built, &impact, &problem, &results);
     let speeds = built.model.speeds();
     let mut rows: Vec<Value> = speeds
         .iter()

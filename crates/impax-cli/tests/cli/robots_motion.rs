@@ -185,6 +185,51 @@ fn solo12_dropped_lands_on_its_feet() {
     );
 }
 
+/// Several `--contact`s in `compare`: the lowest at the state strikes, whatever their order,
+/// and the floor passes through it.
+#[test]
+fn compare_strikes_with_the_lowest_of_several_contacts() {
+    let u = "0,0,-1,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0";
+    let strike = |a: &str, b: &str| {
+        let doc = json(&[
+            "compare",
+            SOLO12,
+            "--floating-base",
+            "--contact",
+            a,
+            "--contact",
+            b,
+            "--q",
+            SOLO_TILTED,
+            "--u",
+            u,
+            "--law",
+            "energetic",
+            "--json",
+        ]);
+        assert!(f(&doc["gap"]).abs() < 1e-15);
+        doc["contact"].as_str().unwrap().to_string()
+    };
+    let (one, two) = (strike("FL_FOOT", "HL_FOOT"), strike("HL_FOOT", "FL_FOOT"));
+    assert_eq!(one, two);
+    // The simulation from the same state strikes first with that foot.
+    let doc = json(&[
+        "simulate",
+        SOLO12,
+        "--floating-base",
+        "--contact",
+        "FL_FOOT",
+        "--contact",
+        "HL_FOOT",
+        "--q",
+        SOLO_TILTED,
+        "--floor",
+        "0",
+        "--json",
+    ]);
+    assert_eq!(doc["impacts"][0]["contact"], one.as_str());
+}
+
 /// The 3D arm of `examples/mechanisms/arm-3d.toml` falls onto the floor through its tip: the
 /// file's contact, law and coefficients, and its ledger balanced.
 #[test]

@@ -17,6 +17,9 @@ normal last; approach means ``v_n < 0``; the impulse ``p`` acts on the moving bo
   :func:`body_impact` (any shape of :data:`SHAPES` by name), :func:`double_pendulum`,
   :func:`mechanism` — bodies and mechanisms producing problems (:func:`body` — a struck free
   body, the ``other=`` of a body: body against body);
+* :func:`mechanism` with a path (or text) of a mechanism file or a URDF robot — a
+  :class:`Mechanism` read once: ``M(q)``, contact Jacobians, impacts as the command line's
+  records and batches of states over numpy arrays;
 * :func:`compare` — every law side by side, as ``impax compare --json``;
 * :mod:`impax.study` — parameter spaces (grids, random samples) of built-in scenarios, run
   in chunks, reduced;
@@ -40,6 +43,7 @@ from ._impax import (
     STATUSES,
     Body,
     BodyImpact,
+    Mechanism,
     MechanismImpact,
     MultiOutcome,
     Outcome,
@@ -72,6 +76,7 @@ __all__ = [
     "STATUSES",
     "Body",
     "BodyImpact",
+    "Mechanism",
     "MechanismImpact",
     "MultiOutcome",
     "Outcome",

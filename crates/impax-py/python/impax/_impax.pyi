@@ -1,5 +1,6 @@
 """Type stubs of the compiled core ``impax._impax`` (re-exported by ``impax``)."""
 
+import os
 from typing import Any, Literal, Sequence, TypedDict, overload
 
 import numpy as np
@@ -213,6 +214,72 @@ class MechanismImpact:
     def resolve(self, law: str = "energetic") -> Outcome:
         """Resolve with one law; ``velocities_after`` from ``M (u⁺ − u⁻) = Jᵀ p``."""
 
+class Mechanism:
+    """A mechanism file or a URDF robot read once (:func:`mechanism`), evaluated at any state
+    ``(q, u)``. Every number is the core's (the command line's ``impax compare FILE``)."""
+
+    @property
+    def name(self) -> str: ...
+    @property
+    def space(self) -> Literal["2d", "3d"]: ...
+    @property
+    def coordinates(self) -> list[str]:
+        """The names of the entries of ``q`` (a floating base's ``x, y, z, qw, qx, qy, qz`` first)."""
+    @property
+    def speeds(self) -> tuple[str, ...]:
+        """The names of the entries of ``u`` (a floating base's ``vx, vy, vz, wx, wy, wz``, world frame)."""
+    @property
+    def contacts(self) -> tuple[str, ...]:
+        """A file's contacts; a URDF robot's links (``"LINK"`` or ``"LINK:x,y,z"``)."""
+    @property
+    def mimic_joints(self) -> tuple[str, ...]: ...
+    @property
+    def description(self) -> str: ...
+    def neutral(self) -> np.ndarray:
+        """Every joint at zero; a floating base at the origin, quaternion ``(1, 0, 0, 0)``."""
+    def default_state(self) -> tuple[np.ndarray, np.ndarray]:
+        """A file's ``q`` and ``u`` (else neutral and at rest)."""
+    def mass_matrix(self, q: ArrayLike) -> np.ndarray:
+        """``M(q)``, ``nv × nv``: ``T = ½ uᵀ M u``."""
+    def contact_jacobian(self, q: ArrayLike, contact: str | None = None) -> np.ndarray:
+        """The contact's Jacobian in its contact frame (rows ``t, n`` in 2D; ``t1, t2, n`` =
+        the world's ``x, y, z`` in 3D): ``v = J u``."""
+    def contact_problem(
+        self, q: ArrayLike, u: ArrayLike, contact: str | None = None, friction: float | None = None, restitution: float | None = None
+    ) -> tuple[np.ndarray, np.ndarray]:
+        """``(W, v⁻)``: ``W = J M⁻¹ Jᵀ`` and ``v⁻ = J u``."""
+    def gap(self, q: ArrayLike, contact: str | None = None) -> float:
+        """The contact's height above the floor (0 when the floor passes through it)."""
+    def impact(
+        self,
+        q: ArrayLike,
+        u: ArrayLike,
+        contact: str | None = None,
+        friction: float | None = None,
+        restitution: float | None = None,
+        laws: str | Sequence[str] | None = None,
+    ) -> dict[str, Any]:
+        """Every law (or ``laws``) on the impact at ``(q, u)``: the document of
+        ``impax compare FILE --q Q --u U --json`` (``mechanism``, ``coordinates``, ``q``,
+        ``u_before``, ``contact``, ``gap``, ``problem``, ``energy_before``, ``results`` with
+        ``velocities_after``, ``energy_change``, …), key for key."""
+    def impact_batch(
+        self,
+        q: ArrayLike,
+        u: ArrayLike,
+        contact: str | None = None,
+        friction: float | None = None,
+        restitution: float | None = None,
+        law: str = "energetic",
+        *,
+        on_invalid: Literal["raise", "mark"] = "raise",
+        threads: int | None = None,
+    ) -> dict[str, Any]:
+        """One law over many states, ``q`` ``(N, nq)`` and ``u`` ``(N, nv)``, in parallel:
+        ``velocities_after`` ``(N, nv)``, ``impulse`` and ``velocity_after`` ``(N, d)``,
+        ``energy_before``, ``energy_change`` and ``status`` ``(N,)``; row ``i`` equals
+        ``impact(q[i], u[i], laws=law)``."""
+
 @overload
 def resolve(w: ArrayLike, v: ArrayLike, friction: float, restitution: float, law: str = "energetic") -> Outcome: ...
 @overload
@@ -414,8 +481,9 @@ def rigid_body(
 ) -> BodyImpact:
     """Any planar rigid body: mass, central inertia, contact point ``(r_t, r_n)`` from the centre."""
 
+@overload
 def mechanism(
-    name: str,
+    source: str,
     *,
     masses: Sequence[float] | None = None,
     lengths: Sequence[float] | None = None,
@@ -424,11 +492,32 @@ def mechanism(
     angles: Sequence[float] | None = None,
     rates: Sequence[float] | None = None,
     position: Sequence[float] | None = None,
-    friction: float = 0.5,
-    restitution: float = 0.5,
-) -> MechanismImpact:
-    """A built-in mechanism (``double-pendulum``, ``sphere``, ``rod``) with the CLI's defaults;
-    angles in radians."""
+    friction: float | None = None,
+    restitution: float | None = None,
+) -> MechanismImpact: ...
+@overload
+def mechanism(
+    source: str | os.PathLike[str],
+    *,
+    floating_base: bool = False,
+    contact: str | None = None,
+    floor: float | None = None,
+    gravity: float | None = None,
+    friction: float | None = None,
+    restitution: float | None = None,
+) -> Mechanism: ...
+def mechanism(source, **options):
+    """A built-in mechanism by name (``double-pendulum``, ``sphere``, ``rod``) at a state, with
+    the CLI's defaults and angles in radians (a :class:`MechanismImpact`); or a mechanism of
+    one's own — a path to (or the text of) a mechanism file (``.toml``, planar or
+    ``space = "3d"``) or a URDF robot (``.urdf``) — read once (a :class:`Mechanism`).
+
+    ``floating_base`` (URDF): a free joint first, ``q = (x, y, z, qw, qx, qy, qz, …)``,
+    ``u = (vx, vy, vz, wx, wy, wz, …)`` — the base origin's velocity and the angular velocity,
+    both in the world frame. ``contact``: the default contact of the calls (a file's contact;
+    a URDF link ``"LINK"`` or a point in its frame ``"LINK:x,y,z"``). ``floor``: the floor's
+    height (default: a file's ``height``, else through the striking contact at each state).
+    ``friction``, ``restitution``: defaults of the impacts (else the file's, else 0.5)."""
 
 def double_pendulum(
     masses: tuple[float, float] = (1.0, 1.0),

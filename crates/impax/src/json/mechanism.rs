@@ -12,7 +12,9 @@
 //! let impact = MechanismImpact::striking(&case.mechanism, &case.q, &case.u)?;
 //! let problem = impact.problem(0.5, 0.5)?;
 //! let results = vec![(LawId::Whittaker, impact.resolve(LawId::Whittaker, 0.5, 0.5)?)];
-//! let doc = impax::json::mechanism_compare("double-pendulum", &case, &impact, &problem, &results);
+//! let doc = impax::json::mechanism_document(
+//!     "double-pendulum", &case.description, &impact, &case.u, &problem, &results,
+//! );
 //! assert_eq!(doc["contact"], "tip of rod 2");
 //! let ratio = doc["results"][0]["energy_ratio"].as_f64().unwrap();
 //! assert!((ratio - 1.26087).abs() < 5e-6); // Kane's paradox: Whittaker's rule gains energy
@@ -23,7 +25,6 @@ use super::{
     breakdown_fields, num, outcome_fields, problem, spatial_breakdown_fields,
     spatial_outcome_fields, spatial_problem,
 };
-use crate::mechanism::builtin::BuiltIn;
 use crate::mechanism::conserved::{QuantityKind, Track, Tracking};
 use crate::mechanism::impact::{MechanismImpact, MechanismOutcome};
 use crate::mechanism::Mechanism;
@@ -75,14 +76,17 @@ pub fn mechanism_entry(
 /// `velocities_after`, `energy_after`, `energy_ratio` and `energy_change_from_velocities`
 /// (each null when the law broke down). `t0` is the kinetic energy before.
 pub fn mechanism_result(r: &MechanismOutcome, t0: f64) -> Value {
-    match (&r.resolution, r.velocities_after.as_deref()) {
-        (Ok(o), Some(after)) => mechanism_entry(
+    match &r.resolution {
+        Ok(o) => mechanism_entry(
             outcome_fields(o, "contact_velocity_after"),
             t0,
-            Some((o.energy_change, after, r.energy_change_from_velocities)),
+            Some((
+                o.energy_change,
+                r.velocities_after.as_deref().unwrap_or_default(),
+                r.energy_change_from_velocities,
+            )),
         ),
-        (Ok(o), None) => mechanism_entry(outcome_fields(o, "contact_velocity_after"), t0, None),
-        (Err(b), _) => mechanism_entry(
+        Err(b) => mechanism_entry(
             breakdown_fields(b, "contact_velocity_after", false),
             t0,
             None,
@@ -90,17 +94,19 @@ pub fn mechanism_result(r: &MechanismOutcome, t0: f64) -> Value {
     }
 }
 
-/// Every law on a planar mechanism's impact: `mechanism` (`name`), `scenario`,
-/// `coordinates`, `q`, `u_before`, `contact` (the striking contact's name), `gap`,
-/// `problem`, `energy_before` and `results` ([`mechanism_result`] per law).
-pub fn mechanism_compare(
+/// The document of `impax compare MECHANISM --json` for a planar mechanism (a built-in or a
+/// mechanism file) struck at one contact: `mechanism` (its name), `scenario` (the built
+/// mechanism's description), `coordinates`, `q`, `u_before`, `contact`, `gap`, `problem`,
+/// `energy_before` and `results` (one [`mechanism_result`] per law, in the order given).
+pub fn mechanism_document<M: Mechanism + ?Sized>(
     name: &str,
-    case: &BuiltMechanism,
-    impact: &MechanismImpact<'_, BuiltIn>,
-    problem_: &ContactProblem,
+    description: &str,
+    impact: &MechanismImpact<'_, M>,
+    u: &[f64],
+    contact_problem: &ContactProblem,
     results: &[(LawId, MechanismOutcome)],
 ) -> Value {
-    let m = &case.mechanism;
+    let m = impact.mechanism();
     let t0 = impact.energy_before();
     let entries: Vec<Value> = results
         .iter()
@@ -108,13 +114,13 @@ pub fn mechanism_compare(
         .collect();
     json!({
         "mechanism": name,
-        "scenario": case.description,
+        "scenario": description,
         "coordinates": m.coordinates(),
-        "q": case.q,
-        "u_before": case.u,
+        "q": impact.configuration(),
+        "u_before": u,
         "contact": m.contacts()[impact.contact()].name,
         "gap": num(impact.gap()),
-        "problem": problem(problem_),
+        "problem": problem(contact_problem),
         "energy_before": t0,
         "results": entries,
     })
@@ -138,10 +144,11 @@ pub fn robot_result(r: &SpatialMechanismOutcome, t0: f64) -> Value {
     }
 }
 
-/// Every law on a spatial mechanism's impact: `mechanism`, `scenario`, `coordinates`,
-/// `speeds`, `mimic_joints`, `q`, `u_before`, `contact`, `gap`, `problem`, `energy_before`
-/// and `results` ([`robot_result`] per law).
-pub fn robot_compare(
+/// The document of `impax compare ROBOT --json` for a spatial mechanism (a URDF robot or a
+/// `space = "3d"` mechanism file) at its state: `mechanism`, `scenario` (its description),
+/// `coordinates`, `speeds`, `mimic_joints`, `q`, `u_before`, `contact`, `gap`, `problem`,
+/// `energy_before` and `results` (one [`robot_result`] per law, in the order given).
+pub fn robot_document(
     built: &BuiltRobot,
     impact: &SpatialMechanismImpact<'_>,
     problem_: &spatial::ContactProblem,

@@ -13,7 +13,7 @@ use serde_json::{json, Map, Value};
 
 mod mechanism;
 pub use mechanism::{
-    conserved, mechanism_compare, mechanism_entry, mechanism_result, quantity, robot_compare,
+    conserved, mechanism_document, mechanism_entry, mechanism_result, quantity, robot_document,
     robot_result,
 };
 

@@ -31,11 +31,11 @@ pub struct Kinematics {
 }
 
 /// Check that `q` (and `u`) have the mechanism's length and are finite.
-pub(crate) fn check_state<M: Mechanism + ?Sized>(
-    m: &M,
-    q: &[f64],
-    u: Option<&[f64]>,
-) -> Result<()> {
+///
+/// # Errors
+/// A wrong length (naming `q` or `u` and listing the coordinates); a non-finite entry
+/// (naming it, e.g. `u[1] (theta2)`).
+pub fn check_state<M: Mechanism + ?Sized>(m: &M, q: &[f64], u: Option<&[f64]>) -> Result<()> {
     let n = m.dof();
     for (field, v) in [("q", Some(q)), ("u", u)] {
         let Some(v) = v else { continue };

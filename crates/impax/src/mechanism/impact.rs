@@ -150,6 +150,46 @@ impl<'a, M: Mechanism + ?Sized> MechanismImpact<'a, M> {
         Self::new(mechanism, q, u, k)
     }
 
+    /// The impact of the contact named `contact` (a name of [`Mechanism::contacts`]), or
+    /// with `None` of the contact that strikes ([`MechanismImpact::striking`]).
+    ///
+    /// ```
+    /// use impax::mechanism::builtin::DoublePendulum;
+    /// use impax::mechanism::impact::MechanismImpact;
+    /// let dp = DoublePendulum::unit_at([0.5, 0.0]);
+    /// let (q, u) = ([0.5, 0.0], [-1.0, 2.0]);
+    /// let tip = MechanismImpact::named(&dp, &q, &u, Some("tip of rod 2"))?;
+    /// let striking = MechanismImpact::named(&dp, &q, &u, None)?; // the contact on the floor
+    /// assert_eq!((tip.contact(), striking.contact()), (0, 0));
+    /// let err = MechanismImpact::named(&dp, &q, &u, Some("knee")).err().unwrap();
+    /// assert_eq!(err.field(), "contact");
+    /// # Ok::<(), impax::Error>(())
+    /// ```
+    ///
+    /// # Errors
+    /// As [`MechanismImpact::new`] and [`MechanismImpact::striking`]; a name that is not one
+    /// of the mechanism's contacts (the error lists them).
+    pub fn named(mechanism: &'a M, q: &[f64], u: &[f64], contact: Option<&str>) -> Result<Self> {
+        let Some(name) = contact else {
+            return Self::striking(mechanism, q, u);
+        };
+        let contacts = mechanism.contacts();
+        match contacts.iter().position(|c| c.name == name) {
+            Some(k) => Self::new(mechanism, q, u, k),
+            None => Err(Error::Invalid {
+                field: "contact".into(),
+                reason: format!(
+                    "`{name}` is not a contact of the mechanism (its contacts: {})",
+                    contacts
+                        .iter()
+                        .map(|c| c.name)
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                ),
+            }),
+        }
+    }
+
     /// The contact-space inverse inertia `W = J M⁻¹ Jᵀ`.
     pub fn inverse_inertia(&self) -> Mat2 {
         self.w

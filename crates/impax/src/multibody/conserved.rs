@@ -347,8 +347,9 @@ fn perturbed(model: &Model, q0: &[f64], u0: &[f64], rng: &mut SplitMix64) -> (Ve
     (q, u)
 }
 
-/// Whether a symmetry of `model` conserves the quantity `kind` along every free motion, by Noether's theorem for the symmetries a tree of
-/// bodies under gravity along `−z` has:
+/// Whether a symmetry of `model` conserves the quantity `kind` along every free motion, by
+/// Noether's theorem (theory §4: a transformation leaving `L` invariant conserves its charge)
+/// for the symmetries a tree of bodies under gravity along `−z` has:
 ///
 /// * time: `E = T + V` always (no friction, no actuation);
 /// * a cyclic coordinate `q_i` (`∂L/∂q_i ≡ 0`): its momentum `p_i = (M u)_i`;

@@ -371,10 +371,20 @@ pub(crate) fn check_vector(field: &str, v: &[f64], names: &[String]) -> Result<(
     Ok(())
 }
 
+/// `x` if it is finite, else the error naming `field()` — formatted only then (a model is
+/// checked each time a contact is put on it: no text per number on the way).
+fn finite_or(x: f64, field: impl FnOnce() -> String) -> Result<f64> {
+    if x.is_finite() {
+        Ok(x)
+    } else {
+        crate::error::finite(&field(), x)
+    }
+}
+
 /// Check one body: finite numbers, `m ≥ 0`, inertia symmetric positive semidefinite.
 fn check_body(i: usize, b: &Body) -> Result<()> {
     let field = |f: &str| format!("body[{i}].{f}");
-    crate::error::finite(&field("mass"), b.mass)?;
+    finite_or(b.mass, || field("mass"))?;
     if b.mass < 0.0 {
         return Err(Error::OutOfRange {
             field: field("mass"),
@@ -386,10 +396,10 @@ fn check_body(i: usize, b: &Body) -> Result<()> {
         });
     }
     for (k, x) in b.com.iter().enumerate() {
-        crate::error::finite(&format!("{}[{k}]", field("com")), *x)?;
+        finite_or(*x, || format!("{}[{k}]", field("com")))?;
     }
     for (k, x) in b.inertia.iter().enumerate() {
-        crate::error::finite(&format!("{}[{}][{}]", field("inertia"), k % 3, k / 3), *x)?;
+        finite_or(*x, || format!("{}[{}][{}]", field("inertia"), k % 3, k / 3))?;
     }
     check_inertia(&field("inertia"), &b.inertia)
 }
@@ -446,7 +456,8 @@ pub(crate) fn joint_field(j: usize, joint: &Joint) -> String {
 /// Check a joint's own data and return it with its axis normalised and its rotations
 /// re-orthonormalised.
 fn check_joint(j: usize, joint: &Joint, nb: usize) -> Result<Joint> {
-    let field = |f: &str| format!("{}.{f}", joint_field(j, joint));
+    let prefix = joint_field(j, joint);
+    let field = |f: &str| format!("{prefix}.{f}");
     let mut out = joint.clone();
     out.kind = match joint.kind {
         JointKind::Revolute { axis } => JointKind::Revolute {
@@ -548,9 +559,9 @@ fn check_contact(c: &ContactPoint, bodies: &[Body]) -> Result<()> {
         });
     }
     for (k, x) in c.point.iter().enumerate() {
-        crate::error::finite(&format!("{}[{k}]", field("point")), *x)?;
+        finite_or(*x, || format!("{}[{k}]", field("point")))?;
     }
-    crate::error::finite(&field("radius"), c.radius)?;
+    finite_or(c.radius, || field("radius"))?;
     if c.radius < 0.0 {
         return Err(Error::OutOfRange {
             field: field("radius"),

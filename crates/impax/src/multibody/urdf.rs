@@ -184,6 +184,50 @@ impl UrdfRobot {
     pub fn link(&self, name: &str) -> Option<&LinkFrame> {
         self.links.iter().find(|l| l.link == name)
     }
+
+    /// The contact point `spec` (a point of a link, merged links included) placed in its
+    /// body, as [`read_urdf`] places the contacts of its options — for a contact named after
+    /// the robot is read (add it with [`Model::with_contacts`]).
+    ///
+    /// ```
+    /// use impax::multibody::{read_urdf, ContactSpec, UrdfOptions};
+    /// let text = r#"<robot name="leg">
+    ///   <link name="thigh"><inertial><mass value="1"/>
+    ///     <inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial></link>
+    ///   <link name="foot"/>
+    ///   <joint name="ankle" type="fixed"><parent link="thigh"/><child link="foot"/>
+    ///     <origin xyz="0 0 -0.3"/></joint>
+    /// </robot>"#;
+    /// let robot = read_urdf(text, &UrdfOptions::default())?;
+    /// // The foot was merged into the thigh: its point 1 cm below is 0.31 m below the thigh's origin.
+    /// let c = robot.contact_point(&ContactSpec::parse("foot:0,0,-0.01")?)?;
+    /// assert_eq!((c.body, c.point.z), (0, -0.31));
+    /// assert_eq!(robot.contact_point(&ContactSpec::new("toe")).unwrap_err().field(), "contact[toe]");
+    /// # Ok::<(), impax::Error>(())
+    /// ```
+    ///
+    /// # Errors
+    /// An unknown link (field `contact[NAME]`).
+    pub fn contact_point(&self, spec: &ContactSpec) -> Result<ContactPoint> {
+        link_contact(&self.links, spec)
+    }
+}
+
+/// The contact point `spec` on the link frames `links` ([`UrdfRobot::contact_point`]).
+pub(crate) fn link_contact(links: &[LinkFrame], spec: &ContactSpec) -> Result<ContactPoint> {
+    let l = links
+        .iter()
+        .find(|l| l.link == spec.link)
+        .ok_or_else(|| Error::Invalid {
+            field: format!("contact[{}]", spec.name),
+            reason: format!("unknown link \"{}\"", spec.link),
+        })?;
+    Ok(ContactPoint::new(
+        &spec.name,
+        l.body,
+        l.placement.transform_point(&spec.point),
+        spec.radius,
+    ))
 }
 
 /// The error of the URDF element `what`.
@@ -248,7 +292,6 @@ pub fn read_urdf(text: &str, options: &UrdfOptions) -> Result<UrdfRobot> {
     }
     let mimic_joints = mimics(&robot)?;
     let bodies = b.bodies()?;
-    let contacts = b.contacts(&robot, &options.contacts)?;
     let links = b.frames.iter().map(|(&l, &(body, placement))| LinkFrame {
         link: robot.links[l].name.clone(),
         body,
@@ -256,6 +299,11 @@ pub fn read_urdf(text: &str, options: &UrdfOptions) -> Result<UrdfRobot> {
     });
     let mut links: Vec<LinkFrame> = links.collect();
     links.sort_by(|a, c| a.link.cmp(&c.link));
+    let contacts = options
+        .contacts
+        .iter()
+        .map(|spec| link_contact(&links, spec))
+        .collect::<Result<Vec<_>>>()?;
     let model = Model::new(bodies, b.joints, contacts)?;
     check_masses(&model)?;
     Ok(UrdfRobot {
@@ -310,6 +358,13 @@ struct Tree {
 
 impl Tree {
     fn new(robot: &urdf_rs::Robot) -> Result<Tree> {
+        if robot.links.is_empty() {
+            return Err(urdf_error(
+                "the links".into(),
+                "the robot has no <link> (an empty description, e.g. a xacro file not expanded)"
+                    .into(),
+            ));
+        }
         let mut link = HashMap::new();
         for (i, l) in robot.links.iter().enumerate() {
             if link.insert(l.name.clone(), i).is_some() {
@@ -495,30 +550,6 @@ impl Builder {
                 Body::new(name, m, com, inertia)
             })
             .collect())
-    }
-
-    /// The contact points of the options, placed in their bodies.
-    fn contacts(&self, robot: &urdf_rs::Robot, specs: &[ContactSpec]) -> Result<Vec<ContactPoint>> {
-        specs
-            .iter()
-            .map(|s| {
-                let l = robot
-                    .links
-                    .iter()
-                    .position(|l| l.name == s.link)
-                    .ok_or_else(|| Error::Invalid {
-                        field: format!("contact[{}]", s.name),
-                        reason: format!("unknown link \"{}\"", s.link),
-                    })?;
-                let (body, x) = self.frames[&l];
-                Ok(ContactPoint::new(
-                    &s.name,
-                    body,
-                    x.transform_point(&s.point),
-                    s.radius,
-                ))
-            })
-            .collect()
     }
 }
 

@@ -463,6 +463,23 @@ impl MechanismFile {
             .with_floor(height.unwrap_or(0.0))
     }
 
+    /// Put every contact's floor at the height `h` (`y = h` in 2d, `z = h` in 3d), the
+    /// file's own `height`s replaced.
+    ///
+    /// ```
+    /// use impax::scenario::MechanismFile;
+    /// let text = std::fs::read_to_string(concat!(
+    ///     env!("CARGO_MANIFEST_DIR"), "/../../examples/mechanisms/double-pendulum.toml"))?;
+    /// let mut file = MechanismFile::parse(&text)?;
+    /// assert!(!file.floor_given());
+    /// file.set_floor(-2.0);
+    /// assert!(file.floor_given() && file.contacts.iter().all(|c| c.height == Some(-2.0)));
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn set_floor(&mut self, h: f64) {
+        self.contacts.iter_mut().for_each(|c| c.height = Some(h));
+    }
+
     /// Whether the file gives the floor's height (else it passes through the lowest contact
     /// at the state).
     pub fn floor_given(&self) -> bool {

@@ -61,6 +61,6 @@ pub use mechanism_file::{
     is_mechanism_file, BodyEntry, ContactEntry, InertiaEntry, JointEntry, MechanismFile, Space,
 };
 pub use planar::{BuiltPlanar, PlanarScenario, SEED_TOML};
-pub use robot::{BuiltRobot, FreeRobot, RobotSource, RobotSpec};
+pub use robot::{BuiltRobot, FreeRobot, Robot, RobotSource, RobotSpec};
 pub use shape::{AngleUnit, Need, Quantity, Shape, ShapeParam, ShapeScalar};
 pub use spatial::{BodySpec3, BuiltBody3, BuiltSpatial, Shape3, SpatialScenario};

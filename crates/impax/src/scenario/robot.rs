@@ -26,8 +26,9 @@
 
 use super::MechanismFile;
 use crate::error::{Error, Result};
+use crate::multibody::urdf::link_contact;
 use crate::multibody::{
-    contact_position, forward_kinematics, read_urdf, BodyPose, ContactSpec, Model,
+    contact_position, forward_kinematics, read_urdf, BodyPose, ContactSpec, LinkFrame, Model,
     SpatialMechanismImpact, UrdfOptions,
 };
 
@@ -84,6 +85,63 @@ impl RobotSpec {
             q: None,
             u: None,
         }
+    }
+
+    /// Read the description once — the URDF parsed (without contact points), or the file's
+    /// model built — with the spec's `floating_base`, `floor` and `gravity`, but not its
+    /// state nor its contact: a [`Robot`] to put at any state, struck at any contact
+    /// ([`Robot::at`]).
+    ///
+    /// # Errors
+    /// Every error of [`read_urdf`] and [`MechanismFile::spatial`]; `floating_base` for a
+    /// file (it has its joints); a floor or a gravity that is not a finite number (≥ 0 for
+    /// gravity) — each naming its field.
+    pub fn load(&self) -> Result<Robot> {
+        let floor = self
+            .floor
+            .map(|h| crate::error::finite("floor", h))
+            .transpose()?;
+        let mut robot = match &self.source {
+            RobotSource::Urdf(text) => {
+                let options = UrdfOptions::default().floating_base(self.floating_base);
+                let urdf = read_urdf(text, &options)?;
+                Robot {
+                    name: if self.name.is_empty() {
+                        urdf.name.clone()
+                    } else {
+                        self.name.clone()
+                    },
+                    model: urdf.model,
+                    links: Some(urdf.links),
+                    mimic_joints: urdf.mimic_joints.into_iter().map(|m| m.joint).collect(),
+                    q: None,
+                    u: None,
+                    floor,
+                }
+            }
+            RobotSource::File(file) => {
+                if self.floating_base {
+                    return Err(Error::Invalid {
+                        field: "floating_base".into(),
+                        reason: "a mechanism file gives its base a `free` joint itself".into(),
+                    });
+                }
+                let model = file.spatial()?;
+                Robot {
+                    name: file.name.clone().unwrap_or_else(|| self.name.clone()),
+                    floor: floor.or(file.floor_given().then(|| model.floor())),
+                    model,
+                    links: None,
+                    mimic_joints: Vec::new(),
+                    q: file.q.clone(),
+                    u: file.u.clone(),
+                }
+            }
+        };
+        if let Some(g) = self.gravity {
+            robot.model = robot.model.with_gravity(g)?;
+        }
+        Ok(robot)
     }
 
     /// Build the model at its state, its floor placed and its striking contact chosen: a
@@ -214,6 +272,191 @@ impl RobotSpec {
             q,
             u,
             mimic_joints,
+        })
+    }
+}
+
+/// A spatial mechanism of one's own read once ([`RobotSpec::load`]): a URDF robot or a
+/// `space = "3d"` mechanism file, to put at many states and strike at any of its contacts
+/// without reading its description again.
+///
+/// ```
+/// use impax::scenario::{RobotSource, RobotSpec};
+/// let urdf = r#"<robot name="brick"><link name="brick"><inertial><mass value="1"/>
+///   <inertia ixx="0.00104" iyy="0.00354" izz="0.00417" ixy="0" ixz="0" iyz="0"/>
+///   </inertial></link></robot>"#;
+/// let spec = RobotSpec { floating_base: true, ..RobotSpec::new("", RobotSource::Urdf(urdf.into())) };
+/// let robot = spec.load()?;
+/// assert_eq!(robot.contact_names(), ["brick"]); // a URDF robot's contacts are its links
+/// // Two corners of the brick, each at its own state, without reading the URDF again.
+/// let q = [0.0, 0.0, 0.3, 1.0, 0.0, 0.0, 0.0];
+/// let u = [0.0, 0.0, -1.0, 0.0, 0.0, 0.0];
+/// let a = robot.at(Some(&q), Some(&u), Some("brick:0.1,0.05,-0.025"))?;
+/// let b = robot.at(Some(&q), Some(&u), Some("brick:-0.1,0.05,-0.025"))?;
+/// // The floor through each corner: 0.3 − 0.025 (to round-off).
+/// assert!((a.model.floor() - 0.275).abs() < 1e-15 && a.model.floor() == b.model.floor());
+/// // Falling flat, the corners' contact velocities are the same.
+/// assert_eq!(a.impact()?.contact_velocity(), b.impact()?.contact_velocity());
+/// # Ok::<(), impax::Error>(())
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct Robot {
+    name: String,
+    /// The bodies and joints (a file's contacts; none for a URDF robot), gravity applied.
+    model: Model,
+    /// A URDF robot's link frames (where its contacts are named).
+    links: Option<Vec<LinkFrame>>,
+    mimic_joints: Vec<String>,
+    /// A file's state.
+    q: Option<Vec<f64>>,
+    u: Option<Vec<f64>>,
+    /// The floor given (the spec's, else a file's `height`).
+    floor: Option<f64>,
+}
+
+impl Robot {
+    /// Its name.
+    pub fn name(&self) -> &str {
+        &self.name
+    }
+
+    /// The model: its bodies and joints, gravity applied; a file's contact points (a URDF
+    /// robot has none until one is named: [`Robot::struck_by`]).
+    pub fn model(&self) -> &Model {
+        &self.model
+    }
+
+    /// Whether it was read from URDF.
+    pub fn is_urdf(&self) -> bool {
+        self.links.is_some()
+    }
+
+    /// URDF joints that mimic another, kept as independent coordinates (as Pinocchio's URDF
+    /// reader does by default).
+    pub fn mimic_joints(&self) -> &[String] {
+        &self.mimic_joints
+    }
+
+    /// What `contact` may name: a file's contacts; a URDF robot's links (each as `LINK`, the
+    /// origin of its frame, or `LINK:x,y,z`, a point in it), in alphabetical order.
+    pub fn contact_names(&self) -> Vec<&str> {
+        match &self.links {
+            Some(links) => links.iter().map(|l| l.link.as_str()).collect(),
+            None => self
+                .model
+                .contacts()
+                .iter()
+                .map(|c| c.name.as_str())
+                .collect(),
+        }
+    }
+
+    /// The state by default: a file's `q` and `u`, else the neutral configuration
+    /// ([`Model::neutral`]) at rest.
+    pub fn default_state(&self) -> (Vec<f64>, Vec<f64>) {
+        let q = self.q.clone().unwrap_or_else(|| self.model.neutral());
+        let u = self.u.clone().unwrap_or_else(|| vec![0.0; self.model.nv()]);
+        (q, u)
+    }
+
+    /// The floor given (the spec's `floor`, else a file's `height`), or `None`: the floor
+    /// passes through the striking contact at each state.
+    pub fn floor(&self) -> Option<f64> {
+        self.floor
+    }
+
+    /// The model with the contact points `contact` can strike at: a URDF robot's with the
+    /// one contact `LINK` or `LINK:x,y,z` (required); a file's with its own.
+    ///
+    /// # Errors
+    /// A URDF robot without `contact`, or with an unknown link or a malformed point; a
+    /// mechanism without contact points.
+    pub fn struck_by(&self, contact: Option<&str>) -> Result<Model> {
+        let model = match &self.links {
+            Some(links) => {
+                let spec = contact.ok_or_else(|| Error::Invalid {
+                    field: "contact".into(),
+                    reason: "which link strikes: LINK or LINK:x,y,z (a point in its frame)".into(),
+                })?;
+                let point = link_contact(links, &ContactSpec::parse(spec)?)?;
+                self.model.clone().with_contacts(vec![point])?
+            }
+            None => self.model.clone(),
+        };
+        if model.contacts().is_empty() {
+            return Err(Error::Invalid {
+                field: "contact".into(),
+                reason: format!("`{}` has no contact point to strike", self.name),
+            });
+        }
+        Ok(model)
+    }
+
+    /// The index in `model` (from [`Robot::struck_by`] with the same `contact`) of the
+    /// contact that strikes at the configuration `q` (checked, [`Model::check_state`]): the
+    /// one named, else the lowest at `q` (the first of equals).
+    ///
+    /// # Errors
+    /// A name that is not one of `model`'s contacts (the error lists them).
+    pub fn striking_contact(
+        &self,
+        model: &Model,
+        contact: Option<&str>,
+        q: &[f64],
+    ) -> Result<usize> {
+        match contact {
+            Some(c) => model.contact_index(c).ok_or_else(|| Error::Invalid {
+                field: "contact".into(),
+                reason: format!(
+                    "`{c}` is not a contact of `{}` (its contacts: {})",
+                    self.name,
+                    model
+                        .contacts()
+                        .iter()
+                        .map(|c| c.name.as_str())
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                ),
+            }),
+            None => {
+                let heights = contact_heights(model, q);
+                Ok((0..heights.len())
+                    .min_by(|&a, &b| heights[a].total_cmp(&heights[b]))
+                    .unwrap_or(0))
+            }
+        }
+    }
+
+    /// The robot at the state `(q, u)` (default: [`Robot::default_state`]), struck at
+    /// `contact` ([`Robot::struck_by`], [`Robot::striking_contact`]), its floor the one
+    /// given or through the striking contact.
+    ///
+    /// # Errors
+    /// As [`Robot::struck_by`] and [`Robot::striking_contact`]; `q` or `u` of the wrong
+    /// length or not finite ([`Model::check_state`]) — each naming its field.
+    pub fn at(
+        &self,
+        q: Option<&[f64]>,
+        u: Option<&[f64]>,
+        contact: Option<&str>,
+    ) -> Result<BuiltRobot> {
+        let model = self.struck_by(contact)?;
+        let (q0, u0) = self.default_state();
+        let q = model.check_state(q.unwrap_or(&q0), None)?;
+        let u = u.map_or(u0, <[f64]>::to_vec);
+        model.check_speeds(&u)?;
+        let index = self.striking_contact(&model, contact, &q)?;
+        let floor = match self.floor {
+            Some(h) => h,
+            None => contact_heights(&model, &q)[index],
+        };
+        Ok(BuiltRobot {
+            name: self.name.clone(),
+            model: model.with_floor(floor)?,
+            q,
+            u,
+            contact: index,
+            mimic_joints: self.mimic_joints.clone(),
         })
     }
 }

@@ -276,6 +276,11 @@ fn multibody_urdf_refusals_name_the_element() {
         err(&bad, &o)
     );
     assert!(err("<robot name=\"x\"><link", &o).starts_with("urdf: the XML: cannot be read"));
+    // An unexpanded xacro stub (example-robot-data's ur3.urdf): no link at all.
+    assert_eq!(
+        err("<robot name=\"ur3\"></robot>", &o),
+        "urdf: the links: the robot has no <link> (an empty description, e.g. a xacro file not expanded)"
+    );
     let c = UrdfOptions::default().contact(ContactSpec::new("nowhere"));
     assert_eq!(err(ARM, &c), "contact[nowhere]: unknown link \"nowhere\"");
 }

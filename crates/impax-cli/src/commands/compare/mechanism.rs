@@ -4,6 +4,7 @@
 use crate::cli::CompareArgs;
 use crate::input::{CliError, CliResult};
 use crate::output::fmt::{signed, Table};
+use crate::output::json;
 use crate::sources::mechanism::{self, MechanismCase, MechanismSpec};
 use crate::sources::scenario::parse_laws;
 use crate::sources::Source;
@@ -70,10 +71,11 @@ pub fn run(args: &CompareArgs, source: &Source, out: &mut Vec<u8>) -> CliResult<
         .map(|&law| Ok((law, impact.resolve(law, friction, restitution)?)))
         .collect::<CliResult<Vec<_>>>()?;
     let text = if args.json {
-        serde_json::to_string_pretty(&impax::json::mechanism_compare(
+        serde_json::to_string_pretty(&json::mechanism_document(
             &spec.mechanism,
-            &case,
+            &case.description,
             &impact,
+            &case.u,
             &problem,
             &results,
         ))

@@ -5,6 +5,7 @@
 use crate::cli::CompareArgs;
 use crate::input::{CliError, CliResult};
 use crate::output::fmt::{signed, Table};
+use crate::output::json;
 use crate::sources::robot::{self, RobotCase};
 use crate::sources::File;
 use impax::multibody::{SpatialMechanismImpact, SpatialMechanismOutcome};
@@ -42,10 +43,8 @@ pub fn run(args: &CompareArgs, file: &File, out: &mut Vec<u8>) -> CliResult<()> 
         .map(|&law| Ok((law, impact.resolve(law, case.friction, case.restitution)?)))
         .collect::<CliResult<Vec<_>>>()?;
     let text = if args.json {
-        serde_json::to_string_pretty(&impax::json::robot_compare(
-            &built, &impact, &problem, &results,
-        ))
-        .map_err(CliError::failure)?
+        serde_json::to_string_pretty(&json::robot_document(&built, &impact, &problem, &results))
+            .map_err(CliError::failure)?
             + "\n"
     } else {
         table(&built, &case, &impact, &results)

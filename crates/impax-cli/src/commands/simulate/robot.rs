@@ -1,6 +1,6 @@
 //! `impax simulate ROBOT.urdf --contact FOOT …` (or a `space = "3d"` mechanism file): free
 //! flight of a spatial mechanism with impacts at its contacts
-//! ([`impax::multibody::simulate`]) — the table, JSON ([`super::robot_json`]) and the
+//! ([`impax::multibody::simulate()`]) — the table, JSON ([`super::robot_json`]) and the
 //! trajectory as CSV, with the keys and columns of the planar run where they mean the same.
 
 use super::{csv, robot_json, scenario::run_options};
