@@ -931,4 +931,9 @@ async function main() {
   setKind("sphere");
 }
 
+Views.add({
+  name: "one", tab: "tab-one", panel: "one-contact", hash: "",
+  // The canvases were sized while hidden: redraw them at their width.
+  shown: () => window.dispatchEvent(new Event("resize")),
+});
 main();

@@ -71,6 +71,16 @@ const Impax = {
     return this.call("impax_multi", request);
   },
 
+  // Every law on the impact of a mechanism file's striking contact.
+  mechanism(request) {
+    return this.call("impax_mechanism", request);
+  },
+
+  // The quantities the tracker reports along a built-in's free motion.
+  conserved(request) {
+    return this.call("impax_conserved", request);
+  },
+
   // An energy map: the description, and copies of the cells (ΔT/T0 as f32, class as u8).
   map(request) {
     const answer = this.call("impax_map", request);

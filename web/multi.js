@@ -417,17 +417,6 @@
     $("several").dataset.updates = String(mstate.updates);
   }
 
-  function showView(several) {
-    $("one-contact").hidden = several;
-    $("several").hidden = !several;
-    $("tab-one").setAttribute("aria-selected", String(!several));
-    $("tab-several").setAttribute("aria-selected", String(several));
-    history.replaceState(null, "", several ? "#several" : location.pathname + location.search);
-    if (several && mstate.info) startAnimation();
-    // The other view's canvases were sized while hidden: redraw them at their width.
-    if (!several) window.dispatchEvent(new Event("resize"));
-  }
-
   async function init() {
     await Impax.load("impax_wasm.wasm");
     mstate.info = Impax.info();
@@ -443,11 +432,12 @@
     let resize = 0;
     window.addEventListener("resize", () => { clearTimeout(resize); resize = setTimeout(() => draw(anim.t), 100); });
     setSystem(mstate.system);
-    if (location.hash === "#several") showView(true);
   }
 
-  $("tab-one").addEventListener("click", () => showView(false));
-  $("tab-several").addEventListener("click", () => showView(true));
+  Views.add({
+    name: "several", tab: "tab-several", panel: "several", hash: "#several",
+    shown: () => { if (mstate.info) startAnimation(); },
+  });
   init().catch((e) => {
     $("multi-error").hidden = false;
     $("multi-error").textContent = `could not load the impax core: ${e.message}`;

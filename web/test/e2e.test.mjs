@@ -7,7 +7,9 @@
 // SCREENSHOT (default target/explorer.png beside the repository root; the book's picture
 // docs/src/img/explorer.png is refreshed with SCREENSHOT=docs/src/img/explorer.png),
 // MULTI_SCREENSHOT (the view with several contacts, default target/explorer-multi.png; the
-// book's docs/src/img/explorer-multi.png).
+// book's docs/src/img/explorer-multi.png), MECHANISM_SCREENSHOT and CONSERVED_SCREENSHOT (the
+// views "Your mechanism" and "Conserved quantities", default target/explorer-mechanism.png and
+// target/explorer-conserved.png; the book's docs/src/img/explorer-{mechanism,conserved}.png).
 import { test, before, after } from "node:test";
 import assert from "node:assert/strict";
 import { spawn, execFileSync } from "node:child_process";
@@ -24,6 +26,8 @@ const IMPAX = process.env.IMPAX_BIN && path.resolve(process.env.IMPAX_BIN);
 const CHROMIUM = process.env.CHROMIUM || "/usr/bin/chromium";
 const SCREENSHOT = process.env.SCREENSHOT || path.join(root, "target/explorer.png");
 const MULTI_SCREENSHOT = process.env.MULTI_SCREENSHOT || path.join(root, "target/explorer-multi.png");
+const MECHANISM_SCREENSHOT = process.env.MECHANISM_SCREENSHOT || path.join(root, "target/explorer-mechanism.png");
+const CONSERVED_SCREENSHOT = process.env.CONSERVED_SCREENSHOT || path.join(root, "target/explorer-conserved.png");
 const FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--no-first-run",
   "--disable-background-networking", "--disable-component-update", "--disable-sync"];
 
@@ -31,7 +35,18 @@ let server, url, browser, page;
 const errors = [];
 
 function impax(...args) {
-  return JSON.parse(execFileSync(IMPAX, args, { encoding: "utf8" }));
+  return JSON.parse(execFileSync(IMPAX, args, { encoding: "utf8", cwd: root }));
+}
+
+// The one-line error of a command that fails (exit 2), without its `error: `.
+function impaxError(...args) {
+  try {
+    execFileSync(IMPAX, args, { encoding: "utf8", cwd: root, stdio: ["ignore", "pipe", "pipe"] });
+  } catch (e) {
+    assert.equal(e.status, 2, `${args.join(" ")}: exit status`);
+    return e.stderr.trim().replace(/^error: /, "");
+  }
+  assert.fail(`${args.join(" ")} succeeded`);
 }
 
 function freePort() {
@@ -419,6 +434,245 @@ test("several contacts: the rod landing flat and the rocking block, and a rod th
   assert.deepEqual(errors, []);
 });
 
+// ---- the view "Your mechanism" -----------------------------------------------------------
+
+const DOUBLE_PENDULUM = "examples/mechanisms/double-pendulum.toml";
+const ARM = "examples/mechanisms/arm-3d.toml";
+
+// Do something in the view and wait for the page to answer it.
+async function mechUpdate(action) {
+  const before = await page.$eval("#mechanism", (m) => m.dataset.updates);
+  await action();
+  await page.waitForFunction((b) => document.getElementById("mechanism").dataset.updates !== b, before, { timeout: 5000 });
+}
+
+async function mechError() {
+  return page.$eval("#mech-error", (e) => (e.hidden ? "" : e.textContent));
+}
+
+// The file in the text area, as if typed (the page reads it once the typing pauses).
+async function typeFile(text) {
+  await mechUpdate(() => page.$eval("#mech-file", (el, t) => {
+    el.value = t;
+    el.dispatchEvent(new Event("input", { bubbles: true }));
+  }, text));
+}
+
+// The table against `impax compare FILE --json`, to the five decimals shown, for every law:
+// the generalized velocities after, the contact velocity after, the impulse, ΔT and T⁺/T⁻.
+async function checkMechanismTable(json) {
+  const a = await page.evaluate(() => window.explorerMechanism.answer);
+  assert.deepEqual(a.results.map((r) => r.law), json.results.map((r) => r.law));
+  const spatial = a.space === "3d";
+  const speeds = spatial ? json.speeds : json.coordinates;
+  for (const r of json.results) {
+    assert.equal(await page.$eval(`#mech-laws td.verdict[data-law="${r.law}"]`, (td) => td.dataset.verdict), r.verdict, `${r.law}: verdict`);
+    if (r.verdict === "breakdown") continue;
+    const expected = { dT: r.energy_change, ratio: r.energy_ratio };
+    speeds.forEach((name, i) => { expected[name] = r.velocities_after[i]; });
+    if (spatial) {
+      Object.assign(expected, { vt1: r.velocity_after.t1, vt2: r.velocity_after.t2, vn: r.velocity_after.n,
+        pt1: r.impulse.t1, pt2: r.impulse.t2, pn: r.impulse.n });
+    } else {
+      Object.assign(expected, { vt: r.contact_velocity_after.t, vn: r.contact_velocity_after.n, pt: r.impulse.t, pn: r.impulse.n });
+    }
+    assert.equal(Object.keys(expected).length, a.rows.length, "one row per number");
+    for (const [key, value] of Object.entries(expected)) {
+      const text = await page.$eval(`#mech-laws td[data-law="${r.law}"][data-key="${key}"]`, (td) => td.textContent);
+      assert.equal(shown(text).toFixed(5), (Math.abs(value) < 0.5e-5 ? 0 : value).toFixed(5).replace("-0.00000", "0.00000"),
+        `${r.law} ${key}: page shows ${text}, impax compare --json gives ${value}`);
+    }
+  }
+}
+
+test("your mechanism: Kane & Levinson's double pendulum from its file, as impax compare FILE --json", async () => {
+  await page.click("#tab-mechanism");
+  await page.waitForSelector('#mechanism[data-ready="1"]', { timeout: 20000 });
+  assert.equal(await page.evaluate(() => location.hash), "#mechanism");
+  assert.equal(await page.$eval("#one-contact", (m) => m.hidden), true);
+  assert.equal(await page.$eval("#mech-example", (s) => s.value), "double-pendulum.toml");
+  assert.equal(await page.$eval("#mech-file", (t) => t.value), fs.readFileSync(path.join(root, DOUBLE_PENDULUM), "utf8"));
+  // The state is the file's.
+  assert.equal(await page.$eval("#mech-q-0", (i) => i.value), "0.5235987755982988");
+  assert.equal(await page.$eval("#mech-u-1", (i) => i.value), "3");
+  const json = impax("compare", DOUBLE_PENDULUM, "--json");
+  await checkMechanismTable(json);
+  // Kane's paradox: Whittaker's rule gains 26 % of the energy.
+  assert.equal(await page.$eval('#mech-laws td[data-law="whittaker"][data-key="ratio"]', (td) => td.textContent), "+1.26087");
+  assert.equal(await page.$eval('#mech-laws td.verdict[data-law="whittaker"]', (td) => td.dataset.verdict), "energy-gained");
+  assert.ok(!(await page.content()).includes("NaN"));
+});
+
+test("your mechanism: the state and the coefficients typed in are used, as impax compare FILE --u … --friction …", async () => {
+  await mechUpdate(async () => { await page.fill("#mech-u-1", "2.5"); await page.press("#mech-u-1", "Enter"); });
+  await mechUpdate(async () => { await page.fill("#mech-friction-value", "0.3"); await page.press("#mech-friction-value", "Enter"); });
+  await checkMechanismTable(impax("compare", DOUBLE_PENDULUM, "--u=-1,2.5", "--friction", "0.3", "--json"));
+  // A state that cannot strike (both rods hanging straight down: W is singular) is the
+  // command line's error.
+  for (const i of [0, 1]) await mechUpdate(async () => { await page.fill(`#mech-q-${i}`, "0"); await page.press(`#mech-q-${i}`, "Enter"); });
+  assert.equal(await mechError(), impaxError("compare", DOUBLE_PENDULUM, "--q=0,0"));
+  assert.match(await mechError(), /^w: must be positive definite/);
+  assert.ok(!(await page.content()).includes("NaN"));
+  await mechUpdate(() => page.click("#mech-reset"));
+  assert.equal(await mechError(), "");
+  await checkMechanismTable(impax("compare", DOUBLE_PENDULUM, "--json"));
+});
+
+test("your mechanism: a broken file is one line naming its field as the command line does, never a crash", async () => {
+  const text = fs.readFileSync(path.join(root, DOUBLE_PENDULUM), "utf8");
+  const bad = text.replace('parent = "rod 1"', 'parent = "rod 3"');
+  const file = path.join(os.tmpdir(), `impax-e2e-${process.pid}.toml`);
+  fs.writeFileSync(file, bad);
+  const cli = impaxError("compare", file, "--json");
+  fs.rmSync(file);
+  assert.equal(cli, "joint[theta2].parent: `rod 3` is not a body of the file");
+  await typeFile(bad);
+  assert.equal(await mechError(), `line 36: ${cli}`);
+  assert.equal(await page.$eval("#mech-example", (s) => s.value), "", "the menu no longer names an example");
+  // The TOML reader's line and column; a body without its mass.
+  await typeFile(text.replace("mass = 1.0", "mas = 1.0"));
+  assert.match(await mechError(), /^line 16, column 1: unknown field `mas`/);
+  await typeFile(text.replace("mass = 1.0", "mass = -1.0"));
+  assert.match(await mechError(), /^line 16: body\[rod 1\]\.mass: /);
+  await typeFile("");
+  assert.notEqual(await mechError(), "");
+  assert.ok(!(await page.content()).includes("NaN"));
+  assert.deepEqual(errors, []);
+  await mechUpdate(() => page.selectOption("#mech-example", "double-pendulum.toml"));
+  assert.equal(await mechError(), "");
+  await checkMechanismTable(impax("compare", DOUBLE_PENDULUM, "--json"));
+});
+
+test("your mechanism: every example of examples/mechanisms/ answers; the arm in space as impax compare FILE --json", async () => {
+  const files = await page.$$eval("#mech-example option", (os) => os.map((o) => o.value).filter((v) => v));
+  assert.deepEqual([...files].sort(), fs.readdirSync(path.join(root, "examples/mechanisms")).filter((f) => f.endsWith(".toml")).sort());
+  // Numbers written as # (the last digit of a velocity may differ between the builds).
+  const words = (m) => m.replace(/-?\d[\d.e+-]*/g, "#");
+  for (const f of files) {
+    await mechUpdate(() => page.selectOption("#mech-example", f));
+    const message = await mechError();
+    let cli = null;
+    try { cli = impax("compare", `examples/mechanisms/${f}`, "--json"); } catch { /* the error below */ }
+    if (cli) {
+      assert.equal(message, "", f);
+      await checkMechanismTable(cli);
+    } else if (/has no contact point to strike/.test(impaxError("compare", `examples/mechanisms/${f}`))) {
+      // A planar file without a contact point: the command line suggests `impax conserved`.
+      assert.match(message, /^contact: `[^`]+` has no contact point to strike/, f);
+    } else {
+      // The command line's message (the hopper is thrown upwards: its foot does not approach).
+      assert.equal(words(message), words(impaxError("compare", `examples/mechanisms/${f}`)), f);
+    }
+  }
+  await mechUpdate(() => page.selectOption("#mech-example", "arm-3d.toml"));
+  assert.equal(await page.evaluate(() => window.explorerMechanism.answer.space), "3d");
+  await checkMechanismTable(impax("compare", ARM, "--json"));
+  const [sw, iw] = await page.evaluate(() => [document.documentElement.scrollWidth, window.innerWidth]);
+  assert.ok(sw <= iw, `no horizontal scrolling (${sw} > ${iw})`);
+  // The screenshot of the view: Kane & Levinson's pendulum.
+  await mechUpdate(() => page.selectOption("#mech-example", "double-pendulum.toml"));
+  fs.mkdirSync(path.dirname(MECHANISM_SCREENSHOT), { recursive: true });
+  await page.screenshot({ path: MECHANISM_SCREENSHOT, fullPage: true });
+  assert.deepEqual(errors, []);
+});
+
+// ---- the view of conserved quantities ----------------------------------------------------
+
+// The number the table shows (conserved.js's fmt).
+const sixDigits = (x) => (x === 0 ? "0" : Math.abs(x) >= 1e5 || Math.abs(x) < 1e-3 ? x.toExponential(5) : x.toPrecision(6)).replace("-", "−");
+
+async function consUpdate(action) {
+  const before = await page.$eval("#conserved", (m) => m.dataset.updates);
+  await action();
+  await page.waitForFunction((b) => document.getElementById("conserved").dataset.updates !== b, before, { timeout: 10000 });
+}
+
+// The page's quantities against `impax conserved NAME --json`: the same quantities, the same
+// verdicts, the initial and final values to the six digits shown, and the relative change of
+// a quantity that is not conserved to 1e-6 (a conserved one's is rounding noise, which
+// differs between the native and the WebAssembly build).
+async function checkConserved(json) {
+  const a = await page.evaluate(() => window.explorerConserved.answer);
+  assert.deepEqual(a.quantities.map((q) => q.name), json.quantities.map((q) => q.name));
+  assert.deepEqual(a.cyclic, json.cyclic);
+  for (const q of json.quantities) {
+    const row = `#cons-table tr[data-name="${q.name}"]`;
+    const mine = a.quantities.find((x) => x.name === q.name);
+    assert.equal(mine.conserved, q.conserved, `${q.name}: conserved`);
+    assert.equal(await page.$eval(`${row} td.verdict`, (td) => td.dataset.verdict), q.conserved ? "conserved" : "not-conserved", q.name);
+    assert.equal(await page.$eval(`${row} td[data-col="initial"]`, (td) => td.textContent), sixDigits(q.initial), `${q.name}: initial`);
+    assert.equal(await page.$eval(`${row} td[data-col="final"]`, (td) => td.textContent), sixDigits(q.final), `${q.name}: final`);
+    if (!q.conserved) {
+      assert.ok(Math.abs(mine.relative_deviation - q.relative_deviation) <= 1e-6 * q.relative_deviation, `${q.name}: relative change`);
+    }
+    assert.equal(mine.values.length, json.samples, `${q.name}: a value per sample`);
+  }
+}
+
+async function inkedCanvas(selector) {
+  return page.$eval(selector, (c) => {
+    const d = c.getContext("2d").getImageData(0, 0, c.width, c.height).data;
+    let n = 0;
+    for (let i = 0; i < d.length; i += 4) if (d[i] < 200 || d[i + 1] < 200 || d[i + 2] < 200) n++;
+    return n;
+  });
+}
+
+test("conserved quantities: the ring-pendulum of paper B, as impax conserved ring-pendulum --json", async () => {
+  await page.click("#tab-conserved");
+  await page.waitForSelector('#conserved[data-ready="1"]', { timeout: 20000 });
+  assert.equal(await page.evaluate(() => location.hash), "#conserved");
+  assert.equal(await page.$eval("#mechanism", (m) => m.hidden), true);
+  const json = impax("conserved", "ring-pendulum", "--json");
+  await checkConserved(json);
+  // Paper B: x is cyclic, p_x is conserved and the horizontal momentum P_x is not; the energy
+  // and the boost's Noether charge are conserved.
+  const verdict = (name) => page.$eval(`#cons-table tr[data-name="${name}"] td.verdict`, (td) => td.textContent);
+  assert.equal(await verdict("p_x"), "conserved");
+  assert.equal(await verdict("P_x"), "NOT conserved");
+  assert.equal(await verdict("energy"), "conserved");
+  assert.equal(await verdict("boost x"), "conserved");
+  // One plot per quantity, drawn; the motion drawn, and moved by the clock.
+  const plots = await page.$$eval("#cons-plots figure", (fs) => fs.map((f) => f.dataset.name));
+  assert.deepEqual(plots, json.quantities.map((q) => q.name));
+  for (const name of plots) assert.ok((await inkedCanvas(`#cons-plots figure[data-name="${name}"] canvas`)) > 500, `${name}: the plot is drawn`);
+  await page.$eval("#cons-clock", (el) => { el.value = "0.1"; el.dispatchEvent(new Event("input", { bubbles: true })); });
+  const at = await page.$eval("#cons-anim", (c) => c.toDataURL());
+  assert.ok((await inkedCanvas("#cons-anim")) > 500);
+  await page.$eval("#cons-clock", (el) => { el.value = "0.4"; el.dispatchEvent(new Event("input", { bubbles: true })); });
+  assert.notEqual(await page.$eval("#cons-anim", (c) => c.toDataURL()), at, "the ring rolls");
+  assert.equal(await page.$eval("#cons-play", (b) => b.textContent), "play");
+  assert.ok(!(await page.content()).includes("NaN"));
+});
+
+test("conserved quantities: a slider changes the motion, as impax conserved --rates …; the cart's P_x is conserved", async () => {
+  await consUpdate(() => page.$eval("#c-phidot", (el) => { el.value = "1"; el.dispatchEvent(new Event("input", { bubbles: true })); }));
+  await checkConserved(impax("conserved", "ring-pendulum", "--rates", "0.5,1", "--json"));
+  // An impossible value is the core's error, naming its field.
+  await consUpdate(async () => { await page.fill("#c-radius-value", "0"); await page.press("#c-radius-value", "Enter"); });
+  assert.match(await page.$eval("#cons-error", (e) => (e.hidden ? "" : e.textContent)), /^radius: 0 is out of range/);
+  assert.ok(!(await page.content()).includes("NaN"));
+  await consUpdate(() => page.click("#cons-reset"));
+  assert.equal(await page.$eval("#cons-error", (e) => e.hidden), true);
+  await consUpdate(() => page.selectOption("#cons-system", "cart-pendulum"));
+  const cart = impax("conserved", "cart-pendulum", "--json");
+  await checkConserved(cart);
+  assert.equal(await page.$eval('#cons-table tr[data-name="P_x"] td.verdict', (td) => td.textContent), "conserved");
+  await consUpdate(() => page.selectOption("#cons-system", "ring-pendulum"));
+  await checkConserved(impax("conserved", "ring-pendulum", "--json"));
+  const [sw, iw] = await page.evaluate(() => [document.documentElement.scrollWidth, window.innerWidth]);
+  assert.ok(sw <= iw, `no horizontal scrolling (${sw} > ${iw})`);
+  // The screenshot of the view, 1.2 s into the motion.
+  await page.$eval("#cons-clock", (el) => { el.value = "0.12"; el.dispatchEvent(new Event("input", { bubbles: true })); });
+  fs.mkdirSync(path.dirname(CONSERVED_SCREENSHOT), { recursive: true });
+  await page.screenshot({ path: CONSERVED_SCREENSHOT, fullPage: true });
+  await page.click("#tab-one");
+  assert.equal(await page.$eval("#conserved", (m) => m.hidden), true);
+  assert.equal(await page.evaluate(() => location.hash), "");
+  assert.equal(await cell("whittaker", "dT"), "+0.24240");
+  assert.deepEqual(errors, []);
+});
+
 test("the folder written by --out works offline (file://) and the page fits a laptop screen", async () => {
   const dir = fs.mkdtempSync(path.join(os.tmpdir(), "impax-explorer-"));
   execFileSync(IMPAX, ["explore", "--out", dir]);
@@ -429,6 +683,18 @@ test("the folder written by --out works offline (file://) and the page fits a la
   await offline.click("#tab-several");
   await offline.waitForSelector('#several[data-ready="1"]', { timeout: 20000 });
   assert.equal(await offline.$eval('#multi-laws td[data-law="lcp"][data-key="x1"]', (td) => td.textContent), "−0.33333");
+  // An address ending in #mechanism or #conserved opens that view, and so does changing the
+  // address of the open page.
+  const direct = await browser.newPage({ viewport: { width: 1366, height: 768 } });
+  await direct.goto(pathToFileURL(path.join(dir, "index.html")).href + "#mechanism");
+  await direct.waitForSelector('#mechanism[data-ready="1"]', { timeout: 20000 });
+  assert.equal(await direct.$eval("#one-contact", (m) => m.hidden), true);
+  assert.equal(await direct.$eval('#mech-laws td[data-law="whittaker"][data-key="ratio"]', (td) => td.textContent), "+1.26087");
+  await direct.evaluate(() => { location.hash = "#conserved"; });
+  await direct.waitForSelector('#conserved[data-ready="1"]', { timeout: 20000 });
+  assert.equal(await direct.$eval("#mechanism", (m) => m.hidden), true);
+  assert.equal(await direct.$eval('#cons-table tr[data-name="P_x"] td.verdict', (td) => td.textContent), "NOT conserved");
+  await direct.close();
   await offline.click("#tab-one");
   for (const p of [offline, page]) {
     const [sw, iw] = await p.evaluate(() => [document.documentElement.scrollWidth, window.innerWidth]);

@@ -10,17 +10,17 @@
 //!
 //! 1. `impax_alloc(len) -> ptr`: room for a request of `len` bytes;
 //! 2. write the UTF-8 request at `ptr`;
-//! 3. `impax_compare(ptr, len)`, `impax_multi(ptr, len)` or `impax_map(ptr, len)` (which
-//!    also free the request) returns a pointer to the answer, `impax_output_len()` its
-//!    length in bytes;
+//! 3. `impax_compare(ptr, len)`, `impax_multi(ptr, len)`, `impax_mechanism(ptr, len)`,
+//!    `impax_conserved(ptr, len)` or `impax_map(ptr, len)` (which also free the request)
+//!    returns a pointer to the answer, `impax_output_len()` its length in bytes;
 //! 4. `impax_map` also leaves the map's cells in two arrays: `impax_map_values()`
 //!    (`f32` per cell: `ΔT/T0`, NaN where the law broke down or the point is invalid) and
 //!    `impax_map_classes()` (`u8` per cell, see [`map::Class`]), `nx × ny` cells, row by row
 //!    from the lowest `y`.
 //!
 //! A bad request is answered with `{"error": "one line"}`, never a trap. The Rust functions
-//! behind the exports, [`compare_json`], [`multi_json`] and [`map_json`], are public for
-//! tests on the host.
+//! behind the exports, [`compare_json`], [`multi_json`], [`mechanism_json`],
+//! [`conserved_json`] and [`map_json`], are public for tests on the host.
 //!
 //! ## Example
 //! ```
@@ -39,7 +39,9 @@
 
 pub mod animation;
 pub mod case;
+pub mod conserved;
 pub mod map;
+pub mod mechanism;
 pub mod multi;
 pub mod report;
 
@@ -73,6 +75,47 @@ pub fn multi_json(request: &str) -> String {
     finish(answer)
 }
 
+/// Answer a request of the view "Your mechanism" (see [`mechanism::MechanismRequest`]: a
+/// mechanism file's text, optionally `q`, `u`, μ and e) with every law on the impact of the
+/// contact that strikes, as `impax compare FILE --json` (see [`mechanism`]), or
+/// `{"error": …}` saying where in the file.
+///
+/// ```
+/// let file = include_str!("../../../examples/mechanisms/double-pendulum.toml");
+/// let request = serde_json::json!({ "file": file }).to_string();
+/// let v: serde_json::Value = serde_json::from_str(&impax_wasm::mechanism_json(&request)).unwrap();
+/// let whittaker = &v["results"][0];
+/// assert_eq!(whittaker["verdict"], "energy-gained"); // Kane's paradox, from the file
+/// let bad = serde_json::json!({ "file": file.replace("parent = \"rod 1\"", "parent = \"rod 3\"") });
+/// let v: serde_json::Value =
+///     serde_json::from_str(&impax_wasm::mechanism_json(&bad.to_string())).unwrap();
+/// assert!(v["error"].as_str().unwrap().starts_with("line 36: joint[theta2].parent: "));
+/// ```
+pub fn mechanism_json(request: &str) -> String {
+    let answer = serde_json::from_str::<mechanism::MechanismRequest>(request)
+        .map_err(|e| format!("request: {e}"))
+        .and_then(|r| mechanism::answer(&r));
+    finish(answer)
+}
+
+/// Answer a request of the view of conserved quantities (a built-in mechanism, its
+/// parameters and state, and the run's options; see [`conserved`]) with every quantity the
+/// tracker reports over time, as `impax conserved NAME --json`, and the bodies' poses, or
+/// `{"error": …}`.
+///
+/// ```
+/// let v: serde_json::Value =
+///     serde_json::from_str(&impax_wasm::conserved_json(r#"{"mechanism": "ring-pendulum"}"#))
+///         .unwrap();
+/// let q = |name: &str| v["quantities"].as_array().unwrap().iter().find(|q| q["name"] == name).unwrap().clone();
+/// assert_eq!(q("p_x")["conserved"], true); // x is cyclic
+/// assert_eq!(q("P_x")["conserved"], false); // the rolling contact pushes
+/// assert_eq!(q("boost x")["conserved"], true);
+/// ```
+pub fn conserved_json(request: &str) -> String {
+    finish(conserved::answer(request))
+}
+
 /// Answer a map request (see [`map::MapRequest`]): the map's description as JSON, the cells
 /// in `values` and `classes` (cleared and refilled), or `{"error": …}`.
 pub fn map_json(request: &str, values: &mut Vec<f32>, classes: &mut Vec<u8>) -> String {
@@ -83,7 +126,11 @@ pub fn map_json(request: &str, values: &mut Vec<f32>, classes: &mut Vec<u8>) -> 
 }
 
 /// The laws and bodies the module knows, as JSON: `{"version", "laws", "mechanism_laws",
-/// "multi_laws", "shapes", "shape_parameters", "map_parameters", "multi_systems"}`.
+/// "spatial_laws", "multi_laws", "shapes", "shape_parameters", "map_parameters",
+/// "multi_systems", "mechanism_files", "conserved_systems"}`. `mechanism_files` are the files
+/// of `examples/mechanisms/` (`{"name", "text"}`, embedded at build time);
+/// `conserved_systems` the view of conserved quantities' mechanisms with their defaults
+/// ([`conserved::systems_json`]).
 /// `multi_systems` gives each system of the view with several contacts its parameters with
 /// the core's defaults, its default μ and e ([`multi::system::systems_json`]). `shape_parameters` gives, for each shape,
 /// its numbers as the core's table names them: `{"name"` (e.g. `semi_axis_a`), `"key"` and
@@ -111,6 +158,9 @@ pub fn info_json() -> String {
             "mechanism": case::MECHANISM_PARAMETERS,
         },
         "multi_systems": multi::system::systems_json(),
+        "mechanism_files": mechanism::examples_json(),
+        "conserved_systems": conserved::systems_json(),
+        "spatial_laws": impax::LawId::SPATIAL.map(|l| l.as_str()),
     })
     .to_string()
 }
@@ -209,6 +259,35 @@ pub unsafe extern "C" fn impax_multi(ptr: *mut u8, len: usize) -> *const u8 {
     // SAFETY: forwarded from the caller's contract.
     let answer = match unsafe { take_request(ptr, len) } {
         Ok(text) => multi_json(&text),
+        Err(e) => finish(Err(e)),
+    };
+    keep(answer)
+}
+
+/// Every law on a mechanism file's impact ([`mechanism_json`]); the request is freed.
+///
+/// # Safety
+/// `ptr` must come from `impax_alloc(len)` and hold the request; it is freed here.
+#[no_mangle]
+pub unsafe extern "C" fn impax_mechanism(ptr: *mut u8, len: usize) -> *const u8 {
+    // SAFETY: forwarded from the caller's contract.
+    let answer = match unsafe { take_request(ptr, len) } {
+        Ok(text) => mechanism_json(&text),
+        Err(e) => finish(Err(e)),
+    };
+    keep(answer)
+}
+
+/// The conserved quantities along a built-in's free motion ([`conserved_json`]); the
+/// request is freed.
+///
+/// # Safety
+/// `ptr` must come from `impax_alloc(len)` and hold the request; it is freed here.
+#[no_mangle]
+pub unsafe extern "C" fn impax_conserved(ptr: *mut u8, len: usize) -> *const u8 {
+    // SAFETY: forwarded from the caller's contract.
+    let answer = match unsafe { take_request(ptr, len) } {
+        Ok(text) => conserved_json(&text),
         Err(e) => finish(Err(e)),
     };
     keep(answer)

@@ -24,7 +24,7 @@ pub struct Asset {
 }
 
 /// The files of `web/`, embedded at build time.
-pub const ASSETS: [Asset; 6] = [
+pub const ASSETS: [Asset; 9] = [
     Asset {
         name: "index.html",
         mime: "text/html; charset=utf-8",
@@ -41,6 +41,11 @@ pub const ASSETS: [Asset; 6] = [
         bytes: include_bytes!("../../../../web/impax.js"),
     },
     Asset {
+        name: "views.js",
+        mime: "text/javascript; charset=utf-8",
+        bytes: include_bytes!("../../../../web/views.js"),
+    },
+    Asset {
         name: "explorer.js",
         mime: "text/javascript; charset=utf-8",
         bytes: include_bytes!("../../../../web/explorer.js"),
@@ -49,6 +54,16 @@ pub const ASSETS: [Asset; 6] = [
         name: "multi.js",
         mime: "text/javascript; charset=utf-8",
         bytes: include_bytes!("../../../../web/multi.js"),
+    },
+    Asset {
+        name: "mechanism.js",
+        mime: "text/javascript; charset=utf-8",
+        bytes: include_bytes!("../../../../web/mechanism.js"),
+    },
+    Asset {
+        name: "conserved.js",
+        mime: "text/javascript; charset=utf-8",
+        bytes: include_bytes!("../../../../web/conserved.js"),
     },
     Asset {
         name: "impax_wasm.wasm",

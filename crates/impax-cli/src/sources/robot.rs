@@ -7,7 +7,10 @@ use super::File;
 use crate::cli::MechanismFlags;
 use crate::input::{CliError, CliResult};
 use crate::sources::scenario::parse_laws;
-use impax::scenario::{is_mechanism_file, MechanismFile, RobotSource, RobotSpec, Space};
+use impax::scenario::{
+    is_mechanism_file, MechanismFile, RobotSource, RobotSpec, Space, DEFAULT_FRICTION,
+    DEFAULT_RESTITUTION,
+};
 use impax::LawId;
 use std::path::Path;
 
@@ -105,8 +108,10 @@ pub fn load(
     }
     Ok(RobotCase {
         spec,
-        friction: friction.or(file_friction).unwrap_or(0.5),
-        restitution: restitution.or(file_restitution).unwrap_or(0.5),
+        friction: friction.or(file_friction).unwrap_or(DEFAULT_FRICTION),
+        restitution: restitution
+            .or(file_restitution)
+            .unwrap_or(DEFAULT_RESTITUTION),
         laws,
     })
 }

@@ -13,12 +13,15 @@ use std::net::{TcpListener, TcpStream};
 use std::path::PathBuf;
 use std::process::{Child, Stdio};
 
-const FILES: [&str; 6] = [
+const FILES: [&str; 9] = [
     "index.html",
     "style.css",
     "impax.js",
+    "views.js",
     "explorer.js",
     "multi.js",
+    "mechanism.js",
+    "conserved.js",
     "impax_wasm.wasm",
 ];
 
@@ -49,6 +52,15 @@ fn out_writes_the_page_files() {
     assert!(String::from_utf8_lossy(&out.stdout).contains("index.html"));
     for name in FILES {
         assert_eq!(std::fs::read(dir.join(name)).unwrap(), web(name), "{name}");
+    }
+    // Every file of web/ (its folder test/ aside) is one of the page's.
+    let web_dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../web");
+    for entry in std::fs::read_dir(web_dir).unwrap() {
+        let path = entry.unwrap().path();
+        let name = path.file_name().unwrap().to_string_lossy().into_owned();
+        if path.is_file() {
+            assert!(FILES.contains(&name.as_str()), "web/{name} is not embedded");
+        }
     }
     // The base64 copy for file:// decodes to the module.
     let script = std::fs::read_to_string(dir.join("impax_wasm.js")).unwrap();

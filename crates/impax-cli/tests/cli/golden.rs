@@ -253,3 +253,18 @@ fn built_in_mechanisms() {
     );
     text_and_json("compare_mechanism_rod", &["compare", rod.to_str().unwrap()]);
 }
+
+/// `impax compare` on the mechanism files of `examples/mechanisms/`: Kane & Levinson's
+/// double pendulum in the plane and the arm in space. The explorer's view "Your mechanism"
+/// answers these files with the same JSON (the module's tests read these snapshots).
+#[test]
+fn compare_mechanism_files() {
+    text_and_json(
+        "compare_double_pendulum_file",
+        &["compare", "../../examples/mechanisms/double-pendulum.toml"],
+    );
+    text_and_json(
+        "compare_arm_3d_file",
+        &["compare", "../../examples/mechanisms/arm-3d.toml"],
+    );
+}

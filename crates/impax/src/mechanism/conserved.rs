@@ -424,6 +424,51 @@ impl Track {
         };
         symmetric && self.relative_deviation() <= tolerance
     }
+
+    /// The kind's stable id: `generalized-momentum`, `energy`, `linear-momentum`,
+    /// `angular-momentum` or `noether-charge`.
+    pub fn kind_id(&self) -> &'static str {
+        match self.kind {
+            QuantityKind::GeneralizedMomentum { .. } => "generalized-momentum",
+            QuantityKind::Energy => "energy",
+            QuantityKind::LinearMomentum { .. } => "linear-momentum",
+            QuantityKind::AngularMomentum { .. } => "angular-momentum",
+            QuantityKind::Noether { .. } => "noether-charge",
+        }
+    }
+
+    /// What the quantity is, in words, with the mechanism's coordinate names: `generalized
+    /// momentum of x (cyclic)`, `total energy T + V`, `Newtonian momentum Σ m v_x`, …
+    pub fn description(&self, coordinates: &[&str]) -> String {
+        match &self.kind {
+            QuantityKind::GeneralizedMomentum { coordinate, cyclic } => format!(
+                "generalized momentum of {}{}",
+                coordinates[*coordinate],
+                if *cyclic { " (cyclic)" } else { "" }
+            ),
+            QuantityKind::Energy => "total energy T + V".into(),
+            QuantityKind::LinearMomentum { axis } => {
+                format!(
+                    "Newtonian momentum Σ m v_{}",
+                    if *axis == 0 { "x" } else { "y" }
+                )
+            }
+            QuantityKind::AngularMomentum { about } => {
+                format!("angular momentum about ({}, {})", about.x, about.y)
+            }
+            QuantityKind::Noether { .. } => "Noether charge Σ p ξ − F".into(),
+        }
+    }
+
+    /// The verdict in words: `conserved`, `NOT conserved`, or for a Noether charge whose
+    /// transformation fails the check, `not a symmetry (δL ≠ dF/dt)`.
+    pub fn verdict(&self, tolerance: f64) -> &'static str {
+        match &self.kind {
+            QuantityKind::Noether { check } if !check.holds() => "not a symmetry (δL ≠ dF/dt)",
+            _ if self.conserved(tolerance) => "conserved",
+            _ => "NOT conserved",
+        }
+    }
 }
 
 /// Largest number of integrator steps (accepted and rejected) [`track`] takes over the
@@ -435,6 +480,9 @@ pub const TRACK_MAX_STEPS: usize = 1_000_000;
 pub struct Tracking {
     /// Sample times.
     pub times: Vec<f64>,
+    /// The generalized coordinates `q` at each sample time (for drawing the motion: the
+    /// bodies' poses are [`Mechanism::poses`] of these).
+    pub positions: Vec<Vec<f64>>,
     /// The quantities.
     pub tracks: Vec<Track>,
     /// Coordinates found cyclic.
@@ -506,49 +554,43 @@ pub fn track<M: Mechanism + ?Sized>(
         .map(|s| verify_symmetry(m, s.as_ref(), q0, u0, 0.0, 16))
         .collect::<Result<Vec<_>>>()?;
 
-    let mut tracks: Vec<Track> = Vec::new();
-    let names = m.coordinates();
-    for (i, name) in names.iter().enumerate() {
-        tracks.push(Track {
-            name: format!("p_{name}"),
-            kind: QuantityKind::GeneralizedMomentum {
+    // The quantities, in the order they are measured at each sample.
+    let mut kinds: Vec<(String, QuantityKind)> = m
+        .coordinates()
+        .iter()
+        .enumerate()
+        .map(|(i, name)| {
+            let cyclic = cyclic.contains(&i);
+            let kind = QuantityKind::GeneralizedMomentum {
                 coordinate: i,
-                cyclic: cyclic.contains(&i),
-            },
-            values: Vec::new(),
-            magnitude: 0.0,
-        });
-    }
-    tracks.push(Track {
-        name: "energy".into(),
-        kind: QuantityKind::Energy,
-        values: Vec::new(),
-        magnitude: 0.0,
-    });
+                cyclic,
+            };
+            (format!("p_{name}"), kind)
+        })
+        .collect();
+    kinds.push(("energy".into(), QuantityKind::Energy));
     for (axis, name) in ["P_x", "P_y"].iter().enumerate() {
-        tracks.push(Track {
-            name: (*name).into(),
-            kind: QuantityKind::LinearMomentum { axis },
-            values: Vec::new(),
-            magnitude: 0.0,
-        });
+        kinds.push(((*name).into(), QuantityKind::LinearMomentum { axis }));
     }
     for o in about {
-        tracks.push(Track {
-            name: format!("L({}, {})", o.x, o.y),
-            kind: QuantityKind::AngularMomentum { about: *o },
-            values: Vec::new(),
-            magnitude: 0.0,
-        });
+        let kind = QuantityKind::AngularMomentum { about: *o };
+        kinds.push((format!("L({}, {})", o.x, o.y), kind));
     }
     for (s, check) in symmetries.iter().zip(&checks) {
-        tracks.push(Track {
-            name: s.name().to_string(),
-            kind: QuantityKind::Noether { check: *check },
+        kinds.push((
+            s.name().to_string(),
+            QuantityKind::Noether { check: *check },
+        ));
+    }
+    let mut tracks: Vec<Track> = kinds
+        .into_iter()
+        .map(|(name, kind)| Track {
+            name,
+            kind,
             values: Vec::new(),
             magnitude: 0.0,
-        });
-    }
+        })
+        .collect();
 
     let record = |tracks: &mut [Track], y: &[f64], t: f64| {
         let (q, u) = y.split_at(n);
@@ -570,7 +612,9 @@ pub fn track<M: Mechanism + ?Sized>(
     let mut y: Vec<f64> = q0.iter().chain(u0).copied().collect();
     let mut ode = Dopri5::new(2 * n, options.tolerances)?;
     let mut times = Vec::with_capacity(options.intervals + 1);
+    let mut positions = Vec::with_capacity(options.intervals + 1);
     times.push(0.0);
+    positions.push(y[..n].to_vec());
     record(&mut tracks, &y, 0.0);
     for k in 1..=options.intervals {
         // One budget for the whole motion, not per sample interval: a state spinning at
@@ -588,6 +632,7 @@ pub fn track<M: Mechanism + ?Sized>(
             |_| None,
         )?;
         times.push(t1);
+        positions.push(y[..n].to_vec());
         record(&mut tracks, &y, t1);
     }
     // Every value, magnitude and deviation must be a number: an angular momentum about a
@@ -614,6 +659,7 @@ pub fn track<M: Mechanism + ?Sized>(
     }
     Ok(Tracking {
         times,
+        positions,
         tracks,
         cyclic,
         steps: (ode.accepted, ode.rejected),

@@ -28,6 +28,14 @@ use serde::Deserialize;
 /// The largest angle coordinate a description may give, in degrees (one turn).
 pub const MAX_ANGLE_DEG: f64 = 360.0;
 
+/// Coulomb friction `μ` of a mechanism's impact when neither its description (a built-in's
+/// `friction`, a mechanism file's) nor the front end gives one.
+pub const DEFAULT_FRICTION: f64 = 0.5;
+
+/// Restitution `e` of a mechanism's impact when neither its description nor the front end
+/// gives one.
+pub const DEFAULT_RESTITUTION: f64 = 0.5;
+
 /// A built-in mechanism as written in a file (a top-level `mechanism` key) or filled in from
 /// flags or a front end's arguments. Every field but the name is optional: each mechanism has
 /// defaults ([`MechanismSpec::build`]).

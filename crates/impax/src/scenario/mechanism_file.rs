@@ -45,6 +45,7 @@ use crate::error::{Error, Result};
 use crate::math::{Mat3, Vec2, Vec3};
 use crate::mechanism::linkage::{self, JointKind as Kind2, LinkBody, LinkContact, Linkage};
 use crate::multibody::{self, Body, ContactPoint, JointKind as Kind3, Model, Placement};
+use crate::LawId;
 use serde::Deserialize;
 
 /// The dimension of a mechanism file.
@@ -200,6 +201,55 @@ impl MechanismFile {
     /// value of the wrong type.
     pub fn parse(text: &str) -> Result<Self> {
         toml::from_str(text).map_err(|e| Error::syntax(text, &e))
+    }
+
+    /// The laws the file asks for (`laws`, each once, in the file's order), else every law
+    /// of its space ([`LawId::CONTACT_SPACE`] in the plane, [`LawId::SPATIAL`] in space).
+    ///
+    /// ```
+    /// use impax::scenario::MechanismFile;
+    /// use impax::LawId;
+    /// let f = MechanismFile::parse("laws = [\"energetic\", \"whittaker\", \"energetic\"]")?;
+    /// assert_eq!(f.law_ids()?, [LawId::Energetic, LawId::Whittaker]);
+    /// let f = MechanismFile::parse("space = \"3d\"\nlaws = [\"smith\"]")?;
+    /// assert_eq!(f.law_ids().unwrap_err().field(), "laws[0]");
+    /// # Ok::<(), impax::Error>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] on `laws[i]`: an unknown id, or in space a law defined for planar
+    /// impacts only.
+    pub fn law_ids(&self) -> Result<Vec<LawId>> {
+        let Some(ids) = &self.laws else {
+            return Ok(match self.space {
+                Space::Planar => LawId::CONTACT_SPACE.to_vec(),
+                Space::Spatial => LawId::SPATIAL.to_vec(),
+            });
+        };
+        let mut laws = Vec::new();
+        for (i, id) in ids.iter().enumerate() {
+            let field = format!("laws[{i}]");
+            let law: LawId = id.trim().parse().map_err(|e: Error| match e {
+                Error::UnknownLaw { id, known } => invalid(
+                    &field,
+                    format!("unknown impact law `{id}` (known: {known})"),
+                ),
+                other => other,
+            })?;
+            if self.space == Space::Spatial && !law.is_spatial() {
+                return Err(invalid(
+                    field,
+                    format!(
+                        "`{law}` is defined for planar impacts only (spatial laws: {})",
+                        LawId::SPATIAL.map(|l| l.as_str()).join(", ")
+                    ),
+                ));
+            }
+            if !laws.contains(&law) {
+                laws.push(law);
+            }
+        }
+        Ok(laws)
     }
 
     /// The index of the body named `name`, for the field `field`.

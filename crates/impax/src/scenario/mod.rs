@@ -44,6 +44,7 @@
 //! `other.velocity`).
 
 mod body;
+mod file_lines;
 mod mechanism;
 mod mechanism_file;
 mod planar;
@@ -52,7 +53,10 @@ mod shape;
 mod spatial;
 
 pub use body::{BodySpec, BuiltBody, Scale};
-pub use mechanism::{BuiltMechanism, MechanismSpec, MAX_ANGLE_DEG};
+pub use file_lines::{field_line, file_error_message};
+pub use mechanism::{
+    BuiltMechanism, MechanismSpec, DEFAULT_FRICTION, DEFAULT_RESTITUTION, MAX_ANGLE_DEG,
+};
 pub use mechanism_file::{
     is_mechanism_file, BodyEntry, ContactEntry, InertiaEntry, JointEntry, MechanismFile, Space,
 };

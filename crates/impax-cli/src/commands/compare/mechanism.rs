@@ -50,8 +50,10 @@ pub fn run(args: &CompareArgs, source: &Source, out: &mut Vec<u8>) -> CliResult<
     }
     let spec = mechanism::load_source(source, &flags(args))?;
     let case = mechanism::build(&spec)?;
-    let friction = spec.friction.unwrap_or(0.5);
-    let restitution = spec.restitution.unwrap_or(0.5);
+    let friction = spec.friction.unwrap_or(impax::scenario::DEFAULT_FRICTION);
+    let restitution = spec
+        .restitution
+        .unwrap_or(impax::scenario::DEFAULT_RESTITUTION);
     let laws = match &spec.laws {
         Some(ids) => parse_laws(ids)?,
         None => LawId::CONTACT_SPACE.to_vec(),

@@ -8,15 +8,13 @@ pub mod robot;
 use crate::cli::ConservedArgs;
 use crate::input::{parse_numbers, CliError, CliResult};
 use crate::output::fmt::{Plain, Table};
-use crate::output::json::num;
 use crate::output::plot;
 use crate::sources::mechanism::{self, MechanismSpec};
 use impax::math::Vec2;
 use impax::mechanism::builtin::BuiltIn;
-use impax::mechanism::conserved::{self, QuantityKind, Track, TrackOptions, Tracking};
+use impax::mechanism::conserved::{self, QuantityKind, TrackOptions, Tracking};
 use impax::mechanism::Mechanism;
 use impax::ode::Tolerances;
-use serde_json::{json, Value};
 
 pub fn run(args: &ConservedArgs, out: &mut Vec<u8>) -> CliResult<()> {
     if !BuiltIn::NAMES.contains(&args.mechanism.as_str()) {
@@ -105,7 +103,7 @@ pub fn run(args: &ConservedArgs, out: &mut Vec<u8>) -> CliResult<()> {
         )?;
     }
     let text = if args.json {
-        serde_json::to_string_pretty(&document(
+        serde_json::to_string_pretty(&impax::json::conserved(
             &spec.mechanism,
             &case,
             &tracking,
@@ -150,45 +148,6 @@ pub(crate) fn track_options(args: &ConservedArgs) -> CliResult<TrackOptions> {
     })
 }
 
-fn kind(t: &Track, coords: &[&str]) -> String {
-    match &t.kind {
-        QuantityKind::GeneralizedMomentum { coordinate, cyclic } => format!(
-            "generalized momentum of {}{}",
-            coords[*coordinate],
-            if *cyclic { " (cyclic)" } else { "" }
-        ),
-        QuantityKind::Energy => "total energy T + V".into(),
-        QuantityKind::LinearMomentum { axis } => {
-            format!(
-                "Newtonian momentum Σ m v_{}",
-                if *axis == 0 { "x" } else { "y" }
-            )
-        }
-        QuantityKind::AngularMomentum { about } => {
-            format!("angular momentum about ({}, {})", about.x, about.y)
-        }
-        QuantityKind::Noether { .. } => "Noether charge Σ p ξ − F".into(),
-    }
-}
-
-fn kind_id(t: &Track) -> &'static str {
-    match t.kind {
-        QuantityKind::GeneralizedMomentum { .. } => "generalized-momentum",
-        QuantityKind::Energy => "energy",
-        QuantityKind::LinearMomentum { .. } => "linear-momentum",
-        QuantityKind::AngularMomentum { .. } => "angular-momentum",
-        QuantityKind::Noether { .. } => "noether-charge",
-    }
-}
-
-fn verdict(t: &Track, tolerance: f64) -> &'static str {
-    match &t.kind {
-        QuantityKind::Noether { check } if !check.holds() => "not a symmetry (δL ≠ dF/dt)",
-        _ if t.conserved(tolerance) => "conserved",
-        _ => "NOT conserved",
-    }
-}
-
 fn table(case: &mechanism::MechanismCase, tr: &Tracking, tolerance: f64, duration: f64) -> String {
     let coords = case.mechanism.coordinates();
     let mut t = Table::new(&[
@@ -202,11 +161,11 @@ fn table(case: &mechanism::MechanismCase, tr: &Tracking, tolerance: f64, duratio
     for track in &tr.tracks {
         t.row(vec![
             track.name.clone(),
-            kind(track, coords),
+            track.description(coords),
             format!("{:+.10e}", track.initial()),
             format!("{:.3e}", track.largest_deviation()),
             format!("{:.1e}", track.relative_deviation()),
-            verdict(track, tolerance).into(),
+            track.verdict(tolerance).into(),
         ]);
     }
     let cyclic: Vec<&str> = tr.cyclic.iter().map(|&i| coords[i]).collect();
@@ -235,63 +194,4 @@ fn table(case: &mechanism::MechanismCase, tr: &Tracking, tolerance: f64, duratio
         }
     }
     text
-}
-
-fn document(
-    name: &str,
-    case: &mechanism::MechanismCase,
-    tr: &Tracking,
-    tolerance: f64,
-    duration: f64,
-) -> Value {
-    let coords = case.mechanism.coordinates();
-    let quantities: Vec<Value> = tr
-        .tracks
-        .iter()
-        .map(|t| {
-            let mut q = json!({
-                "name": t.name,
-                "kind": kind_id(t),
-                "description": kind(t, coords),
-                "initial": num(t.initial()),
-                "final": num(*t.values.last().expect("samples")),
-                "largest_deviation": num(t.largest_deviation()),
-                "relative_deviation": num(t.relative_deviation()),
-                "magnitude": num(t.magnitude),
-                "conserved": t.conserved(tolerance),
-            });
-            match &t.kind {
-                QuantityKind::GeneralizedMomentum { coordinate, cyclic } => {
-                    q["coordinate"] = json!(coords[*coordinate]);
-                    q["cyclic"] = json!(cyclic);
-                }
-                QuantityKind::AngularMomentum { about } => q["about"] = json!([about.x, about.y]),
-                QuantityKind::LinearMomentum { axis } => {
-                    q["axis"] = json!(if *axis == 0 { "x" } else { "y" })
-                }
-                QuantityKind::Noether { check } => {
-                    q["symmetry_check"] = json!({
-                        "holds": check.holds(),
-                        "variation": num(check.variation),
-                        "gauge_rate": num(check.gauge_rate),
-                    })
-                }
-                QuantityKind::Energy => {}
-            }
-            q
-        })
-        .collect();
-    json!({
-        "mechanism": name,
-        "scenario": case.description,
-        "coordinates": coords,
-        "q": case.q,
-        "u": case.u,
-        "duration": duration,
-        "samples": tr.times.len(),
-        "tolerance": tolerance,
-        "steps": { "accepted": tr.steps.0, "rejected": tr.steps.1 },
-        "cyclic": tr.cyclic.iter().map(|&i| coords[i]).collect::<Vec<_>>(),
-        "quantities": quantities,
-    })
 }

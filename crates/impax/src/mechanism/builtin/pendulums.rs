@@ -71,6 +71,16 @@ impl RingPendulum {
         })
     }
 
+    /// The ring's radius `R`.
+    pub fn radius(&self) -> f64 {
+        self.radius
+    }
+
+    /// The pendulum's arm `l`.
+    pub fn length(&self) -> f64 {
+        self.length
+    }
+
     /// Small-oscillation angular frequency squared, `ω² = (g/l)(2M + m)/(2M)`.
     pub fn small_oscillation_omega2(&self) -> f64 {
         let (ring, bob) = (self.bodies[0].mass, self.bodies[1].mass);
@@ -172,6 +182,11 @@ impl CartPendulum {
             length: positive("length", length)?,
             gravity: gravity(g)?,
         })
+    }
+
+    /// The pendulum's arm `l`.
+    pub fn length(&self) -> f64 {
+        self.length
     }
 
     /// Small-oscillation angular frequency squared, `ω² = (g/l)(M + m)/M`.

@@ -11,6 +11,12 @@ use crate::planar::{Breakdown, ContactProblem, LawDetail, Outcome, SmithReading}
 use crate::spatial::{self, PhaseKind};
 use serde_json::{json, Map, Value};
 
+mod mechanism;
+pub use mechanism::{
+    conserved, mechanism_document, mechanism_entry, mechanism_result, quantity, robot_document,
+    robot_result,
+};
+
 /// JSON numbers: `-0` printed as `0`.
 pub fn num(x: f64) -> Value {
     json!(if x == 0.0 { 0.0 } else { x })
@@ -518,129 +524,4 @@ fn multi3_detail(o: &multi3::MultiOutcome) -> Value {
         }),
         multi3::MultiDetail::OneContact { detail, .. } => detail3(detail),
     }
-}
-
-/// The keys a mechanism's impact adds to a law's entry (`fields`: the outcome's or the
-/// breakdown's): `velocities_after` (`u⁺`), `energy_after` and `energy_ratio` (of the energy
-/// before `t0`), `energy_change_from_velocities` — all null when the law broke down
-/// (`applied` is `None`).
-pub fn mechanism_entry(
-    mut fields: Map<String, Value>,
-    t0: f64,
-    applied: Option<(f64, &[f64], Option<f64>)>,
-) -> Value {
-    match applied {
-        Some((energy_change, after, from_velocities)) => {
-            fields.insert(
-                "velocities_after".into(),
-                json!(after.iter().map(|&x| num(x)).collect::<Vec<_>>()),
-            );
-            fields.insert("energy_after".into(), num(t0 + energy_change));
-            fields.insert("energy_ratio".into(), num((t0 + energy_change) / t0));
-            fields.insert(
-                "energy_change_from_velocities".into(),
-                from_velocities.map_or(Value::Null, num),
-            );
-        }
-        None => {
-            for k in [
-                "velocities_after",
-                "energy_after",
-                "energy_ratio",
-                "energy_change_from_velocities",
-            ] {
-                fields.insert(k.into(), Value::Null);
-            }
-        }
-    }
-    Value::Object(fields)
-}
-
-/// The document of `impax compare MECHANISM --json` for a planar mechanism (a built-in or a
-/// mechanism file) struck at one contact: `mechanism` (its name), `scenario` (the built
-/// mechanism's description), `coordinates`, `q`, `u_before`, `contact`, `gap`, `problem`,
-/// `energy_before` and `results` (one [`mechanism_entry`] per law, in the order given).
-pub fn mechanism_document<M: crate::mechanism::Mechanism + ?Sized>(
-    name: &str,
-    description: &str,
-    impact: &crate::mechanism::impact::MechanismImpact<'_, M>,
-    u: &[f64],
-    contact_problem: &ContactProblem,
-    results: &[(crate::LawId, crate::mechanism::impact::MechanismOutcome)],
-) -> Value {
-    let m = impact.mechanism();
-    let t0 = impact.energy_before();
-    let entries: Vec<Value> = results
-        .iter()
-        .map(|(_, r)| match &r.resolution {
-            Ok(o) => mechanism_entry(
-                outcome_fields(o, "contact_velocity_after"),
-                t0,
-                Some((
-                    o.energy_change,
-                    r.velocities_after.as_deref().unwrap_or_default(),
-                    r.energy_change_from_velocities,
-                )),
-            ),
-            Err(b) => mechanism_entry(
-                breakdown_fields(b, "contact_velocity_after", false),
-                t0,
-                None,
-            ),
-        })
-        .collect();
-    json!({
-        "mechanism": name,
-        "scenario": description,
-        "coordinates": m.coordinates(),
-        "q": impact.configuration(),
-        "u_before": u,
-        "contact": m.contacts()[impact.contact()].name,
-        "gap": num(impact.gap()),
-        "problem": problem(contact_problem),
-        "energy_before": t0,
-        "results": entries,
-    })
-}
-
-/// The document of `impax compare ROBOT --json` for a spatial mechanism (a URDF robot or a
-/// `space = "3d"` mechanism file) at its state: `mechanism`, `scenario` (its description),
-/// `coordinates`, `speeds`, `mimic_joints`, `q`, `u_before`, `contact`, `gap`, `problem`,
-/// `energy_before` and `results` (one [`mechanism_entry`] per law, in the order given).
-pub fn robot_document(
-    built: &crate::scenario::BuiltRobot,
-    impact: &crate::multibody::SpatialMechanismImpact<'_>,
-    problem: &spatial::ContactProblem,
-    results: &[(crate::LawId, crate::multibody::SpatialMechanismOutcome)],
-) -> Value {
-    let t0 = impact.energy_before();
-    let entries: Vec<Value> = results
-        .iter()
-        .map(|(_, r)| match &r.resolution {
-            Ok(o) => mechanism_entry(
-                spatial_outcome_fields(o),
-                t0,
-                Some((
-                    o.energy_change,
-                    r.velocities_after.as_deref().unwrap_or_default(),
-                    r.energy_change_from_velocities,
-                )),
-            ),
-            Err(b) => mechanism_entry(spatial_breakdown_fields(b), t0, None),
-        })
-        .collect();
-    json!({
-        "mechanism": built.name,
-        "scenario": built.description(),
-        "coordinates": built.coordinates(),
-        "speeds": built.model.speeds(),
-        "mimic_joints": built.mimic_joints,
-        "q": built.q,
-        "u_before": built.u,
-        "contact": built.model.contacts()[built.contact].name,
-        "gap": num(impact.gap()),
-        "problem": spatial_problem(problem),
-        "energy_before": num(t0),
-        "results": entries,
-    })
 }
