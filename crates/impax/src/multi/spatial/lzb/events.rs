@@ -64,7 +64,7 @@ impl Event {
 }
 
 /// The most events watched per contact (expansion: two; a fixed slip: two).
-const PER_CONTACT: usize = 4;
+pub(super) const PER_CONTACT: usize = 4;
 
 /// The events that can happen in the current regimes, with the offsets of their functions.
 #[derive(Debug, Clone, Copy)]

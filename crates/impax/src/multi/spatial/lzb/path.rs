@@ -5,8 +5,12 @@
 //! An event is located on the step's seventh-order dense output: the root of the event
 //! function in the step's fraction `θ` by the Illinois iteration to `4ε` in `θ` (of the
 //! events inside one step, the first). The path goes on from the discrete solution there, by
-//! re-stepping from the step's start to that `θ`.
+//! re-stepping from the step's start to that `θ`. At the start and after every event, the
+//! phases where the loaded contacts keep fixed proportions and their slips their directions
+//! are taken in closed form first (`closed.rs`); the integration resumes after them with the
+//! step it had, or with [`FIRST_STEP`] of the shortest compression time.
 
+use super::closed;
 use super::events;
 use super::field::{eval, Eval};
 use super::record::{End, Path};
@@ -47,11 +51,23 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
     };
     let root_end = 0.25 * shortest;
     let (mut attempts, mut steps) = (0usize, 0usize);
+    // The phases in closed form from the start, then the integration: from its start, or
+    // in τ with a first step of FIRST_STEP of the shortest compression time.
+    let advanced = match closed_phases(&mut path, &mut y, &mut attempts)? {
+        Closed::Ended => return Ok(path.finish(&y, steps)),
+        Closed::Unchanged => false,
+        Closed::Advanced => true,
+    };
     let mut modes = path.modes;
-    let mut k1 = var.rhs::<N>(setup, &modes, x, &y);
-    let ev0 = eval(setup, &modes, &y);
-    let mut watch = events::watch(setup, &modes, &y, &ev0);
-    let mut g_a = events::values(setup, &modes, &watch, &y, &ev0);
+    let (mut k1, mut watch, mut g_a);
+    if advanced {
+        (var, x, h, k1, watch, g_a) = restart(setup, &modes, &y, FIRST_STEP * shortest, root_end);
+    } else {
+        k1 = var.rhs::<N>(setup, &modes, x, &y);
+        let ev0 = eval(setup, &modes, &y);
+        watch = events::watch(setup, &modes, &y, &ev0);
+        g_a = events::values(setup, &modes, &watch, &y, &ev0);
+    }
     while (0..k).any(|j| modes.active(j)) {
         attempts += 1;
         if attempts > MAX_STEPS {
@@ -145,9 +161,12 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
         } else {
             eval(setup, &modes, &y)
         };
-        path.apply(event, &mut y);
+        path.apply(&[event], &mut y);
         if settled(setup, &path.modes, &y, &eval(setup, &path.modes, &y).v) {
             path.end_settled(&y);
+            break;
+        }
+        if closed_phases(&mut path, &mut y, &mut attempts)? == Closed::Ended {
             break;
         }
         modes = path.modes;
@@ -155,6 +174,53 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
         (var, x, h, k1, watch, g_a) = restart(setup, &modes, &y, h_tau, root_end);
     }
     Ok(path.finish(&y, steps))
+}
+
+/// The first step of `τ` after phases in closed form from the impact's start, as a fraction
+/// of the shortest time a contact alone would compress in.
+const FIRST_STEP: f64 = 0.01;
+
+/// What the phases in closed form at a point did ([`closed_phases`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Closed {
+    /// None was taken.
+    Unchanged,
+    /// The path moved on; contacts still carry a force.
+    Advanced,
+    /// The impact ended.
+    Ended,
+}
+
+/// The phases in closed form from the point `y` (`closed.rs`), one after the other, each
+/// with the events at its end; `attempts` counts them with the integration's steps.
+fn closed_phases<const N: usize>(
+    path: &mut Path,
+    y: &mut [f64; N],
+    attempts: &mut usize,
+) -> Result<Closed, BreakdownReason> {
+    let setup = path.setup;
+    let mut out = Closed::Unchanged;
+    while let Some(end) = closed::phase::<N>(setup, &path.modes, y) {
+        *attempts += 1;
+        if *attempts > MAX_STEPS {
+            return Err(BreakdownReason::TooManySteps { limit: MAX_STEPS });
+        }
+        out = Closed::Advanced;
+        for (j, dir) in end.halting.iter().enumerate() {
+            if let Some(dir) = *dir {
+                path.halt_along(j, dir);
+            }
+        }
+        path.apply(&end.events[..end.n], y);
+        if settled(setup, &path.modes, y, &eval(setup, &path.modes, y).v) {
+            path.end_settled(y);
+            return Ok(Closed::Ended);
+        }
+        if !(0..setup.k).any(|j| path.modes.active(j)) {
+            return Ok(Closed::Ended);
+        }
+    }
+    Ok(out)
 }
 
 /// Going on from `y` in new regimes `modes` with a step `h` of `τ`: in `τ`, or in a

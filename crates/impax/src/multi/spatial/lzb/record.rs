@@ -171,6 +171,12 @@ impl<'a> Path<'a> {
         self.fix(j, dir, ray, sigma);
     }
 
+    /// Contact `j`'s slip along its own direction `dir`, on a straight line, halts here
+    /// (a phase in closed form, `closed.rs`): it halts along `dir`, as from the last bit.
+    pub(super) fn halt_along(&mut self, j: usize, dir: Vec2) {
+        self.fix(j, dir, Some(dir), 0.0);
+    }
+
     /// Contact `j`'s slip (now `sigma`) goes on along `dir` to its halt, reported on `ray`.
     fn fix(&mut self, j: usize, dir: Vec2, ray: Option<Vec2>, sigma: f64) {
         self.modes.tangent[j] = Tangent::Fixed {
@@ -233,23 +239,45 @@ impl<'a> Path<'a> {
 
     /// What `event` changes at the point `y` (located there), then the other contacts'
     /// changes due at the same point and the tangential regimes.
-    pub(super) fn apply(&mut self, event: Event, y: &mut [f64]) {
+    pub(super) fn apply(&mut self, events: &[Event], y: &mut [f64]) {
         let setup = self.setup;
-        let j = event.contact();
         let before = self.modes.tangent;
         let mut rest = Vec::new();
         let mut allowed = Vec::new();
         let ev = eval(setup, &self.modes, y);
+        let mut done = [false; MAXK];
+        for &event in events {
+            done[event.contact()] = true;
+            self.change(event, &ev, y, &mut rest, &mut allowed);
+        }
+        self.settle(&done, y, &mut rest, &mut allowed);
+        let ev = eval(setup, &self.modes, y);
+        self.decide(&ev.f, &ev.v, y, rest, allowed, &before);
+    }
+
+    /// What `event` changes at the point `y` (quantities `ev`): the normal regime, or the
+    /// contacts whose tangential regime is to be chosen (`rest`, restricted by `allowed`).
+    fn change(
+        &mut self,
+        event: Event,
+        ev: &Eval,
+        y: &mut [f64],
+        rest: &mut Vec<usize>,
+        allowed: &mut Vec<Allowed>,
+    ) {
+        let setup = self.setup;
+        let j = event.contact();
         match event {
             Event::CompressionEnd(_) => self.end_compression(j, y),
             Event::Separation(_) => self.separate(j, y),
             Event::Recompression(_) => self.recompress(j, y),
             Event::Join(_) => {
                 self.join(j, y);
-                self.set_slip_or_rest(j, slip(&ev.v, j), &mut rest);
-                allowed.resize(rest.len(), Allowed::ANY);
+                let before = rest.len();
+                self.set_slip_or_rest(j, slip(&ev.v, j), rest);
+                allowed.resize(allowed.len() + rest.len() - before, Allowed::ANY);
             }
-            Event::NearHalt(_) => self.near_halt(j, &ev),
+            Event::NearHalt(_) => self.near_halt(j, ev),
             Event::Halt(_) => {
                 // It sticks or leaves rest along the dynamics' ray; so do the other slips
                 // halting along fixed directions within σ_f of their own halts (a symmetric
@@ -278,12 +306,9 @@ impl<'a> Path<'a> {
                 allowed.push(Allowed::SLIP);
             }
         }
-        self.settle(j, y, &mut rest, &mut allowed);
-        let ev = eval(setup, &self.modes, y);
-        self.decide(&ev.f, &ev.v, y, rest, allowed, &before);
     }
 
-    /// The normal changes of the contacts other than `except` already due at `y` (events of
+    /// The normal changes of the contacts not `done` already due at `y` (events of
     /// several contacts at one point: a symmetric body). A compression ends here if it is
     /// within the approach round-off of its end (`v_n > −a`): a symmetric body's contacts
     /// end their compressions together, and with `e = 0` one going off first would leave
@@ -291,7 +316,7 @@ impl<'a> Path<'a> {
     /// is below the integration's tolerance.
     fn settle(
         &mut self,
-        except: usize,
+        done: &[bool; MAXK],
         y: &mut [f64],
         rest: &mut Vec<usize>,
         allowed: &mut Vec<Allowed>,
@@ -300,7 +325,7 @@ impl<'a> Path<'a> {
         for _ in 0..3 * setup.k {
             let v = eval(setup, &self.modes, y).v;
             let mut changed = false;
-            for j in (0..setup.k).filter(|&j| j != except) {
+            for j in (0..setup.k).filter(|&j| !done[j]) {
                 let (vn, s) = (v[3 * j + 2], y[PER * j + S]);
                 match self.modes.normal[j] {
                     Normal::Compression if vn > -setup.approach => self.end_compression(j, y),
