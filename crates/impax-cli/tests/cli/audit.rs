@@ -14,7 +14,8 @@ use serde_json::Value;
 struct Temp(std::path::PathBuf);
 impl Temp {
     fn new(name: &str, text: &str) -> Self {
-        let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("impax-audit-tests-{}", std::process::id()));
+        let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR"))
+            .join(format!("impax-audit-tests-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
         let p = dir.join(name);
         std::fs::write(&p, text).unwrap();
@@ -254,7 +255,8 @@ fn sweep_and_map_show_the_lcp_gain_region() {
         }
     }
     assert!(sticks > 70, "{sticks}");
-    let out = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("impax-audit-map-{}.png", std::process::id()));
+    let out = std::path::Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("impax-audit-map-{}.png", std::process::id()));
     run_ok(&[
         "map",
         &rod,

@@ -17,7 +17,8 @@ mod tempfile_path {
         pub fn new(text: &str) -> Self {
             use std::sync::atomic::{AtomicUsize, Ordering};
             static N: AtomicUsize = AtomicUsize::new(0);
-            let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("impax-cli-tests-{}", std::process::id()));
+            let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR"))
+                .join(format!("impax-cli-tests-{}", std::process::id()));
             std::fs::create_dir_all(&dir).unwrap();
             let p = dir.join(format!(
                 "commands-s{}.toml",

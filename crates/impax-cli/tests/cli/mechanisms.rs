@@ -94,7 +94,8 @@ fn mechanism_toml_and_flags_agree() {
 }
 
 fn tempfile_in_target(name: &str) -> (std::path::PathBuf, std::fs::File) {
-    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("impax-mech-{}", std::process::id()));
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("impax-mech-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join(name);
     let f = std::fs::File::create(&path).unwrap();
@@ -136,7 +137,8 @@ fn cart_pendulum_momentum_is_the_cyclic_integral() {
 
 #[test]
 fn conserved_table_and_plot() {
-    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("impax-mech-plot-{}", std::process::id()));
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("impax-mech-plot-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let png = dir.join("ring.png");
     let out = impax()

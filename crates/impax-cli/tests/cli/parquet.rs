@@ -8,7 +8,8 @@ use parquet::record::RowAccessor;
 
 #[test]
 fn parquet_rows_equal_csv_rows() {
-    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("impax-parquet-{}", std::process::id()));
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("impax-parquet-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join("sweep.parquet");
     // 201 × 201 points × 3 laws = 121 203 rows: two row groups of at least 65 536 rows.
@@ -64,7 +65,8 @@ fn parquet_rows_equal_csv_rows() {
 
 #[test]
 fn invalid_points_are_nulls() {
-    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("impax-parquet-null-{}", std::process::id()));
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("impax-parquet-null-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let scenario = dir.join("rigid.toml");
     std::fs::write(

@@ -10,7 +10,8 @@ use std::path::PathBuf;
 struct Dir(PathBuf);
 impl Dir {
     fn new(name: &str) -> Self {
-        let d = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("impax-plots-{}-{name}", std::process::id()));
+        let d = std::path::Path::new(env!("CARGO_TARGET_TMPDIR"))
+            .join(format!("impax-plots-{}-{name}", std::process::id()));
         std::fs::create_dir_all(&d).unwrap();
         Dir(d)
     }

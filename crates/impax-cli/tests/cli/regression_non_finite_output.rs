@@ -97,7 +97,8 @@ fn sweeps_and_maps_print_no_infinity() {
         "summary",
     ]);
     assert!(out.contains("energetic"));
-    let png = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("impax-nonfinite-{}.png", std::process::id()));
+    let png = std::path::Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("impax-nonfinite-{}.png", std::process::id()));
     let (code, out, err) = impax(&[
         "map",
         "--grid",

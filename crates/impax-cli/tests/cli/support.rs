@@ -68,7 +68,8 @@ pub fn f(v: &Value) -> f64 {
 /// A scratch path `name` in this test process's own directory under the system's temporary
 /// directory (created).
 pub fn scratch(name: &str) -> PathBuf {
-    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("impax-cli-tests-{}", std::process::id()));
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("impax-cli-tests-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     dir.join(name)
 }

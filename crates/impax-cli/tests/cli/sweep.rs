@@ -191,7 +191,8 @@ fn output_is_identical_for_any_thread_count() {
 
 #[test]
 fn out_file_and_summary() {
-    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("impax-sweep-{}", std::process::id()));
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("impax-sweep-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join("rows.csv");
     let args = [
@@ -242,7 +243,8 @@ fn out_file_and_summary() {
 #[test]
 fn invalid_points_are_rows_not_errors() {
     // vy = 0 at one point: no approach there.
-    let f = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("impax-sweep-rigid-{}.toml", std::process::id()));
+    let f = std::path::Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("impax-sweep-rigid-{}.toml", std::process::id()));
     std::fs::write(
         &f,
         "friction = 0.3\nrestitution = 0.5\n[body]\nshape = \"rigid\"\nmass = 1\ninertia = 0.5\ncontact = [0.2, -1.0]\nvelocity = [0.5, -1.0]\n",
