@@ -28,27 +28,8 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
     let k = setup.k;
     let mut y = [0.0; N];
     let mut path = Path::start(setup, &y);
-    // The shortest time a contact alone would compress in.
-    let mut shortest = f64::INFINITY;
-    for j in 0..k {
-        let vn = setup.v0[3 * j + 2];
-        if vn < 0.0 {
-            let wnn = setup.w[3 * j + 2][3 * j + 2];
-            shortest = shortest.min(setup.law.compression_time(setup.kappa[j], wnn, vn));
-        }
-    }
-    // The start in u = τ^(1/m) (a quarter of that time), or in τ for an integer exponent; the
-    // first step a tenth of the way.
-    let m = setup.law.m;
-    let (mut var, mut x, mut h) = if m == 1 {
-        (Var::Time, 0.0, 0.01 * shortest)
-    } else {
-        (
-            Var::Root,
-            0.0,
-            0.1 * (0.25 * shortest).powf(1.0 / f64::from(m)),
-        )
-    };
+    let (mut var, mut h, shortest) = start(setup);
+    let mut x = 0.0;
     let root_end = 0.25 * shortest;
     let (mut attempts, mut steps) = (0usize, 0usize);
     // The phases in closed form from the start, then the integration: from its start, or
@@ -174,6 +155,27 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
         (var, x, h, k1, watch, g_a) = restart(setup, &modes, &y, h_tau, root_end);
     }
     Ok(path.finish(&y, steps))
+}
+
+/// The start: the variable, its first step, and the shortest time a contact alone would
+/// compress in. In `u = τ^(1/m)` for a quarter of that time, or in `τ` for an integer
+/// exponent; the first step a tenth of the way.
+fn start(setup: &Setup) -> (Var, f64, f64) {
+    let mut shortest = f64::INFINITY;
+    for j in 0..setup.k {
+        let vn = setup.v0[3 * j + 2];
+        if vn < 0.0 {
+            let wnn = setup.w[3 * j + 2][3 * j + 2];
+            shortest = shortest.min(setup.law.compression_time(setup.kappa[j], wnn, vn));
+        }
+    }
+    let m = setup.law.m;
+    if m == 1 {
+        (Var::Time, 0.01 * shortest, shortest)
+    } else {
+        let h = 0.1 * (0.25 * shortest).powf(1.0 / f64::from(m));
+        (Var::Root, h, shortest)
+    }
 }
 
 /// The first step of `τ` after phases in closed form from the impact's start, as a fraction
