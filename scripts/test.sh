@@ -15,15 +15,15 @@ if [[ "${1:-}" == "--rust" ]]; then
     exit 0
 fi
 
-echo "== Parquet output (feature \`parquet\`)"
+echo "== Parquet output (feature \`parquet\`) (at $SECONDS s)"
 cargo test -p impax-cli --features parquet --test cli parquet::
 
-echo "== serde round trips (feature \`serde\`)"
+echo "== serde round trips (feature \`serde\`) (at $SECONDS s)"
 cargo test -p impax --features serde --test serde
 cargo test -p impax --features serde --doc -- src/lib.rs
 
 for stage in scripts/test.d/*.sh; do
     [[ -e "$stage" ]] || continue
-    echo "== stage $(basename "$stage")"
+    echo "== stage $(basename "$stage") (at $SECONDS s)"
     bash "$stage"
 done
