@@ -4,12 +4,15 @@
 # from the project's own pinned lists, into folders inside the checkout).
 #
 #   bash scripts/test.sh            # everything
-#   bash scripts/test.sh --rust     # the Rust workspace only (what `cargo test --workspace` runs)
+#   bash scripts/test.sh --rust     # the Rust workspace only (cargo test --workspace, with the
+#                                   # core's serde feature: one build for both)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-echo "== cargo test --workspace"
-cargo test --workspace
+# The core's optional `serde` feature only adds derives: testing the workspace with it on runs
+# its round trips (tests/serde.rs, the lib.rs example) in the same build, not a second one.
+echo "== cargo test --workspace --features impax/serde"
+cargo test --workspace --features impax/serde
 
 if [[ "${1:-}" == "--rust" ]]; then
     exit 0
@@ -17,10 +20,6 @@ fi
 
 echo "== Parquet output (feature \`parquet\`) (at $SECONDS s)"
 cargo test -p impax-cli --features parquet --test cli parquet::
-
-echo "== serde round trips (feature \`serde\`) (at $SECONDS s)"
-cargo test -p impax --features serde --test serde
-cargo test -p impax --features serde --doc -- src/lib.rs
 
 for stage in scripts/test.d/*.sh; do
     [[ -e "$stage" ]] || continue

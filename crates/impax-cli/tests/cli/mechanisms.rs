@@ -200,3 +200,27 @@ fn bad_mechanism_input_is_one_line_and_exit_2() {
         ".png or .svg",
     );
 }
+
+/// A mechanism file spinning at 10²⁰ rad/s: `conserved` refuses it at once, naming
+/// `duration` (the pace of its first thousand steps projects far past the budget), instead of
+/// spending the whole million-step budget (seconds) before failing.
+#[test]
+fn conserved_refuses_a_hopeless_pace_early() {
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../examples/mechanisms/cart-pendulum.toml"
+    ))
+    .unwrap();
+    let u = text.lines().find(|l| l.starts_with("u = ")).unwrap();
+    let file = crate::support::write(
+        "cart-pendulum-1e20.toml",
+        &text.replace(u, "u = [-1, 1e20]"),
+    );
+    let path = file.to_str().unwrap();
+    let line = bad(
+        &["conserved", path, "--duration", "0.1", "--json"],
+        "duration",
+    );
+    // The early verdict (after the first thousand steps), not the spent budget.
+    assert!(line.contains("at its pace so far"), "{line}");
+}

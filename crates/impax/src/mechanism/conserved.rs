@@ -19,6 +19,7 @@ use super::dynamics::{self, check_state, potential_of};
 use super::{Dual64, HyperDual64, Mechanism, Pose};
 use crate::error::{Error, Result};
 use crate::math::{SplitMix64, Vec2};
+use crate::numerics::budget::StepBudget;
 use crate::ode::{Dopri5, Tolerances};
 
 /// An infinitesimal transformation `q → q + ε ξ(q, t)` with gauge term `F(q, t)`.
@@ -472,7 +473,9 @@ impl Track {
 }
 
 /// Largest number of integrator steps (accepted and rejected) [`track`] takes over the
-/// whole motion before it gives up with [`Error::Integration`].
+/// whole motion. It gives up earlier, after a thousand steps, when the pace so far projects
+/// more than twice as many: a state spinning at 10²⁰ rad/s fails at once, not after seconds.
+/// The error names `duration`.
 pub const TRACK_MAX_STEPS: usize = 1_000_000;
 
 /// Quantities tracked along an integrated motion.
@@ -616,29 +619,57 @@ pub fn track<M: Mechanism + ?Sized>(
     times.push(0.0);
     positions.push(y[..n].to_vec());
     record(&mut tracks, &y, 0.0);
+    let budget = StepBudget {
+        max: TRACK_MAX_STEPS,
+        duration: options.duration,
+        field: "duration",
+    };
     for k in 1..=options.intervals {
-        // One budget for the whole motion, not per sample interval: a state spinning at
-        // 10⁷ rad/s would otherwise take 10⁶ steps in each of a thousand intervals.
-        ode.max_steps = TRACK_MAX_STEPS.saturating_sub(ode.accepted + ode.rejected);
+        // One budget for the whole motion, not per sample interval (a state spinning at
+        // 10⁷ rad/s would otherwise take 10⁶ steps in each of a thousand intervals), judged
+        // after every step: a pace that projects past twice the budget stops early.
+        let mut used = ode.accepted + ode.rejected;
+        ode.max_steps = budget.remaining(used);
         let (t0, t1) = (
             times[k - 1],
             options.duration * k as f64 / options.intervals as f64,
         );
-        ode.integrate(
+        let mut verdict = Ok(());
+        let result = ode.integrate(
             |_, y, dy| dynamics::state_derivative(m, y, dy),
             t0,
             &mut y,
             t1,
-            |_| None,
-        )?;
+            |step| {
+                used += 1;
+                verdict = budget.check(used, step.t1);
+                verdict.is_err().then_some(step.t1)
+            },
+        );
+        verdict?;
+        if result.is_err() && ode.accepted + ode.rejected >= budget.max {
+            budget.check(ode.accepted + ode.rejected, ode.time())?;
+        }
+        result?;
         times.push(t1);
         positions.push(y[..n].to_vec());
         record(&mut tracks, &y, t1);
     }
-    // Every value, magnitude and deviation must be a number: an angular momentum about a
-    // point ~1e308 away overflows (the field to change is the point), as may any quantity
-    // of an extreme state.
-    for tr in &tracks {
+    representable(&tracks, q0, u0)?;
+    Ok(Tracking {
+        times,
+        positions,
+        tracks,
+        cyclic,
+        steps: (ode.accepted, ode.rejected),
+    })
+}
+
+/// Every value, magnitude and deviation of the tracks must be a number: an angular momentum
+/// about a point ~1e308 away overflows (the field to change is the point), as may any
+/// quantity of an extreme state (the field named is then `q`).
+fn representable(tracks: &[Track], q0: &[f64], u0: &[f64]) -> Result<()> {
+    for tr in tracks {
         let bad = tr.values.iter().any(|v| !v.is_finite())
             || !tr.magnitude.is_finite()
             || !tr.largest_deviation().is_finite();
@@ -657,13 +688,7 @@ pub fn track<M: Mechanism + ?Sized>(
             });
         }
     }
-    Ok(Tracking {
-        times,
-        positions,
-        tracks,
-        cyclic,
-        steps: (ode.accepted, ode.rejected),
-    })
+    Ok(())
 }
 
 /// Uniform in `[−1, 1)` from the sampled checks' generator.
