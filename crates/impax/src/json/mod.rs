@@ -65,14 +65,7 @@ pub fn outcome_fields(o: &Outcome, velocity_key: &str) -> Map<String, Value> {
         "compression_impulse".into(),
         o.compression_impulse.map_or(Value::Null, num),
     );
-    m.insert(
-        "work".into(),
-        json!({
-            "compression": num(o.work.compression),
-            "restitution": num(o.work.restitution),
-            "friction": num(o.work.friction),
-        }),
-    );
+    m.insert("work".into(), work_split(&o.work));
     m.insert("energy_change".into(), num(o.energy_change));
     m.insert(
         "phases".into(),
@@ -173,7 +166,8 @@ fn multi_phases(list: &[ContactPhase]) -> Value {
     )
 }
 
-fn multi_work(w: &WorkSplit) -> Value {
+/// A work split as JSON: `{compression, restitution, friction}`.
+fn work_split(w: &WorkSplit) -> Value {
     json!({
         "compression": num(w.compression),
         "restitution": num(w.restitution),
@@ -235,7 +229,7 @@ fn contact_of(impulse: Value, velocity_after: Value, phases: Value, work: &WorkS
         "impulse": impulse,
         "velocity_after": velocity_after,
         "phases": phases,
-        "work": multi_work(work),
+        "work": work_split(work),
     })
 }
 
@@ -329,14 +323,7 @@ pub fn spatial_outcome_fields(o: &spatial::Outcome) -> Map<String, Value> {
         "compression_impulse".into(),
         o.compression_impulse.map_or(Value::Null, num),
     );
-    m.insert(
-        "work".into(),
-        json!({
-            "compression": num(o.work.compression),
-            "restitution": num(o.work.restitution),
-            "friction": num(o.work.friction),
-        }),
-    );
+    m.insert("work".into(), work_split(&o.work));
     m.insert("energy_change".into(), num(o.energy_change));
     let phases: Vec<Value> = o
         .phases
