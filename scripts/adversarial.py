@@ -28,7 +28,9 @@ import socket
 import subprocess
 import sys
 import tempfile
+import threading
 import time
+from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -62,9 +64,11 @@ class Run:
         self.binary = binary
         self.tried = 0
         self.failures: list[str] = []
+        self.lock = threading.Lock()
 
     def call(self, args: list[str], timeout: float = 60.0):
-        self.tried += 1
+        with self.lock:
+            self.tried += 1
         try:
             p = subprocess.run([self.binary, *args], capture_output=True, timeout=timeout)
         except subprocess.TimeoutExpired:
@@ -73,7 +77,8 @@ class Run:
         return p
 
     def fail(self, args, why: str):
-        self.failures.append(f"impax {' '.join(args)}: {why}")
+        with self.lock:
+            self.failures.append(f"impax {' '.join(args)}: {why}")
 
     def contract(self, args: list[str], timeout: float = 60.0):
         p = self.call(args, timeout)
@@ -190,6 +195,8 @@ def bad_values(n: int, rng: random.Random):
 
 
 def flags(run: Run, rng: random.Random):
+    # The invocations are drawn first (the same for a seed), then run on every core.
+    cases = []
     for base, flag, n in FLAGS:
         for value in bad_values(n, rng):
             if flag.endswith("=") or flag.endswith(":"):
@@ -204,7 +211,9 @@ def flags(run: Run, rng: random.Random):
             if "--json" not in args and args[0] in ("compare", "resolve", "conserved", "simulate",
                                                     "audit"):
                 args.append("--json")
-            run.contract(args)
+            cases.append(args)
+    with ThreadPoolExecutor(max_workers=os.cpu_count() or 2) as pool:
+        list(pool.map(run.contract, cases))
 
 
 def reproducers(run: Run):

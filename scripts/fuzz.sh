@@ -5,12 +5,13 @@
 # target checks the command line's contract (exit 0 or 2; one error line; no non-finite or
 # null number where a number is documented; energetic never gains energy).
 #
-#   bash scripts/fuzz.sh            # 15 s per target (what .ci/run runs: about a minute)
+#   bash scripts/fuzz.sh            # 15 s per target (.ci/run runs 10 s: under a minute)
 #   bash scripts/fuzz.sh 600        # 10 min per target
 #   bash scripts/fuzz.sh 60 numbers # one target
 #
-# cargo-fuzz (pinned) is installed into .tools/ on first use; libFuzzer builds need nightly
-# flags, which stable Rust accepts with RUSTC_BOOTSTRAP=1. The seed corpus (fuzz/corpus/, from
+# cargo-fuzz (pinned) is installed into .tools/ on first use (a debug build: it only drives
+# cargo); libFuzzer builds need nightly flags, which stable Rust accepts with
+# RUSTC_BOOTSTRAP=1. The seed corpus (fuzz/corpus/, from
 # the documented examples) is read only; what the fuzzer finds goes to fuzz/work/, and a
 # failing input to fuzz/artifacts/<target>/ (reproduce: cargo fuzz run -s none TARGET FILE).
 set -euo pipefail
@@ -24,7 +25,7 @@ version=0.13.2
 tools="$PWD/.tools"
 if ! "$tools/bin/cargo-fuzz" --version 2>/dev/null | grep -q " $version"; then
     echo "== installing cargo-fuzz $version into .tools/"
-    cargo install cargo-fuzz --version "$version" --locked --root "$tools" --quiet
+    cargo install cargo-fuzz --version "$version" --locked --root "$tools" --quiet --debug
 fi
 export PATH="$tools/bin:$PATH" RUSTC_BOOTSTRAP=1
 echo "== building the fuzz targets"

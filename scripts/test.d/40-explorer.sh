@@ -26,7 +26,7 @@ if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
     apt_install nodejs npm
 fi
 
-echo "-- the WebAssembly module (scripts/build-explorer.sh)"
+echo "-- the WebAssembly module (scripts/build-explorer.sh) (stage at $SECONDS s)"
 committed=$(mktemp)
 trap 'rm -f "$committed"' EXIT
 cp web/impax_wasm.wasm "$committed"
@@ -36,12 +36,13 @@ if ! cmp -s "$committed" web/impax_wasm.wasm; then
     echo "        the test uses the fresh one (run bash scripts/build-explorer.sh and commit it)"
 fi
 
-echo "-- impax, embedding the fresh module"
+echo "-- impax, embedding the fresh module (stage at $SECONDS s)"
 cargo build -p impax-cli --locked
 bin="${CARGO_TARGET_DIR:-target}/debug/impax"
 
-echo "-- playwright-core (npm ci in web/test)"
+echo "-- playwright-core (npm ci in web/test) (stage at $SECONDS s)"
 (cd web/test && npm ci --no-audit --no-fund --loglevel=error)
 
-echo "-- the page in chromium"
+echo "-- the page in chromium (stage at $SECONDS s)"
 IMPAX_BIN="$bin" CHROMIUM=/usr/bin/chromium node --test web/test/e2e.test.mjs
+echo "-- the explorer passed (stage at $SECONDS s)"
