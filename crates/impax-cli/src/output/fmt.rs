@@ -16,6 +16,18 @@ pub fn signed(x: f64, decimals: usize) -> String {
     }
 }
 
+/// Fixed-point without a sign for quantities of one kind such as the energies of a run, in the
+/// style their largest, `scale`, needs: scientific (`2.000000e200`, `1.234560e-30`) when
+/// `scale` is outside `[1e-4, 1e9)`, where fixed point would print hundreds of digits or only
+/// zeros; fixed point otherwise (a round-off `3e-16` beside `7.36` shows as `0.000000`).
+pub fn magnitude(x: f64, scale: f64, decimals: usize) -> String {
+    if scale.is_finite() && scale != 0.0 && !(1e-4..1e9).contains(&scale.abs()) {
+        format!("{:.*e}", decimals, x)
+    } else {
+        format!("{:.*}", decimals, x)
+    }
+}
+
 // An input number as given (shortest round trip), in scientific form outside `[1e-6, 1e9)`
 // so that `1e200` is not printed with two hundred digits: the library's `impax::error::Num`,
 // which its error messages use too.

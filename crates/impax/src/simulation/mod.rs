@@ -70,6 +70,11 @@ mod run;
 pub mod scenarios;
 
 pub use closed::{Regime, FORCE_ROUND_OFF, MAX_CLOSED};
+
+/// The integrator steps (accepted and rejected) a whole run may take. After its first
+/// thousand steps a run whose pace projects more than twice as many (a mechanism spinning at
+/// 10⁷ rad/s) is refused at once, naming `until` — not after the whole budget.
+pub const SIMULATION_MAX_STEPS: usize = 1_000_000;
 pub use options::SimulationOptions;
 pub use record::{EventKind, ImpactRecord, Ledger, Mode, Run, Sample, StopReason};
 pub use run::simulate;

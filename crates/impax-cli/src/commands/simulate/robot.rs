@@ -6,7 +6,7 @@
 use super::{csv, robot_json, scenario::run_options};
 use crate::cli::{MechanismFlags, SimulateArgs};
 use crate::input::{CliError, CliResult};
-use crate::output::fmt::{signed, Table};
+use crate::output::fmt::{magnitude, signed, Table};
 use crate::sources::robot;
 use crate::sources::File;
 use impax::multibody::simulate::{simulate, Persistence, Run, StopReason};
@@ -240,10 +240,10 @@ fn table(r: &RobotRun) -> String {
     }
     let l = &run.ledger;
     text.push_str(&format!(
-        "energy T + V: {:.6} at the start, {:.6} at the end; ledger: the impacts' ΔT {:+.6}, the integration's drift {:+.1e}, residual {:.1e}\nstop at t = {:.6}: {} ({})\n",
-        l.initial,
-        l.end,
-        l.impacts,
+        "energy T + V: {} at the start, {} at the end; ledger: the impacts' ΔT {}, the integration's drift {:+.1e}, residual {:.1e}\nstop at t = {:.6}: {} ({})\n",
+        magnitude(l.initial, l.initial.abs().max(l.end.abs()), 6),
+        magnitude(l.end, l.initial.abs().max(l.end.abs()), 6),
+        signed(l.impacts, 6),
         l.drift,
         l.residual(),
         run.end_time,

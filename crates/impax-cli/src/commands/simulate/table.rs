@@ -2,7 +2,7 @@
 //! the stop in words.
 
 use super::Case;
-use crate::output::fmt::{signed, Table};
+use crate::output::fmt::{magnitude, signed, Table};
 use impax::mechanism::Mechanism;
 use impax::simulation::{EventKind, ImpactRecord, Run, StopReason};
 
@@ -157,7 +157,9 @@ pub(super) fn table(case: &Case, run: &Run) -> String {
     let e0 = run.samples.first().map_or(0.0, |s| s.kinetic + s.potential);
     let e1 = run.samples.last().map_or(0.0, |s| s.kinetic + s.potential);
     text.push_str(&format!(
-        "energy T + V: {e0:.6} at the start, {e1:.6} at the end\nstop at t = {:.6}: {} ({})\n",
+        "energy T + V: {} at the start, {} at the end\nstop at t = {:.6}: {} ({})\n",
+        magnitude(e0, e0.abs().max(e1.abs()), 6),
+        magnitude(e1, e0.abs().max(e1.abs()), 6),
         run.end_time,
         run.stop.id(),
         stop_text(&run.stop, case)

@@ -41,13 +41,32 @@ fn energy<M: Mechanism + ?Sized>(m: &M, y: &[f64]) -> f64 {
     dynamics::kinetic_energy(m, &y[..n], &y[n..2 * n]) + dynamics::potential_energy(m, &y[..n])
 }
 
-/// The right-hand side of the motion with the closed contacts `closed`.
+/// `|T₀| + |V₀|` rounded to a power of two (1 if it is zero or not finite).
+fn energy_scale<M: Mechanism + ?Sized>(m: &M, q0: &[f64], u0: &[f64]) -> f64 {
+    let e = dynamics::kinetic_energy(m, q0, u0).abs() + dynamics::potential_energy(m, q0).abs();
+    if e.is_finite() && e > 0.0 {
+        2f64.powi(e.log2().round() as i32)
+    } else {
+        1.0
+    }
+}
+
+/// The right-hand side of the motion with the closed contacts `closed`, the contact forces'
+/// work integrated in units of `wscale` (the run's energy scale, a power of two: the work is
+/// then judged by the integrator's tolerances relative to the energy of the motion, whatever
+/// the units of mass).
 fn rhs<'a, M: Mechanism + ?Sized>(
     m: &'a M,
     closed: Vec<Closed>,
     mu: f64,
+    wscale: f64,
 ) -> impl FnMut(f64, &[f64], &mut [f64]) + 'a {
-    move |_t, y, dy| closed::derivative(m, &closed, mu, y, dy)
+    move |_t, y, dy| {
+        closed::derivative(m, &closed, mu, y, dy);
+        if let Some(w) = dy.last_mut() {
+            *w /= wscale;
+        }
+    }
 }
 
 /// Where the run is.
@@ -68,6 +87,9 @@ struct Sim<'a, M: Mechanism + ?Sized> {
     ode: Dopri5,
     /// The largest contact speed of the run (and `√(g L)`, `L` the largest lever).
     vscale: f64,
+    /// The energy scale `|T₀| + |V₀|` as a power of two (1 if zero): the unit of the
+    /// integrated work of the contact forces (`y[2n]`).
+    wscale: f64,
     /// Events at the current instant (a guard against endless switching).
     stall: (f64, usize),
     /// The end time and energy of a round body's closed form that ended the run.
@@ -164,6 +186,7 @@ pub fn simulate<M: Mechanism + ?Sized>(
         y,
         ode: Dopri5::new(2 * n + 1, options.tolerances)?,
         vscale,
+        wscale: energy_scale(m, q0, u0),
         stall: (0.0, 0),
         rolled: None,
     };
@@ -237,7 +260,7 @@ impl<M: Mechanism + ?Sized> Sim<'_, M> {
 
     /// (Re)start the integrator at the current state, the first step within `span`.
     fn start(&mut self, span: f64) -> Result<()> {
-        let mut f = rhs(self.m, self.closed.clone(), self.opt.friction);
+        let mut f = rhs(self.m, self.closed.clone(), self.opt.friction, self.wscale);
         let span = span.min(self.opt.until - self.t).max(f64::MIN_POSITIVE);
         self.ode.start(&mut f, self.t, &self.y, span)
     }
@@ -287,7 +310,7 @@ impl<M: Mechanism + ?Sized> Sim<'_, M> {
     /// The end of a run.
     fn finish(mut self, stop: StopReason, end_time: f64, end_energy: f64) -> Run {
         self.ledger.end = end_energy;
-        self.ledger.contact_work += self.y[2 * self.n];
+        self.ledger.contact_work += self.y[2 * self.n] * self.wscale;
         Run {
             samples: self.rec.samples,
             impacts: self.impacts,

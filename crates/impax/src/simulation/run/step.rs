@@ -7,10 +7,11 @@ use super::{rhs, touching, Advance, Cause, Sim, PARTS, STALL};
 use crate::error::{Error, Result};
 use crate::mechanism::dynamics;
 use crate::mechanism::Mechanism;
+use crate::numerics::budget::StepBudget;
 use crate::simulation::closed::{self, Closed, Hint, Regime, FORCE_ROUND_OFF};
 use crate::simulation::events::{gap_of, locate, watched, watched_value, Watched};
 use crate::simulation::record::Mode;
-use crate::simulation::StopReason;
+use crate::simulation::{StopReason, SIMULATION_MAX_STEPS};
 
 /// A sliding contact whose force coefficient is within this fraction of its terms when the
 /// integration cannot go on is jammed at the Painlevé bound ([`Sim::jam`]).
@@ -50,7 +51,7 @@ impl<M: Mechanism + ?Sized> Sim<'_, M> {
     /// One step of the motion, with its events.
     pub(super) fn advance(&mut self) -> Result<Advance> {
         let closed = self.closed.clone();
-        let mut f = rhs(self.m, closed.clone(), self.opt.friction);
+        let mut f = rhs(self.m, closed.clone(), self.opt.friction, self.wscale);
         let dense = match self.step(&mut f) {
             Ok(dense) => dense,
             Err(error @ Error::Integration { .. }) => {
@@ -101,7 +102,23 @@ impl<M: Mechanism + ?Sized> Sim<'_, M> {
     fn step(&mut self, f: &mut impl FnMut(f64, &[f64], &mut [f64])) -> Result<Dense> {
         let n = self.n;
         let until = self.opt.until;
-        let step = self.ode.advance(f, until)?;
+        // One budget for the whole run, judged before every step (as in 3D).
+        let budget = StepBudget {
+            max: SIMULATION_MAX_STEPS,
+            duration: until,
+            field: "until",
+        };
+        let used = self.ode.accepted + self.ode.rejected;
+        budget.check(used, self.t)?;
+        self.ode.max_steps = self.ode.steps_since_start() + budget.remaining(used);
+        let step = match self.ode.advance(f, until) {
+            Ok(step) => step,
+            Err(e) => {
+                let used = self.ode.accepted + self.ode.rejected;
+                budget.check(used, self.ode.time())?;
+                return Err(e);
+            }
+        };
         let (t0, t1) = (step.t0, step.t1);
         let ystart = step.y0.to_vec();
         let y1 = step.y1.to_vec();
