@@ -19,12 +19,17 @@ pub fn signed(x: f64, decimals: usize) -> String {
 /// Fixed-point without a sign for quantities of one kind such as the energies of a run, in the
 /// style their largest, `scale`, needs: scientific (`2.000000e200`, `1.234560e-30`) when
 /// `scale` is outside `[1e-4, 1e9)`, where fixed point would print hundreds of digits or only
-/// zeros; fixed point otherwise (a round-off `3e-16` beside `7.36` shows as `0.000000`).
+/// zeros; fixed point otherwise (a round-off `±3e-16` beside `7.36` shows as `0.000000`).
 pub fn magnitude(x: f64, scale: f64, decimals: usize) -> String {
     if scale.is_finite() && scale != 0.0 && !(1e-4..1e9).contains(&scale.abs()) {
         format!("{:.*e}", decimals, x)
     } else {
-        format!("{:.*}", decimals, x)
+        // (A round-off below zero shows as 0, not −0.)
+        let s = format!("{:.*}", decimals, x);
+        match s.strip_prefix('-') {
+            Some(rest) if rest.bytes().all(|b| b == b'0' || b == b'.') => rest.to_string(),
+            _ => s,
+        }
     }
 }
 

@@ -192,24 +192,32 @@ pub fn velocity_products<M: Mechanism + ?Sized>(m: &M, q: &[f64], u: &[f64]) -> 
 
 /// The mass matrix's Cholesky factor, or an error naming the state when `M` is singular
 /// (a coordinate that moves no mass).
+///
+/// Near-singular factors are refused coordinate by coordinate: the pivot `L_ii²` (what
+/// coordinate `i` moves beyond the coordinates before it) below `1e-13` of its own diagonal
+/// entry `M_ii`, or `M_ii` itself below `1e-26` of the largest diagonal entry (a rate that
+/// moves only round-off). The first test does not depend on the coordinates' units (a rod of
+/// 1 µm has `M_θθ = m l²/12 ≈ 1e-13 m`, which a test against the largest entry refused); the
+/// second accepts levers down to `1e-13` of the unit of length.
 pub(crate) fn cholesky(mass: DMatrix<f64>) -> Result<nalgebra::Cholesky<f64, nalgebra::Dyn>> {
-    let norm = mass.amax();
+    let diag: Vec<f64> = mass.diagonal().iter().copied().collect();
+    let scale = diag.iter().copied().fold(0.0, f64::max);
     let chol = mass.cholesky().ok_or_else(|| Error::NotPositiveDefinite {
         field: "mass matrix".into(),
         reason: "a generalized coordinate moves no mass at this configuration".into(),
     })?;
-    // Reject near-singular factors (a pivot far below the matrix's scale).
     let l = chol.l_dirty();
-    let min_pivot = (0..l.nrows())
-        .map(|i| l[(i, i)] * l[(i, i)])
-        .fold(f64::INFINITY, f64::min);
-    if min_pivot.is_nan() || min_pivot <= 1e-13 * norm {
-        return Err(Error::NotPositiveDefinite {
-            field: "mass matrix".into(),
-            reason: format!(
-                "singular at this configuration (smallest pivot {min_pivot:e}, scale {norm:e})"
-            ),
-        });
+    for (i, &d) in diag.iter().enumerate() {
+        let pivot = l[(i, i)] * l[(i, i)];
+        if pivot.is_nan() || pivot <= 1e-13 * d || d <= 1e-26 * scale {
+            return Err(Error::NotPositiveDefinite {
+                field: "mass matrix".into(),
+                reason: format!(
+                    "singular at this configuration (coordinate {}: pivot {pivot:e}, its diagonal entry {d:e}, the largest {scale:e})",
+                    i + 1
+                ),
+            });
+        }
     }
     Ok(chol)
 }

@@ -12,6 +12,11 @@
 //! (8 s) before failing with the same message; the run's steps now have the budget the 3D run
 //! has, with its early verdict naming `until`.
 //!
+//! A rod of 1 µm (`impax simulate rod-drop --length 1e-6 --height 5e-7`) was refused: "mass
+//! matrix: must be positive definite, but singular" — its `M_θθ = m l²/12 ≈ 8e-14 m` was
+//! judged against the largest diagonal entry, `m`, in other units. A pivot is now judged
+//! against its own coordinate's diagonal entry.
+//!
 //! Expected: the motion of a mechanism does not depend on the unit of mass — the same
 //! positions at every sample, the same impacts at the same times, the energies and the
 //! ledger scaled by the factor — from 1e-30 to 1e60; a run that cannot finish is refused
@@ -19,7 +24,7 @@
 
 use impax::law::LawId;
 use impax::mechanism::builtin::CartPendulum;
-use impax::simulation::scenarios::rocking_block;
+use impax::simulation::scenarios::{rocking_block, rod_drop};
 use impax::simulation::{simulate, SimulationOptions};
 
 #[test]
@@ -68,4 +73,27 @@ fn a_run_that_cannot_finish_is_refused_early_naming_until() {
     assert_eq!(err.field(), "until", "{err}");
     // The early verdict (a projection from the first thousand steps), not the spent budget.
     assert!(err.to_string().contains("at its pace so far"), "{err}");
+}
+
+#[test]
+fn a_rod_of_a_micrometre_falls_as_one_of_a_metre_in_its_own_time() {
+    // Lengths × s: times × √s, energies × s (g and m fixed).
+    let s = 1e-6;
+    let run_of = |l: f64, until: f64| {
+        let init = rod_drop(1.0, l, f64::to_radians(30.0), 0.5 * l, 9.81).unwrap();
+        let opts = SimulationOptions::new(LawId::Energetic, 0.5, 0.0, until);
+        simulate(&init.mechanism, &init.q, &init.u, &opts).unwrap()
+    };
+    let (big, small) = (run_of(1.0, 3.0), run_of(s, 3.0 * s.sqrt()));
+    assert_eq!(small.stop.id(), "rest");
+    assert_eq!(big.stop.id(), small.stop.id());
+    assert_eq!(big.impacts.len(), small.impacts.len());
+    for (a, b) in big.impacts.iter().zip(&small.impacts) {
+        assert!(
+            (a.time * s.sqrt() - b.time).abs() < 1e-9 * s.sqrt(),
+            "{a:?} vs {b:?}"
+        );
+    }
+    assert!((big.end_time * s.sqrt() - small.end_time).abs() < 1e-9 * s.sqrt());
+    assert!((big.ledger.initial * s - small.ledger.initial).abs() < 1e-12 * s);
 }
