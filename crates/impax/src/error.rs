@@ -227,6 +227,25 @@ pub(crate) fn finite(field: &str, value: f64) -> Result<f64> {
     }
 }
 
+/// Check that the kinetic energy `½ uᵀMu = energy` of generalized velocities whose largest
+/// magnitude is `u_max` is representable with room to spare — below `1e300`, and above
+/// `1e-290` unless the velocities are all zero — so that `ΔT`, `T⁺` and `T⁺/T⁻` are numbers;
+/// an error naming `u` otherwise.
+pub(crate) fn kinetic_energy(energy: f64, u_max: f64) -> Result<()> {
+    let within = energy.is_finite() && energy <= 1e300 && (u_max == 0.0 || energy >= 1e-290);
+    if within {
+        return Ok(());
+    }
+    Err(Error::OutOfRange {
+        field: "u".into(),
+        value: u_max,
+        reason: format!(
+            "the kinetic energy ½ uᵀMu = {} is not representable with room to spare (it must be between 1e-290 and 1e300)",
+            Num(energy)
+        ),
+    })
+}
+
 /// Check the coefficients shared by every contact problem: `μ ≥ 0`, `0 ≤ e ≤ 1`.
 pub(crate) fn coefficients(friction: f64, restitution: f64) -> Result<()> {
     if friction < 0.0 {

@@ -73,16 +73,7 @@ impl<'a, M: Mechanism + ?Sized> MechanismImpact<'a, M> {
         let w = Mat2::new(w_dyn[(0, 0)], wtn, wtn, w_dyn[(1, 1)]);
         let u = DVector::from_column_slice(u);
         let energy = 0.5 * u.dot(&(&mass * &u));
-        if !(energy.is_finite() && energy <= 1e300) {
-            return Err(Error::OutOfRange {
-                field: "u".into(),
-                value: u.amax(),
-                reason: format!(
-                    "the kinetic energy ½ uᵀMu = {} is not representable with room to spare (it must be below 1e300)",
-                    crate::error::Num(energy)
-                ),
-            });
-        }
+        crate::error::kinetic_energy(energy, u.amax())?;
         let vd = &jacobian * &u;
         Ok(MechanismImpact {
             mechanism,

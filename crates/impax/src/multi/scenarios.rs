@@ -18,7 +18,7 @@
 //! | `box-flat` | a box lying flat (3D), landing and spinning about the vertical | its four lower corners on the floor | level at `e |v_z|`; `lcp`: `ω_z⁺ = max(ω_z⁻ − μ m (1 + e) |v_z| ρ / I_z, 0)`, `ρ = √(a² + b²)` |
 
 use super::MultiImpact;
-use crate::error::{Error, Result};
+use crate::error::{Error, Num, Result};
 use crate::mechanism::builtin::positive;
 use nalgebra::DMatrix;
 
@@ -304,7 +304,10 @@ impl Cradle {
         Ok(MultiScenario {
             name: "cradle",
             description: format!(
-                "Newton's cradle: {n} balls in a row touching, the first at v0 = {v0} (m = {m}, r = {r})"
+                "Newton's cradle: {n} balls in a row touching, the first at v0 = {} (m = {}, r = {})",
+                Num(v0),
+                Num(m),
+                Num(r)
             ),
             impact,
             friction: 0.0,
@@ -375,7 +378,11 @@ impl BallBallWall {
         Ok(MultiScenario {
             name: "ball-ball-wall",
             description: format!(
-                "ball 1 against a wall struck by ball 2 at v0 = {v0}, centres at {a}° from the wall's normal (m = {m}, r = {r})"
+                "ball 1 against a wall struck by ball 2 at v0 = {}, centres at {}° from the wall's normal (m = {}, r = {})",
+                Num(v0),
+                Num(a),
+                Num(m),
+                Num(r)
             ),
             impact,
             friction: 0.0,

@@ -21,7 +21,7 @@
 //! on the choice; nor does `u⁺` itself, since `Jᵀ z = 0` whenever `W z = 0`).
 
 use super::{spatial, MultiProblem, MultiResolution};
-use crate::error::{Error, Num, Result};
+use crate::error::{Error, Result};
 use crate::law::{self, LawId, Options};
 use crate::mechanism::{dynamics, Mechanism};
 use nalgebra::{Cholesky, DMatrix, DVector, Dyn, SVector};
@@ -161,16 +161,7 @@ impl MultiImpact {
             .ok_or_else(|| bad("mass", "must be positive definite".into()))?;
         let u = DVector::from_column_slice(u);
         let energy = 0.5 * u.dot(&(&mass * &u));
-        if !(energy.is_finite() && energy <= 1e300) {
-            return Err(Error::OutOfRange {
-                field: "u".into(),
-                value: u.amax(),
-                reason: format!(
-                    "the kinetic energy ½ uᵀMu = {} is not representable with room to spare (it must be below 1e300)",
-                    Num(energy)
-                ),
-            });
-        }
+        crate::error::kinetic_energy(energy, u.amax())?;
         Ok(Self {
             dim,
             coordinates,

@@ -8,7 +8,7 @@ use super::jacobian::{check_contact_index, contact_space, ContactSpace};
 use super::kinematics::gap;
 use super::model::Model;
 use super::workspace::Workspace;
-use crate::error::{Error, Num, Result};
+use crate::error::Result;
 use crate::law::LawId;
 use crate::math::{Mat3, Vec3};
 use crate::spatial::{ContactProblem, Resolution};
@@ -84,16 +84,7 @@ impl<'a> SpatialMechanismImpact<'a> {
         workspace.update(model, q)?;
         let space = contact_space(model, &mut workspace, contact, u)?;
         let energy = 0.5 * quadratic(&workspace.mass, u, u);
-        if !(energy.is_finite() && energy <= 1e300) {
-            return Err(Error::OutOfRange {
-                field: "u".into(),
-                value: u.iter().fold(0.0, |m, x| m.max(x.abs())),
-                reason: format!(
-                    "the kinetic energy ½ uᵀMu = {} is not representable with room to spare (it must be below 1e300)",
-                    Num(energy)
-                ),
-            });
-        }
+        crate::error::kinetic_energy(energy, u.iter().fold(0.0, |m, x| m.max(x.abs())))?;
         Ok(SpatialMechanismImpact {
             model,
             contact,

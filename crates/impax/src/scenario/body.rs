@@ -387,7 +387,12 @@ impl BodySpec {
                     length: r,
                     normalised: true,
                 },
-                description: format!("{desc}, v0 = {v0}, α = {}, γ = {gamma}", unit.show(alpha)),
+                description: format!(
+                    "{desc}, v0 = {}, α = {}, γ = {}",
+                    Num(v0),
+                    unit.show(alpha),
+                    Num(gamma)
+                ),
             }
         } else {
             let [vx, vy] = self.velocity.unwrap_or([0.0, 0.0]);

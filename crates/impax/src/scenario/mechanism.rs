@@ -306,8 +306,8 @@ impl MechanismSpec {
                 dp.put_floor_at_tip([q[0], q[1]]);
                 Ok(BuiltMechanism {
                     description: format!(
-                        "double pendulum (m = {}, {}; l = {}, {}; g = {g}): θ1 = {}, θ2 = {}, rates ({}, {}) rad/s; the tip of rod 2 strikes the floor",
-                        m[0], m[1], l[0], l[1], show(a[0]), show(a[1]), u[0], u[1]
+                        "double pendulum (m = {}, {}; l = {}, {}; g = {}): θ1 = {}, θ2 = {}, rates ({}, {}) rad/s; the tip of rod 2 strikes the floor",
+                        Num(m[0]), Num(m[1]), Num(l[0]), Num(l[1]), Num(g), show(a[0]), show(a[1]), Num(u[0]), Num(u[1])
                     ),
                     mechanism: BuiltIn::DoublePendulum(dp),
                     q,

@@ -97,3 +97,25 @@ fn a_rod_of_a_micrometre_falls_as_one_of_a_metre_in_its_own_time() {
     assert!((big.end_time * s.sqrt() - small.end_time).abs() < 1e-9 * s.sqrt());
     assert!((big.ledger.initial * s - small.ledger.initial).abs() < 1e-12 * s);
 }
+
+/// Found beside the above: `impax compare ball-ball-wall --v0 1e-200` printed `T+/T-` as
+/// `NaN` (and JSON `null`) for every law, the kinetic energy `5e-401` underflowing to 0; the
+/// header printed `v0` with two hundred digits. Velocities whose kinetic energy is below
+/// `1e-290` are now refused naming `u`, as those above `1e300` were; `1e-120` works.
+#[test]
+fn a_kinetic_energy_below_representable_is_refused_naming_u() {
+    use impax::multi::scenarios::BallBallWall;
+    let tiny = BallBallWall {
+        v0: 1e-200,
+        ..BallBallWall::default()
+    };
+    let err = tiny.build().unwrap_err();
+    assert_eq!(err.field(), "u", "{err}");
+    let small = BallBallWall {
+        v0: 1e-120,
+        ..BallBallWall::default()
+    }
+    .build()
+    .unwrap();
+    assert!(small.description.contains("v0 = 1e-120"), "{}", small.description);
+}

@@ -181,8 +181,14 @@ fn bouncing_ball(spec: &SimSpec, g: f64) -> CliResult<Built> {
         init,
         vec![Shape::Ball(r)],
         format!(
-            "bouncing {} (m = {m}, r = {r}) from {h} above the floor, v0 = {v0} at α = {a}° from the vertical, spin ratio γ = {gamma}",
-            if disc { "disc" } else { "ball" }
+            "bouncing {} (m = {}, r = {}) from {} above the floor, v0 = {} at α = {}° from the vertical, spin ratio γ = {}",
+            if disc { "disc" } else { "ball" },
+            Plain(m),
+            Plain(r),
+            Plain(h),
+            Plain(v0),
+            Plain(a),
+            Plain(gamma)
         ),
     ))
 }
@@ -231,8 +237,11 @@ fn cradle(spec: &SimSpec) -> CliResult<Built> {
         init,
         vec![Shape::Ball(r); n],
         format!(
-            "Newton's cradle: {n} balls (m = {m}, r = {r}) {} on a frictionless table, the first at v0 = {v0}",
-            if gap == 0.0 { "touching in a row".to_string() } else { format!("in a row {gap} apart") }
+            "Newton's cradle: {n} balls (m = {}, r = {}) {} on a frictionless table, the first at v0 = {}",
+            Plain(m),
+            Plain(r),
+            if gap == 0.0 { "touching in a row".to_string() } else { format!("in a row {} apart", Plain(gap)) },
+            Plain(v0)
         ),
     ))
 }
@@ -261,8 +270,8 @@ fn double_pendulum_drop(spec: &SimSpec, g: f64) -> CliResult<Built> {
         init,
         vec![Shape::Pendulum(l[0]), Shape::Pendulum(l[1])],
         format!(
-            "double pendulum (m = {}, {}; l = {}, {}) released at θ = ({}°, {}°), rates ({}, {}) rad/s, floor y = {floor}",
-            m[0], m[1], l[0], l[1], a[0], a[1], u[0], u[1]
+            "double pendulum (m = {}, {}; l = {}, {}) released at θ = ({}°, {}°), rates ({}, {}) rad/s, floor y = {}",
+            Plain(m[0]), Plain(m[1]), Plain(l[0]), Plain(l[1]), Plain(a[0]), Plain(a[1]), Plain(u[0]), Plain(u[1]), Plain(floor)
         ),
     ))
 }
