@@ -117,5 +117,9 @@ fn a_kinetic_energy_below_representable_is_refused_naming_u() {
     }
     .build()
     .unwrap();
-    assert!(small.description.contains("v0 = 1e-120"), "{}", small.description);
+    assert!(
+        small.description.contains("v0 = 1e-120"),
+        "{}",
+        small.description
+    );
 }
