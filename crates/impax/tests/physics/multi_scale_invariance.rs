@@ -28,70 +28,49 @@ struct Numbers {
     labels: String,
 }
 
-fn planar_numbers(law: LawId, p: &Planar) -> Result<Numbers, String> {
-    match law.resolve(p).expect("a multi-contact law") {
-        Ok(o) => Ok(Numbers {
-            impulse: o
-                .contacts
-                .iter()
-                .flat_map(|c| c.impulse.iter().copied())
-                .collect(),
-            velocity: o
-                .contacts
-                .iter()
-                .flat_map(|c| c.velocity_after.iter().copied())
-                .collect(),
-            work: std::iter::once(o.energy_change)
-                .chain(
-                    o.contacts
+/// The [`Numbers`] of a multi-contact resolution, planar or spatial (the two outcomes have the
+/// same fields, with 2- or 3-vectors).
+macro_rules! numbers {
+    ($resolution:expr) => {
+        match $resolution.expect("a multi-contact law") {
+            Ok(o) => {
+                Ok(Numbers {
+                    impulse: o
+                        .contacts
                         .iter()
-                        .flat_map(|c| [c.work.compression, c.work.restitution, c.work.friction]),
-                )
-                .collect(),
-            labels: shape(format!(
-                "{:?} {:?}",
-                o.verdict,
-                o.contacts
-                    .iter()
-                    .map(|c| c.phases.iter().map(|f| f.kind).collect::<Vec<_>>())
-                    .collect::<Vec<_>>()
-            )),
-        }),
-        Err(b) => Err(b.reason.id().to_string()),
-    }
+                        .flat_map(|c| c.impulse.iter().copied())
+                        .collect(),
+                    velocity: o
+                        .contacts
+                        .iter()
+                        .flat_map(|c| c.velocity_after.iter().copied())
+                        .collect(),
+                    work: std::iter::once(o.energy_change)
+                        .chain(o.contacts.iter().flat_map(|c| {
+                            [c.work.compression, c.work.restitution, c.work.friction]
+                        }))
+                        .collect(),
+                    labels: shape(format!(
+                        "{:?} {:?}",
+                        o.verdict,
+                        o.contacts
+                            .iter()
+                            .map(|c| c.phases.iter().map(|f| f.kind).collect::<Vec<_>>())
+                            .collect::<Vec<_>>()
+                    )),
+                })
+            }
+            Err(b) => Err(b.reason.id().to_string()),
+        }
+    };
+}
+
+fn planar_numbers(law: LawId, p: &Planar) -> Result<Numbers, String> {
+    numbers!(law.resolve(p))
 }
 
 fn spatial_numbers(law: LawId, p: &Spatial) -> Result<Numbers, String> {
-    match law.resolve(p).expect("a multi-contact law") {
-        Ok(o) => Ok(Numbers {
-            impulse: o
-                .contacts
-                .iter()
-                .flat_map(|c| c.impulse.iter().copied())
-                .collect(),
-            velocity: o
-                .contacts
-                .iter()
-                .flat_map(|c| c.velocity_after.iter().copied())
-                .collect(),
-            work: std::iter::once(o.energy_change)
-                .chain(
-                    o.contacts
-                        .iter()
-                        .flat_map(|c| [c.work.compression, c.work.restitution, c.work.friction]),
-                )
-                .collect(),
-            labels: shape(format!(
-                "{:?} {:?}",
-                o.verdict,
-                o.contacts
-                    .iter()
-                    .map(|c| c.phases.iter().map(|f| f.kind).collect::<Vec<_>>())
-                    .collect::<Vec<_>>()
-            )),
-        }),
-        Err(b) => Err(b.reason.id().to_string()),
-    }
+    numbers!(law.resolve(p))
 }
 
 /// The regimes' text without its numbers (a slip's angles, which scale to round-off).
