@@ -41,9 +41,10 @@ fn energy<M: Mechanism + ?Sized>(m: &M, y: &[f64]) -> f64 {
     dynamics::kinetic_energy(m, &y[..n], &y[n..2 * n]) + dynamics::potential_energy(m, &y[..n])
 }
 
-/// `|T₀| + |V₀|` rounded to a power of two (1 if it is zero or not finite).
-fn energy_scale<M: Mechanism + ?Sized>(m: &M, q0: &[f64], u0: &[f64]) -> f64 {
-    let e = dynamics::kinetic_energy(m, q0, u0).abs() + dynamics::potential_energy(m, q0).abs();
+/// `|T₀| + |V₀|` (the energies at the start) rounded to a power of two (1 if it is zero or
+/// not finite).
+fn energy_scale(kinetic: f64, potential: f64) -> f64 {
+    let e = kinetic.abs() + potential.abs();
     if e.is_finite() && e > 0.0 {
         2f64.powi(e.log2().round() as i32)
     } else {
@@ -126,7 +127,11 @@ pub fn simulate<M: Mechanism + ?Sized>(
     dynamics::accelerations(m, q0, u0)?;
     let n = m.dof();
     let contacts = m.contacts().len();
-    let e0 = dynamics::kinetic_energy(m, q0, u0) + dynamics::potential_energy(m, q0);
+    let (t0, v0) = (
+        dynamics::kinetic_energy(m, q0, u0),
+        dynamics::potential_energy(m, q0),
+    );
+    let e0 = t0 + v0;
     if !(e0.is_finite() && e0.abs() < 1e300) {
         return Err(Error::OutOfRange {
             field: "q".into(),
@@ -186,7 +191,7 @@ pub fn simulate<M: Mechanism + ?Sized>(
         y,
         ode: Dopri5::new(2 * n + 1, options.tolerances)?,
         vscale,
-        wscale: energy_scale(m, q0, u0),
+        wscale: energy_scale(t0, v0),
         stall: (0.0, 0),
         rolled: None,
     };
