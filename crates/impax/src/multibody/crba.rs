@@ -57,9 +57,15 @@ pub fn mass_matrix(model: &Model, q: &[f64]) -> Result<DMatrix<f64>> {
     Ok(crba(model, &mut ws).clone())
 }
 
-/// The smallest pivot of the factorisation accepted, relative to the largest diagonal entry
-/// of `M`.
+/// The smallest pivot of the factorisation accepted, relative to its own coordinate's
+/// diagonal entry `M_kk` (what the coordinate moves beyond its descendants, against what it
+/// moves alone).
 pub const MASS_PIVOT_TOL: f64 = 1e-13;
+
+/// The smallest diagonal entry `M_kk` accepted, relative to the largest: a coordinate that
+/// moves only round-off of the others' masses (levers down to `1e-13` of the unit of length
+/// are accepted).
+pub const MASS_DIAGONAL_TOL: f64 = 1e-26;
 
 /// Factor the workspace's mass matrix as `M = Lᵀ L` into the workspace, `L` lower triangular
 /// with the sparsity of `M` itself (no fill-in): the LTL factorisation of Featherstone 2008,
@@ -72,6 +78,11 @@ pub const MASS_PIVOT_TOL: f64 = 1e-13;
 /// ```
 ///
 /// Its cost is `Σ_k depth(k)²` instead of `n³/6`; solves cost `Σ_k depth(k)`.
+///
+/// A pivot is judged against its own coordinate's diagonal entry ([`MASS_PIVOT_TOL`]) and
+/// that entry against the largest ([`MASS_DIAGONAL_TOL`]): the test does not depend on the
+/// coordinates' units (a free sphere of radius 1e-7 m has rotational entries 4e-15 of its
+/// translational ones, which a test against the largest entry refused).
 ///
 /// # Errors
 /// `M` not positive definite beyond round-off: the error names the speed whose pivot fails,
@@ -86,13 +97,15 @@ pub fn factor(model: &Model, ws: &mut Workspace) -> Result<()> {
     let h = ws.factor.as_mut_slice();
     for k in (0..n).rev() {
         let d = h[k * n + k];
-        if d.is_nan() || d <= MASS_PIVOT_TOL * scale {
+        let own = ws.mass[(k, k)];
+        if d.is_nan() || d <= MASS_PIVOT_TOL * own || own <= MASS_DIAGONAL_TOL * scale {
             return Err(Error::NotPositiveDefinite {
                 field: "mass matrix".into(),
                 reason: format!(
-                    "the coordinate {} (speed {k}) moves no mass at this configuration (pivot {} of the LTL factorisation against a largest diagonal entry {}): a massless link's joint, or an axis through a point mass",
+                    "the coordinate {} (speed {k}) moves no mass at this configuration (pivot {} of the LTL factorisation against its diagonal entry {}, the largest {}): a massless link's joint, or an axis through a point mass",
                     model.speeds()[k],
                     Num(d),
+                    Num(own),
                     Num(scale)
                 ),
             });

@@ -179,6 +179,49 @@ fn multibody_impact_free_sphere() {
     assert!((p.z - 1.6 * 1.5 / w[(2, 2)]).abs() < 1e-12);
 }
 
+/// A free sphere of radius 1e-7 (rotational entries of `M` 4e-15 of the translational
+/// ones, refused as singular when pivots were judged against the largest diagonal entry)
+/// strikes as the sphere of radius 1 does with its spin scaled by `1/r`: the same contact
+/// problem, the same impulse, the same linear speeds after and the spin after scaled alike.
+#[test]
+fn multibody_impact_a_tiny_sphere_strikes_as_a_large_one() {
+    let strike = |r: f64| {
+        let ball = Body::new(
+            "ball",
+            1.5,
+            Vec3::zeros(),
+            Mat3::identity() * (0.4 * 1.5 * r * r),
+        );
+        let foot = ContactPoint::new("bottom", 0, Vec3::zeros(), r);
+        let model = Model::new(vec![ball], vec![Joint::free("root", 0)], vec![foot]).unwrap();
+        let q = [0.0, 0.0, r, 1.0, 0.0, 0.0, 0.0];
+        let u = [0.4, -0.3, -1.5, 2.0 / r, 1.0 / r, -3.0 / r];
+        let imp = SpatialMechanismImpact::new(&model, &q, &u, 0).unwrap();
+        let out = imp.resolve(LawId::Energetic, 0.3, 0.6).unwrap();
+        let p = out.resolution.unwrap().impulse;
+        let after = out.velocities_after.unwrap();
+        (imp.inverse_inertia(), p, after)
+    };
+    let (w1, p1, u1) = strike(1.0);
+    let (w, p, u) = strike(1e-7);
+    assert!((w - w1).amax() < 1e-14, "{w} against {w1}");
+    assert!((p - p1).amax() < 1e-13 * p1.amax(), "{p} against {p1}");
+    for i in 0..3 {
+        assert!(
+            (u[i] - u1[i]).abs() < 1e-13,
+            "u[{i}]: {} against {}",
+            u[i],
+            u1[i]
+        );
+        let spin = u[3 + i] * 1e-7;
+        assert!(
+            (spin - u1[3 + i]).abs() < 1e-12,
+            "spin {i}: {spin} against {}",
+            u1[3 + i]
+        );
+    }
+}
+
 /// solo12 landing on four feet at once: `W` (12 × 12) of rank 12 from 18 dof; `lcp` and
 /// `sequential` satisfy the momentum balance, and `sequential` (energetic binary impacts)
 /// dissipates.
