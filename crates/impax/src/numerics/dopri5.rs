@@ -1,6 +1,7 @@
 //! The Dormand–Prince 5(4) integrator with dense output, on slices of any length (the
 //! public path is [`crate::ode`], whose documentation gives the method and its source).
 
+use super::budget::StepBudget;
 use crate::error::{Error, Result};
 
 // Butcher tableau: Dormand & Prince, J. Comp. Appl. Math. 6 (1980), table 2.
@@ -106,6 +107,8 @@ pub struct Dopri5 {
     trial_k: [Vec<f64>; 6],
     trial_stage: Vec<f64>,
     t: f64,
+    /// The start of the last accepted step.
+    t0: f64,
     h: f64,
     pending: bool,
     last_rejected: bool,
@@ -151,6 +154,7 @@ impl Dopri5 {
             trial_k: std::array::from_fn(|_| v()),
             trial_stage: v(),
             t: 0.0,
+            t0: 0.0,
             h: 0.0,
             pending: false,
             last_rejected: false,
@@ -253,6 +257,47 @@ impl Dopri5 {
         f: &mut impl FnMut(f64, &[f64], &mut [f64]),
         t_max: f64,
     ) -> Result<Step<'_>> {
+        self.take_step(f, t_max)?;
+        Ok(self.last_step())
+    }
+
+    /// [`Dopri5::advance`] within the step budget of a whole motion now at `t`: the budget
+    /// judged before the step ([`StepBudget::check`], its early verdict naming the motion's
+    /// field), the step limited to what the budget leaves, and a step that fails judged by the
+    /// budget again (the budget's verdict, when it applies, says more than "too many steps").
+    ///
+    /// # Errors
+    /// The budget's verdict; the errors of [`Dopri5::advance`].
+    pub(crate) fn advance_within(
+        &mut self,
+        budget: &StepBudget,
+        t: f64,
+        f: &mut impl FnMut(f64, &[f64], &mut [f64]),
+        t_max: f64,
+    ) -> Result<Step<'_>> {
+        let used = self.accepted + self.rejected;
+        budget.check(used, t)?;
+        self.max_steps = self.steps_since_start() + budget.remaining(used);
+        if let Err(e) = self.take_step(f, t_max) {
+            budget.check(self.accepted + self.rejected, self.t)?;
+            return Err(e);
+        }
+        Ok(self.last_step())
+    }
+
+    /// The last accepted step (its end the current state).
+    fn last_step(&self) -> Step<'_> {
+        Step {
+            t0: self.t0,
+            t1: self.t,
+            y0: &self.y,
+            y1: &self.y1,
+            cont: &self.cont,
+        }
+    }
+
+    /// Take one accepted step ([`Dopri5::advance`]), kept for [`Dopri5::last_step`].
+    fn take_step(&mut self, f: &mut impl FnMut(f64, &[f64], &mut [f64]), t_max: f64) -> Result<()> {
         if self.pending {
             std::mem::swap(&mut self.y, &mut self.y1);
             self.k.swap(0, 6);
@@ -293,15 +338,10 @@ impl Dopri5 {
                 // Keep the proposal of the untruncated step when the last one was shortened.
                 self.h = if last { self.h.max(h) } else { h * fac };
                 self.last_rejected = false;
+                self.t0 = t;
                 self.t = t1;
                 self.pending = true;
-                return Ok(Step {
-                    t0: t,
-                    t1,
-                    y0: &self.y,
-                    y1: &self.y1,
-                    cont: &self.cont,
-                });
+                return Ok(());
             }
             self.rejected += 1;
             self.last_rejected = true;

@@ -331,19 +331,9 @@ impl<'a> Sim<'a> {
             duration: until,
             field: "until",
         };
-        let used = self.ode.accepted + self.ode.rejected;
-        budget.check(used, self.t)?;
-        self.ode.max_steps = self.ode.steps_since_start() + budget.remaining(used);
         let eq = &mut self.eq;
         let mut f = |_t: f64, y: &[f64], dy: &mut [f64]| eq.derivative(y, dy);
-        let step = match self.ode.advance(&mut f, until) {
-            Ok(step) => step,
-            Err(e) => {
-                let used = self.ode.accepted + self.ode.rejected;
-                budget.check(used, self.ode.time())?;
-                return Err(e);
-            }
-        };
+        let step = self.ode.advance_within(&budget, self.t, &mut f, until)?;
         let (t0, t1) = (step.t0, step.t1);
         let mut buf = vec![0.0; step.y0.len()];
         let mut inside: Vec<(f64, Vec<f64>)> = Vec::new();

@@ -108,17 +108,7 @@ impl<M: Mechanism + ?Sized> Sim<'_, M> {
             duration: until,
             field: "until",
         };
-        let used = self.ode.accepted + self.ode.rejected;
-        budget.check(used, self.t)?;
-        self.ode.max_steps = self.ode.steps_since_start() + budget.remaining(used);
-        let step = match self.ode.advance(f, until) {
-            Ok(step) => step,
-            Err(e) => {
-                let used = self.ode.accepted + self.ode.rejected;
-                budget.check(used, self.ode.time())?;
-                return Err(e);
-            }
-        };
+        let step = self.ode.advance_within(&budget, self.t, f, until)?;
         let (t0, t1) = (step.t0, step.t1);
         let ystart = step.y0.to_vec();
         let y1 = step.y1.to_vec();
