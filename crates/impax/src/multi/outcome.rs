@@ -203,10 +203,14 @@ impl ContactResult {
         labels.join(" → ")
     }
 
-    /// Append a phase ending at `ends_at`; extend the last one if it has the same kind.
+    /// Append a phase ending at `ends_at`; extend the last one if it has the same kind. A
+    /// loaded phase (stick or slip) that ends where the last one ended carries no impulse and
+    /// is not recorded (a regime chosen at the very point where the contact's impulse stops
+    /// growing); an `off` phase is recorded all the same (the impulse never grows while off).
     pub(crate) fn push_phase(&mut self, kind: ContactPhaseKind, ends_at: f64) {
         match self.phases.last_mut() {
             Some(last) if last.kind == kind => last.ends_at = ends_at,
+            Some(last) if last.ends_at == ends_at && kind != ContactPhaseKind::Off => {}
             _ => self.phases.push(ContactPhase { kind, ends_at }),
         }
     }

@@ -34,6 +34,7 @@ mod regression_energetic_overflow;
 mod regression_energy_gain_round_off;
 mod regression_energy_gain_small;
 mod regression_lzb_cradle_friction;
+mod regression_lzb_zero_length_phase;
 mod regression_scale_invariance;
 mod regression_simulation_penetration;
 mod regression_simulation_scale;

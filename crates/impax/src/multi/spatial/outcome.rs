@@ -78,10 +78,14 @@ impl ContactResult {
         labels.join(" → ")
     }
 
-    /// Append a phase ending at `ends_at`; extend the last one if it has the same kind.
+    /// Append a phase ending at `ends_at`; extend the last one if it has the same kind. A
+    /// loaded phase that ends where the last one ended carries no impulse and is not recorded;
+    /// an `off` phase is recorded all the same (as in the plane,
+    /// [`crate::multi::ContactResult`]).
     pub(crate) fn push_phase(&mut self, kind: ContactPhaseKind, ends_at: f64) {
         match self.phases.last_mut() {
             Some(last) if last.kind == kind => last.ends_at = ends_at,
+            Some(last) if last.ends_at == ends_at && kind != ContactPhaseKind::Off => {}
             _ => self.phases.push(ContactPhase { kind, ends_at }),
         }
     }
