@@ -16,6 +16,7 @@ mod mechanism_specs;
 mod mechanisms;
 mod multi_contact;
 mod multi_lzb;
+mod multi_relabel;
 mod multi_scale_invariance;
 mod multi_scenarios;
 mod multi_spatial;
