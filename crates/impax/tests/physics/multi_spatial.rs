@@ -5,7 +5,7 @@
 //! on four corners (W of rank 6), and random problems whose `lcp` solutions must satisfy
 //! the conditions to 1e-12 and whose `sequential` never gains energy.
 
-use super::support::contact_space;
+use super::support::{contact_space, random_spatial_space};
 use impax::math::{SplitMix64, Vec3};
 use impax::multi::spatial::{self, MultiProblem};
 use impax::multi::MultiProblem as Planar;
@@ -229,18 +229,9 @@ fn random_problems_satisfy_the_conditions() {
     let (mut solved, mut total) = (0usize, 0usize);
     for round in 0..400 {
         let k = 2 + round % 3;
-        let dof = if rng.unit() < 0.3 {
-            3 * k - 2
-        } else {
-            3 * k + 2
-        };
-        let j = DMatrix::from_fn(3 * k, dof, |_, _| rng.range(-1.0, 1.0));
-        let masses: Vec<f64> = (0..dof).map(|_| rng.decades(-1.0, 1.0)).collect();
-        let u = DVector::from_fn(dof, |_, _| rng.range(-1.0, 1.0));
-        let (w, v) = contact_space(&j, &masses, &u);
-        if (0..k).all(|c| v[3 * c + 2] >= 0.0) {
+        let Some((w, v)) = random_spatial_space(&mut rng, k) else {
             continue;
-        }
+        };
         let mu: Vec<f64> = (0..k).map(|_| rng.range(0.0, 1.2)).collect();
         let e: Vec<f64> = (0..k).map(|_| rng.unit()).collect();
         let Ok(p) = MultiProblem::new(w.clone(), &v, &mu, &e) else {

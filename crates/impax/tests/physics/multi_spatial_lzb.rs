@@ -18,7 +18,7 @@
 //!   cone, no consistent result leaving a contact approaching; the breakdowns counted.
 
 use super::multi_spatial::box_rows;
-use super::support::{contact_space, random_multi};
+use super::support::{contact_space, random_multi, random_spatial_space};
 use impax::law::Verdict;
 use impax::math::{Mat3, SplitMix64, Vec3};
 use impax::multi::scenarios::BoxFlat;
@@ -253,18 +253,9 @@ fn a_planar_problem_in_3d_is_the_planar_lzb() {
 /// for 30% of them: `W` singular), `v = J u`, at least one contact approaching.
 fn random_spatial(rng: &mut SplitMix64, k: usize, friction: bool) -> MultiProblem {
     loop {
-        let dof = if rng.unit() < 0.3 {
-            3 * k - 2
-        } else {
-            3 * k + 2
-        };
-        let j = DMatrix::from_fn(3 * k, dof, |_, _| rng.range(-1.0, 1.0));
-        let masses: Vec<f64> = (0..dof).map(|_| rng.decades(-1.0, 1.0)).collect();
-        let u = DVector::from_fn(dof, |_, _| rng.range(-1.0, 1.0));
-        let (w, v) = contact_space(&j, &masses, &u);
-        if (0..k).all(|c| v[3 * c + 2] >= 0.0) {
+        let Some((w, v)) = random_spatial_space(rng, k) else {
             continue;
-        }
+        };
         let mu: Vec<f64> = (0..k)
             .map(|_| match (friction, rng.next_u64() % 6) {
                 (false, _) | (_, 0) => 0.0,

@@ -273,3 +273,19 @@ pub fn block_diagonal(ones: &[ContactProblem]) -> MultiProblem {
     }
     MultiProblem::new(w, &v, &mu, &e).unwrap()
 }
+
+/// A random spatial contact space with `k` contacts: `W = J M⁻¹ Jᵀ` of random bodies (`3K − 2`
+/// degrees of freedom for 30% of them: `W` singular) and `v = J u`; `None` when no contact
+/// approaches.
+pub fn random_spatial_space(rng: &mut SplitMix64, k: usize) -> Option<(DMatrix<f64>, Vec<f64>)> {
+    let dof = if rng.unit() < 0.3 {
+        3 * k - 2
+    } else {
+        3 * k + 2
+    };
+    let j = DMatrix::from_fn(3 * k, dof, |_, _| rng.range(-1.0, 1.0));
+    let masses: Vec<f64> = (0..dof).map(|_| rng.decades(-1.0, 1.0)).collect();
+    let u = DVector::from_fn(dof, |_, _| rng.range(-1.0, 1.0));
+    let (w, v) = contact_space(&j, &masses, &u);
+    (0..k).any(|c| v[3 * c + 2] < 0.0).then_some((w, v))
+}
