@@ -9,7 +9,8 @@
 #   bash scripts/fuzz.sh 600        # 10 min per target
 #   bash scripts/fuzz.sh 60 numbers # one target
 #   bash scripts/fuzz.sh --dev 10   # a debug build (built in about half the time, runs about
-#                                   # six times fewer inputs a second: .ci/run's smoke run)
+#                                   # six times fewer inputs a second; an input that takes
+#                                   # seconds optimised can pass the 20 s timeout)
 #
 # cargo-fuzz (pinned) is installed into .tools/ on first use (a debug build: it only drives
 # cargo); libFuzzer builds need nightly flags, which stable Rust accepts with
