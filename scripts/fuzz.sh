@@ -19,7 +19,9 @@
 # failing input to fuzz/artifacts/<target>/ (reproduce: cargo fuzz run -s none TARGET FILE).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-build=()
+# (16 codegen units: the optimised build in half the time on two cores, for a few per cent
+# fewer executions a second.)
+build=(--codegen-units 16)
 if [[ "${1:-}" == "--dev" ]]; then
     build=(--dev)
     shift

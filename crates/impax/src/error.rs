@@ -248,11 +248,11 @@ pub(crate) fn kinetic_energy(energy: f64, u_max: f64) -> Result<()> {
 
 /// Check the coefficients shared by every contact problem: `μ ≥ 0`, `0 ≤ e ≤ 1`.
 pub(crate) fn coefficients(friction: f64, restitution: f64) -> Result<()> {
-    if friction < 0.0 {
+    if let Some(reason) = friction_out_of_range(friction) {
         return Err(Error::OutOfRange {
             field: "friction".into(),
             value: friction,
-            reason: "the friction coefficient must be ≥ 0".into(),
+            reason: reason.into(),
         });
     }
     if !(0.0..=1.0).contains(&restitution) {
@@ -263,6 +263,22 @@ pub(crate) fn coefficients(friction: f64, restitution: f64) -> Result<()> {
         });
     }
     Ok(())
+}
+
+/// The largest friction coefficient accepted. A larger one acts as this one to round-off
+/// (a slip halts within an impulse of order `1/μ`), and products of it with the other
+/// numbers of a law could overflow.
+pub const MAX_FRICTION: f64 = 1e300;
+
+/// Why a friction coefficient is out of range (`μ < 0` or `μ > MAX_FRICTION`), if it is.
+pub(crate) fn friction_out_of_range(friction: f64) -> Option<&'static str> {
+    if friction < 0.0 {
+        Some("the friction coefficient must be ≥ 0")
+    } else if friction > MAX_FRICTION {
+        Some("the friction coefficient must be ≤ 1e300 (beyond, products with it overflow; a slip already halts at once)")
+    } else {
+        None
+    }
 }
 
 /// Check that the approach energy `½ vᵀ W⁻¹ v` is representable (every impulse and work of

@@ -35,7 +35,7 @@ pub const HERTZ_EXPONENT: f64 = 1.5;
 /// counted as zero (redundant contacts: a rod lying flat has four contact rows and three
 /// degrees of freedom); when `W` is singular, `v⁻` in its range (a velocity `J u` of the bodies
 /// always is, `W = J M⁻¹ Jᵀ`) up to [`RANGE_TOL`] of `|v⁻|`, that round-off removed;
-/// `μ_j ≥ 0`, `e_j ∈ [0, 1]`; at least one contact approaching (`v_nj⁻ < 0`; the others may
+/// `0 ≤ μ_j ≤ 1e300`, `e_j ∈ [0, 1]`; at least one contact approaching (`v_nj⁻ < 0`; the others may
 /// touch or separate); the approach energy `½ v⁻ᵀ W⁺ v⁻` representable.
 ///
 /// The law [`lzb`](super::lzb) also reads the contacts' compliance: the stiffness ratios

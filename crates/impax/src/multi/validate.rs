@@ -196,9 +196,7 @@ pub(crate) fn check(
     for (i, &x) in v.iter().enumerate() {
         crate::error::finite(&velocity_name(d, i), x)?;
     }
-    let mu = coefficients("friction", friction, k, |x| {
-        (x < 0.0).then_some("the friction coefficient must be ≥ 0")
-    })?;
+    let mu = coefficients("friction", friction, k, crate::error::friction_out_of_range)?;
     let e = coefficients("restitution", restitution, k, |x| {
         (!(0.0..=1.0).contains(&x)).then_some("the coefficient of restitution must be in [0, 1]")
     })?;

@@ -128,7 +128,8 @@ impl ContactProblem {
     /// Validate and build a problem.
     ///
     /// Errors (each names its field): a non-finite entry; `W` not symmetric (beyond round-off)
-    /// or not positive definite (see [`InverseInertia::new`]); `v_n ≥ 0`; `μ < 0`;
+    /// or not positive definite (see [`InverseInertia::new`]); `v_n ≥ 0`; `μ < 0` or
+    /// `μ >` [`MAX_FRICTION`](crate::error::MAX_FRICTION);
     /// `e ∉ [0, 1]`; a velocity so large for `W` that the approach energy `½ v⁻ᵀ W⁻¹ v⁻`
     /// overflows.
     pub fn new(w: Mat2, v: Vec2, friction: f64, restitution: f64) -> Result<Self> {
@@ -137,7 +138,7 @@ impl ContactProblem {
 
     /// Build a problem on an already validated `W`: checks only the velocity (finite,
     /// approaching: `v_n < 0`, approach energy representable) and the coefficients
-    /// (finite, `μ ≥ 0`, `0 ≤ e ≤ 1`). The result equals [`ContactProblem::new`]'s bit for
+    /// (finite, `0 ≤ μ ≤ 1e300`, `0 ≤ e ≤ 1`). The result equals [`ContactProblem::new`]'s bit for
     /// bit; this is the per-point path of sweeps (no allocation unless the point is invalid).
     #[inline]
     pub fn with_inertia(
@@ -161,8 +162,7 @@ impl ContactProblem {
         let ok = energy.is_finite()
             && v.x.is_finite()
             && v.y < 0.0
-            && friction >= 0.0
-            && friction.is_finite()
+            && (0.0..=crate::error::MAX_FRICTION).contains(&friction)
             && (0.0..=1.0).contains(&restitution);
         if ok {
             Ok(problem)

@@ -21,4 +21,4 @@ pub use invariant::{
     invariant_rays, resumption_direction, sticking_ratio, InvariantRay, InvariantRays, RayKind,
 };
 pub use outcome::{LawDetail, Outcome, Phase, PhaseKind, Phases, Resolution};
-pub use problem::{ContactProblem, PIVOT_TOL};
+pub use problem::{ContactProblem, NEGLIGIBLE_SLIP, PIVOT_TOL};

@@ -11,6 +11,11 @@ const SYMMETRY_TOL: f64 = 1e-12;
 /// `PIVOT_TOL λ_max`.
 pub const PIVOT_TOL: f64 = 1e-11;
 
+/// A tangential component of `v⁻` or of `w_tn` below this, in the units where `|v_n⁻|` and
+/// `w_nn` are in `[1, 2)`, is taken as zero by the Darboux–Keller laws
+/// ([`ContactProblem::without_negligible_slip`]).
+pub const NEGLIGIBLE_SLIP: f64 = 1e-250;
+
 /// Check that the symmetric `w` is positive definite beyond round-off (see
 /// [`ContactProblem::new`]); the reason names the failing quantity with its value.
 pub(crate) fn positive_definite(w: &Mat3) -> Result<()> {
@@ -143,7 +148,7 @@ impl ContactProblem {
     /// with `W_ij² > W_ii W_jj`, or a pivot `d_k` of `W = L D Lᵀ` (order `t1, t2, n`:
     /// `d1 = W11`, `d2 = det W_tt / W11`, `d3 = w_nn − w_tnᵀ W_tt⁻¹ w_tn`) at most
     /// [`PIVOT_TOL`] `λ_max(W)` (negative: indefinite; else numerically singular); `v_n ≥ 0`;
-    /// `μ < 0`; `e ∉ [0, 1]`; a velocity whose approach energy `½ v⁻ᵀ W⁻¹ v⁻` overflows.
+    /// `μ < 0` or `μ > 1e300`; `e ∉ [0, 1]`; a velocity whose approach energy `½ v⁻ᵀ W⁻¹ v⁻` overflows.
     ///
     /// The pivots are what the laws divide by (`d1 d2 = det W_tt` in the sticking ratio,
     /// `d3` the slope of `v_n` in stick), and every pivot is at least the smallest eigenvalue
@@ -228,6 +233,32 @@ impl ContactProblem {
             v: self.v * a,
             ..*self
         }
+    }
+
+    /// The problem with its negligible slip and coupling set to zero: each component of
+    /// `v_t⁻` and of `w_tn` below [`NEGLIGIBLE_SLIP`] in the units where `v` is times `a` and
+    /// `W` times `b` (`|v_n⁻|` and `w_nn` in `[1, 2)`, powers of two: the same test for any
+    /// power-of-two multiple of the problem). Their effect on every number of the result
+    /// is below `NEGLIGIBLE_SLIP` of its scale; with them, the integration of the slip would
+    /// work with numbers a few dozen orders of magnitude from the subnormal range, where the
+    /// direction of a slip converging on an invariant ray is lost. `None` when nothing is
+    /// negligible.
+    pub(crate) fn without_negligible_slip(&self, a: f64, b: f64) -> Option<Self> {
+        let mut out = *self;
+        let mut changed = false;
+        for i in 0..2 {
+            let (v, w) = (self.v[i], self.w[(i, 2)]);
+            if v != 0.0 && (v * a).abs() < NEGLIGIBLE_SLIP {
+                out.v[i] = 0.0;
+                changed = true;
+            }
+            if w != 0.0 && (w * b).abs() < NEGLIGIBLE_SLIP {
+                out.w[(i, 2)] = 0.0;
+                out.w[(2, i)] = 0.0;
+                changed = true;
+            }
+        }
+        changed.then_some(out)
     }
 
     /// Stick (theory §2): the friction ratio `λ = −W_tt⁻¹ w_tn` that keeps `v_t = 0` and the

@@ -80,16 +80,20 @@ pub(super) fn solve_mode<const N: usize>(
         .iter()
         .fold(0.0f64, |x, y| x.max(y.abs()))
         .max(f64::MIN_POSITIVE);
-    // The impulse conditions first (cheap).
-    for j in 0..k {
-        let (pt, pn) = (p[2 * j], p[2 * j + 1]);
+    // The impulse conditions first (cheap), each as a distance from the contact's cone to
+    // round-off of the impulses' scale: a slip impulse `y (ratio, 1)/|(ratio, 1)|` is in its
+    // cone when `y ≥ 0` — its normal part alone, `y/|(ratio, 1)|`, would let a reversed
+    // impulse through when `μ` is large (a spurious slip with friction driving the slip).
+    let tol = VELOCITY_ROUND_OFF * pscale;
+    for c in 0..n {
+        let j = contact[c];
         let bad = match modes[j] {
-            Mode::Off => false,
+            Mode::Stick if cn[c] == 0.0 => false,
             Mode::Stick => {
-                -pn > VELOCITY_ROUND_OFF * pscale
-                    || pt.abs() - s.mu[j] * pn > VELOCITY_ROUND_OFF * pscale
+                let (pt, pn) = (p[2 * j], p[2 * j + 1]);
+                -pn > tol || (pt.abs() - s.mu[j] * pn) / 1f64.hypot(s.mu[j]) > tol
             }
-            _ => -pn > VELOCITY_ROUND_OFF * pscale,
+            _ => -y[c] > tol,
         };
         if bad {
             return None;

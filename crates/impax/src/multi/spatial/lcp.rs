@@ -508,16 +508,18 @@ fn check(s: &Setup, modes: &[Mode], theta: &[f64]) -> Option<Candidate> {
         let (vt1, vt2, vn) = (v[3 * j], v[3 * j + 1], v[3 * j + 2]);
         let ok = match modes[j] {
             Mode::Off => vn >= s.b[j] - tv,
+            // (The cone conditions as distances from the cone: a slip impulse is
+            // `p_n (−μ d, 1)`, reversed when `p_n < 0` however large `μ` is.)
             Mode::Stick => {
                 pn >= -tp
-                    && pt <= s.mu[j] * pn + tp
+                    && (pt - s.mu[j] * pn) / 1f64.hypot(s.mu[j]) <= tp
                     && vt1.abs() <= tv
                     && vt2.abs() <= tv
                     && (vn - s.b[j]).abs() <= tv
             }
             Mode::Slip => {
                 let (sn, cs) = theta[j].sin_cos();
-                pn >= -tp
+                pn * 1f64.hypot(s.mu[j]) >= -tp
                     && (vn - s.b[j]).abs() <= tv
                     && cs * vt1 + sn * vt2 >= -tv
                     && (cs * vt2 - sn * vt1).abs() <= tv

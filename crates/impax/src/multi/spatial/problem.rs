@@ -19,7 +19,7 @@ use nalgebra::{DMatrix, DVector};
 /// each contact's own block positive definite (as [`ContactProblem::new`]); `W` positive
 /// *semi*definite (redundant contacts: a box lying flat on four corners has twelve contact
 /// rows and six degrees of freedom); `v⁻` in the range of a singular `W` up to
-/// [`RANGE_TOL`](crate::multi::RANGE_TOL) of `|v⁻|`; `μ_j ≥ 0`, `e_j ∈ [0, 1]`; at least one
+/// [`RANGE_TOL`](crate::multi::RANGE_TOL) of `|v⁻|`; `0 ≤ μ_j ≤ 1e300`, `e_j ∈ [0, 1]`; at least one
 /// contact approaching; the approach energy `½ v⁻ᵀ W⁺ v⁻` representable.
 ///
 /// ```

@@ -169,7 +169,10 @@ pub(crate) struct PathEnd {
 /// below. Each quantity's error is controlled on its own scale (tangential and normal
 /// velocity, impulse, normal and friction work), so a slip hundreds of orders of magnitude
 /// above or below the normal velocity neither swamps nor is swamped by it; a slip too fast
-/// for the impact to turn is the straight path in closed form.
+/// for the impact to turn is the straight path in closed form. A slip or coupling `w_tn`
+/// below [`NEGLIGIBLE_SLIP`](crate::spatial::NEGLIGIBLE_SLIP) in these units is taken as
+/// zero ([`ContactProblem::without_negligible_slip`]): its effect on the result is below
+/// that fraction of its scale.
 ///
 /// Told whether `observe` does anything: when it does not (`observing`
 /// false), the points inside a panel of the angle variable carry `p_n` only where an event
@@ -189,6 +192,8 @@ pub(crate) fn integrate_with(
     // integrated as the same problem, bit for bit.
     let a = crate::math::exact_unit_factor(v.z.abs(), v.as_slice());
     let b = crate::math::exact_unit_factor(w[(2, 2)], w.as_slice());
+    let flushed = problem.without_negligible_slip(a, b);
+    let problem = flushed.as_ref().unwrap_or(problem);
     let first = if a == 1.0 && b == 1.0 {
         integrate_scaled(problem, term, opts, observing, observe)?
     } else {
