@@ -12,8 +12,10 @@ const SYMMETRY_TOL: f64 = 1e-12;
 pub const PIVOT_TOL: f64 = 1e-11;
 
 /// A tangential component of `v⁻` or of `w_tn` below this, in the units where `|v_n⁻|` and
-/// `w_nn` are in `[1, 2)`, is taken as zero by the Darboux–Keller laws
-/// ([`ContactProblem::without_negligible_slip`]).
+/// `w_nn` are in `[1, 2)` (powers of two), is taken as zero by the Darboux–Keller laws
+/// (`newton`, `poisson`, `energetic`): its effect on their result is below this fraction of
+/// the result's scale, and with it the integration of the slip would work with numbers a few
+/// dozen orders of magnitude from the subnormal range.
 pub const NEGLIGIBLE_SLIP: f64 = 1e-250;
 
 /// Check that the symmetric `w` is positive definite beyond round-off (see
