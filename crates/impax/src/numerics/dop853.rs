@@ -349,14 +349,20 @@ pub(crate) fn dop853_step<const N: usize>(
 /// The error measure of Hairer's `DOP853` in the maximum norm: with `e₅`, `e₃` the scaled
 /// largest components of the two estimates, `e₅² / √(e₅² + 0.01 e₃²)` (a fifth-order
 /// estimate that behaves like an eighth-order one as `h → 0`). `scale(i)` is the
-/// per-component tolerance.
+/// per-component tolerance. NaN — a step to reject — when the step's result or an error
+/// ratio is not a number or not finite (a maximum would pass over a NaN, and a step that
+/// overflowed has an infinite scale: without this test it could be accepted).
 #[inline]
 pub(crate) fn error_measure<const N: usize>(step: &Step<N>, scale: impl Fn(usize) -> f64) -> f64 {
     let (mut e5, mut e3) = (0.0f64, 0.0f64);
     for i in 0..N {
         let s = scale(i);
-        e5 = e5.max((step.err5[i] / s).abs());
-        e3 = e3.max((step.err3[i] / s).abs());
+        let (r5, r3) = ((step.err5[i] / s).abs(), (step.err3[i] / s).abs());
+        if !(step.y[i].is_finite() && r5.is_finite() && r3.is_finite()) {
+            return f64::NAN;
+        }
+        e5 = e5.max(r5);
+        e3 = e3.max(r3);
     }
     let den = e5 * e5 + 0.01 * e3 * e3;
     if den > 0.0 {

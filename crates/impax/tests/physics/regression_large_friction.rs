@@ -1,5 +1,5 @@
-//! Regression: `lcp` listed spurious solutions at large friction, and friction coefficients
-//! near the largest double were taken in.
+//! Regression: `lcp` listed spurious solutions at large friction, `lzb` broke down there, and
+//! friction coefficients near the largest double were taken in.
 //!
 //! Found by trying `μ = 10⁶ … 10³⁰⁰` on `impax resolve --contacts 2 --w
 //! 1,0.2,0,0.1,1,0.1,0,1,0.3,1 --v 0.1,-1,0.2,-0.5 --restitution 0.7 --law lcp`: from
@@ -18,11 +18,12 @@
 //! integrated for 0.6 s to a breakdown).
 
 use crate::support::random_spatial_space;
+use impax::law::BreakdownReason;
 use impax::math::{Mat2, Mat3, SplitMix64, Vec2, Vec3};
 use impax::multi::spatial;
 use impax::multi::{lcp, ContactPhaseKind, MultiDetail, MultiProblem};
 use impax::planar::{ContactProblem, Verdict};
-use impax::Error;
+use impax::{Error, LawId};
 use nalgebra::{DMatrix, DVector};
 
 const W: [f64; 10] = [1.0, 0.2, 0.0, 0.1, 1.0, 0.1, 0.0, 1.0, 0.3, 1.0];
@@ -200,6 +201,66 @@ fn friction_above_1e300_is_refused_naming_the_field() {
     for law in impax::LawId::CONTACT_SPACE {
         if let Ok(o) = law.resolve(&p) {
             assert!(o.is_finite(), "{law}");
+        }
+    }
+}
+
+/// `lzb` broke down on the issue case from about μ = 1e60 (`too-many-steps`): its first
+/// DOP853 step overflowed (the slip's friction `μ F` stops it within `τ ≈ 1/μ`) and was
+/// accepted — the error measure's maximum passed over the NaN ratios — so the path went on in
+/// NaN to the step limit. A step with a non-finite result is now rejected (every DOP853 user:
+/// `lzb` planar and spatial, the spatial Darboux–Keller laws). Expected: the results converge
+/// as `1/μ` to the limit of infinite friction (from μ = 1e30 on, equal to the integration's
+/// tolerance).
+#[test]
+fn lzb_converges_at_large_friction() {
+    let resolve = |mu: f64| {
+        let p = MultiProblem::from_upper(2, &W, &V, &[mu], &[0.7]).unwrap();
+        impax::multi::lzb::resolve(&p).unwrap_or_else(|b| panic!("μ = {mu:e}: {b}"))
+    };
+    let limit = resolve(1e30);
+    let near = resolve(1e8);
+    for mu in [1e8, 1e30, 1e60, 1e100, 1e200, 1e300] {
+        let o = resolve(mu);
+        assert_eq!(o.verdict, Verdict::Consistent, "μ = {mu:e}");
+        let tol = if mu < 1e10 { 1e-5 } else { 1e-10 };
+        for (a, b) in o.contacts.iter().zip(&limit.contacts) {
+            assert!((a.impulse - b.impulse).amax() < tol, "μ = {mu:e}");
+        }
+    }
+    // (μ = 1e8 still differs from the limit, by about 2e-6: the slip phases shrink as 1/μ
+    // but the path after them carries the change.)
+    let d = (near.contacts[0].impulse - limit.contacts[0].impulse).amax();
+    assert!(d > 0.0 && d < 1e-5, "{d:e}");
+}
+
+/// With non-finite steps rejected, a spatial problem whose right-hand side overflows at the
+/// start shrank its step without end: the fuzzer (`contact_problem`) found `W ≈ [[3.5, 0, 1],
+/// [0, 0.5, 0], [1, 0, 1]]` (entries of `±1e-300` and `2.2e-308` off the diagonal), `v⁻ =
+/// (0.5, 0, −1e-300)`, `μ = 1.9e185`: `newton`, `poisson` and `energetic` ran past the
+/// fuzzer's 20 s limit. The slip's friction (`μ` times a slip `5e299` times the normal
+/// scale in canonical units) overflows; a rejected step that is already negligible (below
+/// `1e-300`, or lost in the round-off of the variable) now ends the integration. Expected:
+/// the `overflow` breakdown at once, as before non-finite steps were rejected.
+#[test]
+fn spatial_laws_stop_where_the_step_cannot_shrink() {
+    let w = Mat3::new(
+        3.5,
+        2.225_073_858_507_201_4e-308,
+        1.0,
+        2.225_073_858_507_201_4e-308,
+        0.5,
+        -1e-300,
+        1.0,
+        -1e-300,
+        1.0,
+    );
+    let v = Vec3::new(0.5, 0.0, -1e-300);
+    let p = impax::spatial::ContactProblem::new(w, v, 1.903_664_958_504_395_5e185, 0.7).unwrap();
+    for law in [LawId::Newton, LawId::Poisson, LawId::Energetic] {
+        match law.resolve(&p) {
+            Err(b) => assert_eq!(b.reason, BreakdownReason::Overflow, "{law}"),
+            Ok(o) => panic!("{law}: a result {:?}", o.impulse),
         }
     }
 }

@@ -153,6 +153,7 @@ pub(super) fn run(
                 hu *= shrink(en);
                 continue;
             }
+            Advance::Stalled(why) => return Err(why),
             Advance::Event(Some(end)) => return Ok(Next::End(end)),
             Advance::Event(None) => continue,
             Advance::Accepted(en) => en,

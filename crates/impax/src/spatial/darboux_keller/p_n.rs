@@ -144,11 +144,9 @@ pub(super) fn run(
         let en = match st.advance(&var, h, pt, ev, steps, observe) {
             Advance::Rejected(en) => {
                 h *= shrink(en);
-                if h <= 1e-300 {
-                    return Err(BreakdownReason::NoSeparation);
-                }
                 continue;
             }
+            Advance::Stalled(why) => return Err(why),
             Advance::Event(Some(end)) => return Ok(Next::End(end)),
             Advance::Event(None) => continue,
             Advance::Accepted(en) => en,

@@ -11,6 +11,7 @@
 
 use super::events::{Event, Events};
 use super::state::{Point, SlipEnd};
+use crate::law::BreakdownReason;
 use crate::math::Vec3;
 use crate::numerics::dop853::{dop853_step, error_measure, Dense, Step};
 use crate::numerics::roots::{illinois, newton_from_seed};
@@ -45,6 +46,12 @@ pub(super) struct Stepper<const N: usize> {
 pub(super) enum Advance {
     /// Rejected, with this error measure: the caller shrinks the step.
     Rejected(f64),
+    /// Rejected, and the step is already negligible (below `1e-300` in the variable's
+    /// canonical units, or lost in the round-off of `x`): shrinking it further cannot help.
+    /// The caller reports this breakdown: [`BreakdownReason::Overflow`] if the step's result
+    /// was not finite (the right-hand side overflows there), else
+    /// [`BreakdownReason::NoSeparation`].
+    Stalled(BreakdownReason),
     /// Accepted, with this error measure: the caller may grow the step.
     Accepted(f64),
     /// Stopped at an event inside the step: `Some` if the law terminated there.
@@ -89,6 +96,13 @@ impl<const N: usize> Stepper<N> {
         let y1 = st.y;
         let en = error_measure(&st, |i| atol[i] + rtol * y[i].abs().max(y1[i].abs()));
         if en.is_nan() || en > 1.0 {
+            if negligible(x, h) {
+                return Advance::Stalled(if en.is_nan() {
+                    BreakdownReason::Overflow
+                } else {
+                    BreakdownReason::NoSeparation
+                });
+            }
             return Advance::Rejected(en);
         }
         let b = var.point(x + h, &y1);
@@ -177,6 +191,13 @@ fn locate_in_step<const N: usize>(
         dop853_step(&f, x0, y0, k0, theta * h).y
     };
     (x0 + theta * h, yt)
+}
+
+/// Whether the step `h` from `x` is too small to be worth another attempt: not above
+/// `1e-300` in size (the variables are in canonical units), or lost in `x`'s round-off.
+#[inline]
+fn negligible(x: f64, h: f64) -> bool {
+    h.abs().is_nan() || h.abs() <= 1e-300 || x + h == x
 }
 
 /// Step-size factor after a rejected step (`en > 1` or NaN): `0.9 en^(-1/8)`, at least 0.2.

@@ -113,11 +113,9 @@ pub(super) fn run(
         let en = match st.advance(&var, ht, pt, ev, steps, observe) {
             Advance::Rejected(en) => {
                 ht *= shrink(en);
-                if ht <= 1e-300 {
-                    return Err(BreakdownReason::NoSeparation);
-                }
                 continue;
             }
+            Advance::Stalled(why) => return Err(why),
             Advance::Event(Some(end)) => return Ok(Next::End(end)),
             Advance::Event(None) => continue,
             Advance::Accepted(en) => en,
