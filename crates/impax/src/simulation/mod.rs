@@ -3,9 +3,10 @@
 //!
 //! The smooth motion is integrated to tolerance ([`crate::ode::Dopri5`] on the equations of
 //! motion of [`crate::mechanism::dynamics`]); each open contact's gap `φ_k(q)` is watched on
-//! the step's dense output, and a crossing with approach is located *on the discrete
-//! solution* (re-stepping from the start of the step that contains it) to round-off by
-//! bracketing root finding. Then:
+//! the step's dense output (at eight equal parts of the step, and more where a contact could
+//! touch unseen between two of them: `watch`), and a crossing with approach is located *on
+//! the discrete solution* (re-stepping from the start of the step that contains it) to
+//! round-off by bracketing root finding. Then:
 //!
 //! * **impacts** (`impacts`): a contact that strikes alone gets the run's law
 //!   on its contact problem ([`crate::mechanism::impact`]); one that strikes while others touch
@@ -68,6 +69,7 @@ mod options;
 mod record;
 mod run;
 pub mod scenarios;
+pub(crate) mod watch;
 
 pub use closed::{Regime, FORCE_ROUND_OFF, MAX_CLOSED};
 

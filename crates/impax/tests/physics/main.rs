@@ -58,6 +58,7 @@ mod regression_spatial_poisson_still_approaching;
 mod regression_spatial_rotated_w_rejected;
 mod regression_spatial_slip_scale;
 mod regression_spatial_whittaker_overflow;
+mod regression_spinning_rod;
 mod robot_load;
 mod seed_sphere;
 mod simulation;

@@ -6,10 +6,22 @@ use crate::error::Result;
 use crate::multibody::energy::{kinetic_energy, potential_energy};
 use crate::multibody::kinematics::{forward_kinematics_with_joints, gap, BodyPose};
 use crate::multibody::{configuration_rate, contact_position, forward_dynamics_in};
-use crate::multibody::{JointKind, Model, Workspace};
+use crate::multibody::{forward_kinematics, JointKind, Model, Workspace};
+use crate::simulation::watch::Probe;
+use num_dual::Dual64;
 
 /// The relative size of the touching tolerance (as the planar run's).
 const TOUCHING: f64 = 1e-12;
+
+/// The touching tolerance of a contact at `c` on a body whose frame is at `b`
+/// ([`Geometry::touching_tolerance`]).
+fn tolerance(m: &Model, c: [f64; 3], b: [f64; 3]) -> f64 {
+    let lever = ((c[0] - b[0]).powi(2) + (c[1] - b[1]).powi(2) + (c[2] - b[2]).powi(2))
+        .sqrt()
+        .max(m.data.size);
+    let far = (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]).sqrt() + m.floor().abs();
+    TOUCHING * lever + 64.0 * f64::EPSILON * far
+}
 
 /// The equations of motion of free flight with their workspace.
 pub(super) struct Equations<'a> {
@@ -95,12 +107,41 @@ impl<'a> Geometry<'a> {
         self.place(&y[..self.model.nq()]);
         let m = self.model;
         let c = contact_position(m, &self.poses, k);
-        let b = self.poses[m.contacts()[k].body].position;
-        let lever = ((c[0] - b[0]).powi(2) + (c[1] - b[1]).powi(2) + (c[2] - b[2]).powi(2))
-            .sqrt()
-            .max(m.data.size);
-        let far = (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]).sqrt() + m.floor().abs();
-        TOUCHING * lever + 64.0 * f64::EPSILON * far
+        tolerance(m, c, self.poses[m.contacts()[k].body].position)
+    }
+
+    /// Every contact's gap, its rate, the speed of its point and the spin of its body at
+    /// `(t, y)`, for the watch of the gaps ([`crate::simulation::watch`]): one dual-number
+    /// pass of the forward kinematics seeded `q + ε q̇`.
+    pub(super) fn probe(&mut self, t: f64, y: Vec<f64>) -> Probe {
+        let m = self.model;
+        let (nq, nc) = (m.nq(), m.contacts().len());
+        let mut qdot = vec![0.0; nq];
+        configuration_rate(m, &y[..nq], &y[nq..nq + m.nv()], &mut qdot);
+        let qd: Vec<Dual64> = (0..nq).map(|i| Dual64::new(y[i], qdot[i])).collect();
+        let mut poses = vec![BodyPose::<Dual64>::identity(); m.bodies().len()];
+        forward_kinematics(m, &qd, &mut poses);
+        let mut p = Probe::at(t, Vec::new(), nc);
+        for k in 0..nc {
+            let c = contact_position(m, &poses, k);
+            p.gap.push(c[2].re - m.floor());
+            p.rate.push(c[2].eps);
+            p.speed
+                .push((c[0].eps.powi(2) + c[1].eps.powi(2) + c[2].eps.powi(2)).sqrt());
+            // |ω| from Ṙ Rᵀ = [ω]×.
+            let r = &poses[m.contacts()[k].body].rotation;
+            let w = |i: usize, j: usize| (0..3).map(|l| r[i][l].eps * r[j][l].re).sum::<f64>();
+            p.spin
+                .push((w(2, 1).powi(2) + w(0, 2).powi(2) + w(1, 0).powi(2)).sqrt());
+            let b = poses[m.contacts()[k].body].position;
+            p.tol.push(tolerance(
+                m,
+                [c[0].re, c[1].re, c[2].re],
+                [b[0].re, b[1].re, b[2].re],
+            ));
+        }
+        p.y = y;
+        p
     }
 
     /// The contacts that touch the floor at `y` (gap within the touching tolerance).

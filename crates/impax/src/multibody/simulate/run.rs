@@ -9,6 +9,7 @@ use crate::multibody::{forward_dynamics_in, gap_rates, Model, Workspace};
 use crate::numerics::budget::StepBudget;
 use crate::ode::Dopri5;
 use crate::simulation::events::{accumulation, locate};
+use crate::simulation::watch::watch_times;
 use crate::simulation::{EventKind, Mode, Sample, SimulationOptions};
 
 /// Relative round-off of velocities: a normal velocity within this fraction of the run's
@@ -52,9 +53,10 @@ struct Dense {
     y1: Vec<f64>,
     /// The regular samples inside the step.
     inside: Vec<(f64, Vec<f64>)>,
-    /// The watch times inside the step, ascending, then `t1`, and the states there.
-    times: Vec<f64>,
-    states: Vec<Vec<f64>>,
+    /// The times and states at which the gaps are watched: [`PARTS`] equal parts of the
+    /// step and the samples inside it, ascending, then `t1`; and more where a contact could
+    /// touch the floor unseen between two of them ([`crate::simulation::watch`]).
+    gap_watch: Vec<(f64, Vec<f64>)>,
 }
 
 impl<'a> Sim<'a> {
@@ -353,7 +355,7 @@ impl<'a> Sim<'a> {
             .collect();
         times.sort_by(f64::total_cmp);
         times.push(t1);
-        let states = times
+        let states: Vec<Vec<f64>> = times
             .iter()
             .map(|&tj| {
                 if tj == t1 {
@@ -364,14 +366,27 @@ impl<'a> Sim<'a> {
                 }
             })
             .collect();
+        let ystart = step.y0.to_vec();
+        let geo = &mut self.geo;
+        let mut probe = |t: f64, known: Option<&[f64]>| {
+            let y = known.map_or_else(
+                || {
+                    let mut y = vec![0.0; ystart.len()];
+                    step.interpolate(t, &mut y);
+                    y
+                },
+                <[f64]>::to_vec,
+            );
+            geo.probe(t, y)
+        };
+        let gap_watch = watch_times(&mut probe, t0, &ystart, &times, &states);
         Ok(Dense {
             t0,
             t1,
-            ystart: step.y0.to_vec(),
+            ystart,
             y1: step.y1.to_vec(),
             inside,
-            times,
-            states,
+            gap_watch,
         })
     }
 
@@ -384,8 +399,8 @@ impl<'a> Sim<'a> {
         let nc = self.model.contacts().len();
         let mut g0 = vec![0.0; nc];
         self.geo.gaps(&dense.ystart, &mut g0);
-        let mut gaps: Vec<Vec<f64>> = Vec::with_capacity(dense.states.len());
-        for y in &dense.states {
+        let mut gaps: Vec<Vec<f64>> = Vec::with_capacity(dense.gap_watch.len());
+        for (_, y) in &dense.gap_watch {
             let mut g = vec![0.0; nc];
             self.geo.gaps(y, &mut g);
             gaps.push(g);
@@ -394,7 +409,8 @@ impl<'a> Sim<'a> {
         for k in 0..nc {
             let tol = self.geo.touching_tolerance(&dense.ystart, k);
             let mut prev = (dense.t0, g0[k]);
-            for (&tj, g) in dense.times.iter().zip(&gaps) {
+            for ((tj, _), g) in dense.gap_watch.iter().zip(&gaps) {
+                let tj = *tj;
                 if prev.1 > 0.0 && g[k] <= 0.0 {
                     brackets.push((k, prev.0, tj));
                     break;

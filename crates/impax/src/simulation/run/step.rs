@@ -11,6 +11,7 @@ use crate::numerics::budget::StepBudget;
 use crate::simulation::closed::{self, Closed, Hint, Regime, FORCE_ROUND_OFF};
 use crate::simulation::events::{gap_of, locate, watched, watched_value, Watched};
 use crate::simulation::record::Mode;
+use crate::simulation::watch::{watch_times, Probe};
 use crate::simulation::{StopReason, SIMULATION_MAX_STEPS};
 
 /// A sliding contact whose force coefficient is within this fraction of its terms when the
@@ -33,6 +34,9 @@ struct Dense {
     times: Vec<f64>,
     /// The states at `times`.
     states: Vec<Vec<f64>>,
+    /// The times and states at which the open contacts' gaps are watched: `times` and
+    /// more where a contact could touch its surface unseen between two of them (`watch.rs`).
+    gap_watch: Vec<(f64, Vec<f64>)>,
 }
 
 /// The watched quantities' falls through zero in a step.
@@ -136,6 +140,27 @@ impl<M: Mechanism + ?Sized> Sim<'_, M> {
                 states.push(buf.clone());
             }
         }
+        // The gaps' watch: more times where an open contact could dip through unseen.
+        let m = self.m;
+        let open: Vec<usize> = (0..m.contacts().len())
+            .filter(|&k| !self.closed.iter().any(|c| c.contact == k))
+            .collect();
+        let gap_watch = if open.is_empty() {
+            Vec::new()
+        } else {
+            let mut probe = |t: f64, known: Option<&[f64]>| {
+                let y = known.map_or_else(
+                    || {
+                        let mut y = vec![0.0; ystart.len()];
+                        step.interpolate(t, &mut y);
+                        y
+                    },
+                    <[f64]>::to_vec,
+                );
+                Probe::planar(m, &open, n, t, y)
+            };
+            watch_times(&mut probe, t0, &ystart, &times, &states)
+        };
         Ok(Dense {
             t0,
             t1,
@@ -144,6 +169,7 @@ impl<M: Mechanism + ?Sized> Sim<'_, M> {
             inside,
             times,
             states,
+            gap_watch,
         })
     }
 
@@ -153,7 +179,10 @@ impl<M: Mechanism + ?Sized> Sim<'_, M> {
     fn watch_gaps(&self, closed: &[Closed], dense: &Dense, crossings: &mut Crossings) {
         let (m, n) = (self.m, self.n);
         let Dense {
-            t0, ystart, times, ..
+            t0,
+            ystart,
+            gap_watch,
+            ..
         } = dense;
         for k in 0..m.contacts().len() {
             if closed.iter().any(|c| c.contact == k) {
@@ -162,8 +191,8 @@ impl<M: Mechanism + ?Sized> Sim<'_, M> {
             let g0 = gap_of(m, k, ystart);
             let tol = dynamics::touching_tolerance(m, k, &ystart[..n]);
             let mut prev = (*t0, g0);
-            for (&tj, yj) in times.iter().zip(&dense.states) {
-                let g = gap_of(m, k, yj);
+            for (tj, yj) in gap_watch {
+                let (tj, g) = (*tj, gap_of(m, k, yj));
                 if prev.1 > 0.0 && g <= 0.0 {
                     crossings.brackets.push((Watched::Gap(k), prev.0, tj));
                     break;
