@@ -227,6 +227,19 @@ pub(crate) fn finite(field: &str, value: f64) -> Result<f64> {
     }
 }
 
+/// [`finite`] with the field's name built only for the error (names of matrix entries and
+/// per-contact fields are formatted: a batch of valid problems should not pay for them).
+pub(crate) fn finite_named(field: impl FnOnce() -> String, value: f64) -> Result<f64> {
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(Error::NotFinite {
+            field: field(),
+            value,
+        })
+    }
+}
+
 /// Check that the kinetic energy `½ uᵀMu = energy` of generalized velocities whose largest
 /// magnitude is `u_max` is representable with room to spare — below `1e300`, and above
 /// `1e-290` unless the velocities are all zero — so that `ΔT`, `T⁺` and `T⁺/T⁻` are numbers;

@@ -60,7 +60,7 @@ pub(crate) fn coefficients(
         }
     };
     for (j, &x) in values.iter().enumerate() {
-        crate::error::finite(&field(j), x)?;
+        crate::error::finite_named(|| field(j), x)?;
         if let Some(reason) = check(x) {
             return Err(Error::OutOfRange {
                 field: field(j),
@@ -194,7 +194,7 @@ pub(crate) fn check(
         })?;
     }
     for (i, &x) in v.iter().enumerate() {
-        crate::error::finite(&velocity_name(d, i), x)?;
+        crate::error::finite_named(|| velocity_name(d, i), x)?;
     }
     let mu = coefficients("friction", friction, k, crate::error::friction_out_of_range)?;
     let e = coefficients("restitution", restitution, k, |x| {
@@ -218,8 +218,8 @@ fn symmetric(d: usize, mut w: DMatrix<f64>) -> Result<DMatrix<f64>> {
     let n = w.nrows();
     for i in 0..n {
         for j in 0..n {
-            crate::error::finite(
-                &format!("w[{},{}]", row_name(d, i), row_name(d, j)),
+            crate::error::finite_named(
+                || format!("w[{},{}]", row_name(d, i), row_name(d, j)),
                 w[(i, j)],
             )?;
         }
