@@ -105,20 +105,32 @@ impl Probe {
 /// The times and states at which to watch the gaps in a step from `(t0, y0)`: the regular
 /// watch times `times` (ascending, the step's end last; states `states`) and more inside
 /// the parts between them ([`look_into`]), up to the end of the first part in which a gap
-/// falls through zero. `probe` gives the probe at any time of the step (from its dense
-/// output).
+/// falls through zero. `interpolate` gives the state at any time of the step (its dense
+/// output), `probe` the probe of a state.
 pub(crate) fn watch_times(
-    probe: &mut impl FnMut(f64, Option<&[f64]>) -> Probe,
+    interpolate: impl Fn(f64, &mut [f64]),
+    mut probe: impl FnMut(f64, Vec<f64>) -> Probe,
     t0: f64,
     y0: &[f64],
     times: &[f64],
     states: &[Vec<f64>],
 ) -> Vec<(f64, Vec<f64>)> {
+    let mut at = |t: f64, known: Option<&[f64]>| {
+        let y = known.map_or_else(
+            || {
+                let mut y = vec![0.0; y0.len()];
+                interpolate(t, &mut y);
+                y
+            },
+            <[f64]>::to_vec,
+        );
+        probe(t, y)
+    };
     let mut out = Vec::with_capacity(times.len());
-    let mut a = probe(t0, Some(y0));
+    let mut a = at(t0, Some(y0));
     for (&tj, yj) in times.iter().zip(states) {
-        let b = probe(tj, Some(yj));
-        let crossed = look_into(probe, &a, &b, 0, &mut out);
+        let b = at(tj, Some(yj));
+        let crossed = look_into(&mut at, &a, &b, 0, &mut out);
         out.push((tj, yj.clone()));
         if crossed {
             break;

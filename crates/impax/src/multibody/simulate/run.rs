@@ -368,18 +368,14 @@ impl<'a> Sim<'a> {
             .collect();
         let ystart = step.y0.to_vec();
         let geo = &mut self.geo;
-        let mut probe = |t: f64, known: Option<&[f64]>| {
-            let y = known.map_or_else(
-                || {
-                    let mut y = vec![0.0; ystart.len()];
-                    step.interpolate(t, &mut y);
-                    y
-                },
-                <[f64]>::to_vec,
-            );
-            geo.probe(t, y)
-        };
-        let gap_watch = watch_times(&mut probe, t0, &ystart, &times, &states);
+        let gap_watch = watch_times(
+            |t, y| step.interpolate(t, y),
+            |t, y| geo.probe(t, y),
+            t0,
+            &ystart,
+            &times,
+            &states,
+        );
         Ok(Dense {
             t0,
             t1,

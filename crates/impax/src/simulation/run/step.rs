@@ -148,18 +148,14 @@ impl<M: Mechanism + ?Sized> Sim<'_, M> {
         let gap_watch = if open.is_empty() {
             Vec::new()
         } else {
-            let mut probe = |t: f64, known: Option<&[f64]>| {
-                let y = known.map_or_else(
-                    || {
-                        let mut y = vec![0.0; ystart.len()];
-                        step.interpolate(t, &mut y);
-                        y
-                    },
-                    <[f64]>::to_vec,
-                );
-                Probe::planar(m, &open, n, t, y)
-            };
-            watch_times(&mut probe, t0, &ystart, &times, &states)
+            watch_times(
+                |t, y| step.interpolate(t, y),
+                |t, y| Probe::planar(m, &open, n, t, y),
+                t0,
+                &ystart,
+                &times,
+                &states,
+            )
         };
         Ok(Dense {
             t0,
