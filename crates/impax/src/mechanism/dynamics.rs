@@ -317,7 +317,13 @@ pub fn touching_tolerance<M: Mechanism + ?Sized>(m: &M, k: usize, q: &[f64]) -> 
     let mut poses = vec![Pose::new(0.0, 0.0, 0.0); m.bodies().len()];
     m.poses(q, &mut poses);
     let b = poses[contact.body];
-    let lever = (c[0] - b.x).hypot(c[1] - b.y);
+    touching_tolerance_of(c, s, [b.x, b.y])
+}
+
+/// [`touching_tolerance`] of a contact point `c` on a body whose centre of mass is at `b`,
+/// its surface's point `s`.
+pub(crate) fn touching_tolerance_of(c: [f64; 2], s: [f64; 2], b: [f64; 2]) -> f64 {
+    let lever = (c[0] - b[0]).hypot(c[1] - b[1]);
     let far = c[0].hypot(c[1]) + s[0].hypot(s[1]);
     TOUCHING * lever + 64.0 * f64::EPSILON * far
 }

@@ -38,8 +38,6 @@ const MAX_PARTS: f64 = 1024.0;
 pub(crate) struct Probe {
     /// The time.
     pub t: f64,
-    /// The state.
-    pub y: Vec<f64>,
     /// `φ_k`.
     pub gap: Vec<f64>,
     /// `φ̇_k`.
@@ -53,11 +51,10 @@ pub(crate) struct Probe {
 }
 
 impl Probe {
-    /// An empty probe at `(t, y)`, for the caller to fill contact by contact.
-    pub(crate) fn at(t: f64, y: Vec<f64>, contacts: usize) -> Probe {
+    /// An empty probe at `t`, for the caller to fill contact by contact.
+    pub(crate) fn at(t: f64, contacts: usize) -> Probe {
         Probe {
             t,
-            y,
             gap: Vec::with_capacity(contacts),
             rate: Vec::with_capacity(contacts),
             speed: Vec::with_capacity(contacts),
@@ -74,14 +71,13 @@ impl Probe {
         open: &[usize],
         n: usize,
         t: f64,
-        y: Vec<f64>,
+        y: &[f64],
     ) -> Probe {
-        let (q, u) = (&y[..n], &y[n..2 * n]);
-        let qd: Vec<Dual64> = q.iter().zip(u).map(|(&x, &v)| Dual64::new(x, v)).collect();
+        let qd: Vec<Dual64> = (0..n).map(|i| Dual64::new(y[i], y[n + i])).collect();
         let zero = Dual64::from(0.0);
         let mut poses = vec![Pose::new(zero, zero, zero); m.bodies().len()];
         m.poses(&qd, &mut poses);
-        let mut p = Probe::at(t, Vec::new(), open.len());
+        let mut p = Probe::at(t, open.len());
         for &k in open {
             let nrm = m.contacts()[k].surface.normal;
             let c = m.contact_point(k, &qd);
@@ -90,48 +86,53 @@ impl Probe {
             p.gap.push(dx.re * nrm.x + dy.re * nrm.y);
             p.rate.push(dx.eps * nrm.x + dy.eps * nrm.y);
             p.speed.push(dx.eps.hypot(dy.eps));
-            let mut spin = poses[m.contacts()[k].body].angle.eps.abs();
+            let body = poses[m.contacts()[k].body];
+            let mut spin = body.angle.eps.abs();
             if let Some(other) = m.surface_body(k) {
                 spin = spin.max(poses[other].angle.eps.abs());
             }
             p.spin.push(spin);
-            p.tol.push(dynamics::touching_tolerance(m, k, q));
+            p.tol.push(dynamics::touching_tolerance_of(
+                [c[0].re, c[1].re],
+                [s[0].re, s[1].re],
+                [body.x.re, body.y.re],
+            ));
         }
-        p.y = y;
         p
     }
 }
 
-/// The times and states at which to watch the gaps in a step from `(t0, y0)`: the regular
-/// watch times `times` (ascending, the step's end last; states `states`) and more inside
-/// the parts between them ([`look_into`]), up to the end of the first part in which a gap
-/// falls through zero. `interpolate` gives the state at any time of the step (its dense
-/// output), `probe` the probe of a state.
+/// The times at which to watch the gaps in a step and the gaps there (the probe's contacts,
+/// in its order).
+pub(crate) type Watch = Vec<(f64, Vec<f64>)>;
+
+/// The probes at which to watch the gaps in a step from `(t0, y0)`: the regular watch times
+/// `times` (ascending, the step's end last; states `states`) and more inside the parts
+/// between them ([`look_into`]), up to the end of the first part in which a gap falls
+/// through zero. `interpolate` gives the state at any time of the step (its dense output),
+/// `probe` the probe of a state.
 pub(crate) fn watch_times(
     interpolate: impl Fn(f64, &mut [f64]),
-    mut probe: impl FnMut(f64, Vec<f64>) -> Probe,
+    mut probe: impl FnMut(f64, &[f64]) -> Probe,
     t0: f64,
     y0: &[f64],
     times: &[f64],
     states: &[Vec<f64>],
-) -> Vec<(f64, Vec<f64>)> {
-    let mut at = |t: f64, known: Option<&[f64]>| {
-        let y = known.map_or_else(
-            || {
-                let mut y = vec![0.0; y0.len()];
-                interpolate(t, &mut y);
-                y
-            },
-            <[f64]>::to_vec,
-        );
-        probe(t, y)
+) -> Watch {
+    let mut buf = vec![0.0; y0.len()];
+    let mut at = |t: f64, known: Option<&[f64]>| match known {
+        Some(y) => probe(t, y),
+        None => {
+            interpolate(t, &mut buf);
+            probe(t, &buf)
+        }
     };
     let mut out = Vec::with_capacity(times.len());
     let mut a = at(t0, Some(y0));
     for (&tj, yj) in times.iter().zip(states) {
         let b = at(tj, Some(yj));
         let crossed = look_into(&mut at, &a, &b, 0, &mut out);
-        out.push((tj, yj.clone()));
+        out.push((b.t, b.gap.clone()));
         if crossed {
             break;
         }
@@ -148,7 +149,7 @@ fn look_into(
     a: &Probe,
     b: &Probe,
     depth: u32,
-    out: &mut Vec<(f64, Vec<f64>)>,
+    out: &mut Watch,
 ) -> bool {
     let dt = b.t - a.t;
     // Contact i reaches its surface inside the part (it may do so more than once: the first
@@ -175,7 +176,7 @@ fn look_into(
             let from = prev.as_ref().unwrap_or(a);
             let found = look_into(probe, from, next.as_ref().unwrap_or(b), depth + 1, out);
             if let Some(p) = &next {
-                out.push((p.t, p.y.clone()));
+                out.push((p.t, p.gap.clone()));
             }
             if found {
                 return true;
@@ -205,7 +206,7 @@ fn look_into(
         return crossed;
     }
     let found = look_into(probe, a, &mid, depth + 1, out);
-    out.push((mid.t, mid.y.clone()));
+    out.push((mid.t, mid.gap.clone()));
     found || look_into(probe, &mid, b, depth + 1, out) || crossed
 }
 

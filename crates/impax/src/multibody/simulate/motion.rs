@@ -113,7 +113,7 @@ impl<'a> Geometry<'a> {
     /// Every contact's gap, its rate, the speed of its point and the spin of its body at
     /// `(t, y)`, for the watch of the gaps ([`crate::simulation::watch`]): one dual-number
     /// pass of the forward kinematics seeded `q + ε q̇`.
-    pub(super) fn probe(&mut self, t: f64, y: Vec<f64>) -> Probe {
+    pub(super) fn probe(&mut self, t: f64, y: &[f64]) -> Probe {
         let m = self.model;
         let (nq, nc) = (m.nq(), m.contacts().len());
         let mut qdot = vec![0.0; nq];
@@ -121,7 +121,7 @@ impl<'a> Geometry<'a> {
         let qd: Vec<Dual64> = (0..nq).map(|i| Dual64::new(y[i], qdot[i])).collect();
         let mut poses = vec![BodyPose::<Dual64>::identity(); m.bodies().len()];
         forward_kinematics(m, &qd, &mut poses);
-        let mut p = Probe::at(t, Vec::new(), nc);
+        let mut p = Probe::at(t, nc);
         for k in 0..nc {
             let c = contact_position(m, &poses, k);
             p.gap.push(c[2].re - m.floor());
@@ -140,7 +140,6 @@ impl<'a> Geometry<'a> {
                 [b[0].re, b[1].re, b[2].re],
             ));
         }
-        p.y = y;
         p
     }
 

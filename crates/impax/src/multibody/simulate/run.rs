@@ -9,7 +9,7 @@ use crate::multibody::{forward_dynamics_in, gap_rates, Model, Workspace};
 use crate::numerics::budget::StepBudget;
 use crate::ode::Dopri5;
 use crate::simulation::events::{accumulation, locate};
-use crate::simulation::watch::watch_times;
+use crate::simulation::watch::{watch_times, Watch};
 use crate::simulation::{EventKind, Mode, Sample, SimulationOptions};
 
 /// Relative round-off of velocities: a normal velocity within this fraction of the run's
@@ -53,10 +53,11 @@ struct Dense {
     y1: Vec<f64>,
     /// The regular samples inside the step.
     inside: Vec<(f64, Vec<f64>)>,
-    /// The times and states at which the gaps are watched: [`PARTS`] equal parts of the
-    /// step and the samples inside it, ascending, then `t1`; and more where a contact could
-    /// touch the floor unseen between two of them ([`crate::simulation::watch`]).
-    gap_watch: Vec<(f64, Vec<f64>)>,
+    /// The times at which the gaps are watched and every contact's gap there: [`PARTS`]
+    /// equal parts of the step and the samples inside it, ascending, then `t1`; and more
+    /// where a contact could touch the floor unseen between two of them
+    /// ([`crate::simulation::watch`]).
+    gap_watch: Watch,
 }
 
 impl<'a> Sim<'a> {
@@ -395,17 +396,11 @@ impl<'a> Sim<'a> {
         let nc = self.model.contacts().len();
         let mut g0 = vec![0.0; nc];
         self.geo.gaps(&dense.ystart, &mut g0);
-        let mut gaps: Vec<Vec<f64>> = Vec::with_capacity(dense.gap_watch.len());
-        for (_, y) in &dense.gap_watch {
-            let mut g = vec![0.0; nc];
-            self.geo.gaps(y, &mut g);
-            gaps.push(g);
-        }
         let mut brackets = Vec::new();
         for k in 0..nc {
             let tol = self.geo.touching_tolerance(&dense.ystart, k);
             let mut prev = (dense.t0, g0[k]);
-            for ((tj, _), g) in dense.gap_watch.iter().zip(&gaps) {
+            for (tj, g) in &dense.gap_watch {
                 let tj = *tj;
                 if prev.1 > 0.0 && g[k] <= 0.0 {
                     brackets.push((k, prev.0, tj));

@@ -11,7 +11,7 @@ use crate::numerics::budget::StepBudget;
 use crate::simulation::closed::{self, Closed, Hint, Regime, FORCE_ROUND_OFF};
 use crate::simulation::events::{gap_of, locate, watched, watched_value, Watched};
 use crate::simulation::record::Mode;
-use crate::simulation::watch::{watch_times, Probe};
+use crate::simulation::watch::{watch_times, Probe, Watch};
 use crate::simulation::{StopReason, SIMULATION_MAX_STEPS};
 
 /// A sliding contact whose force coefficient is within this fraction of its terms when the
@@ -34,9 +34,10 @@ struct Dense {
     times: Vec<f64>,
     /// The states at `times`.
     states: Vec<Vec<f64>>,
-    /// The times and states at which the open contacts' gaps are watched: `times` and
-    /// more where a contact could touch its surface unseen between two of them (`watch.rs`).
-    gap_watch: Vec<(f64, Vec<f64>)>,
+    /// The times at which the open contacts' gaps are watched and the gaps there (in the
+    /// contacts' order): `times` and more where a contact could touch its surface unseen
+    /// between two of them (`watch.rs`).
+    gap_watch: Watch,
 }
 
 /// The watched quantities' falls through zero in a step.
@@ -180,15 +181,13 @@ impl<M: Mechanism + ?Sized> Sim<'_, M> {
             gap_watch,
             ..
         } = dense;
-        for k in 0..m.contacts().len() {
-            if closed.iter().any(|c| c.contact == k) {
-                continue;
-            }
+        let open = (0..m.contacts().len()).filter(|&k| !closed.iter().any(|c| c.contact == k));
+        for (i, k) in open.enumerate() {
             let g0 = gap_of(m, k, ystart);
             let tol = dynamics::touching_tolerance(m, k, &ystart[..n]);
             let mut prev = (*t0, g0);
-            for (tj, yj) in gap_watch {
-                let (tj, g) = (*tj, gap_of(m, k, yj));
+            for (tj, gaps) in gap_watch {
+                let (tj, g) = (*tj, gaps[i]);
                 if prev.1 > 0.0 && g <= 0.0 {
                     crossings.brackets.push((Watched::Gap(k), prev.0, tj));
                     break;
