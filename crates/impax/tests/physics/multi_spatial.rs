@@ -5,7 +5,7 @@
 //! on four corners (W of rank 6), and random problems whose `lcp` solutions must satisfy
 //! the conditions to 1e-12 and whose `sequential` never gains energy.
 
-use super::support::{contact_space, random_spatial_space};
+use super::support::{assert_spatial_lcp_solution, contact_space, random_spatial_space};
 use impax::math::{SplitMix64, Vec3};
 use impax::multi::spatial::{self, MultiProblem};
 use impax::multi::MultiProblem as Planar;
@@ -248,36 +248,8 @@ fn random_problems_satisfy_the_conditions() {
         let spatial::MultiDetail::Lcp { solutions } = &out.detail else {
             panic!("lcp detail")
         };
-        let v0 = p.velocity();
         for s in solutions {
-            let flat =
-                DVector::from_iterator(3 * k, s.impulses.iter().flat_map(|x| [x.x, x.y, x.z]));
-            let after = v0 + p.w() * &flat;
-            let scale = v0.amax() + (p.w().abs() * flat.abs()).amax();
-            let tol = 1e-12 * scale;
-            for c in 0..k {
-                let (pc, vc) = (
-                    s.impulses[c],
-                    Vec3::new(after[3 * c], after[3 * c + 1], after[3 * c + 2]),
-                );
-                let target = (-e[c] * v0[3 * c + 2]).max(0.0);
-                assert!((vc - s.velocities_after[c]).amax() <= tol, "reported v⁺");
-                assert!(pc.z >= 0.0);
-                let pt = pc.x.hypot(pc.y);
-                assert!(pt <= mu[c] * pc.z * (1.0 + 1e-12) + 1e-300);
-                assert!(vc.z >= target - tol);
-                if pc.z > 0.0 {
-                    assert!((vc.z - target).abs() <= tol, "complementarity");
-                }
-                let vt = vc.x.hypot(vc.y);
-                if vt > tol {
-                    // Slip: friction opposes the slip and is on the cone's edge.
-                    assert!((pt - mu[c] * pc.z).abs() <= 1e-12 * pc.z.max(1e-300) + tol);
-                    let cross = pc.x * vc.y - pc.y * vc.x;
-                    assert!(cross.abs() <= 1e-11 * scale * pt.max(1e-300) + 1e-300);
-                    assert!(pc.x * vc.x + pc.y * vc.y <= tol * pt);
-                }
-            }
+            assert_spatial_lcp_solution(&p, s, &format!("round {round}"));
         }
     }
     assert!(total > 330, "{total}");

@@ -17,7 +17,7 @@
 //! `μ` with the problem's numbers overflowed: a fuzzed spatial problem with `μ = 1.4e308`
 //! integrated for 0.6 s to a breakdown).
 
-use crate::support::random_spatial_space;
+use crate::support::{assert_spatial_lcp_solution, random_spatial_space};
 use impax::law::BreakdownReason;
 use impax::math::{Mat2, Mat3, SplitMix64, Vec2, Vec3};
 use impax::multi::spatial;
@@ -132,37 +132,8 @@ fn spatial_lcp_solutions_hold_at_any_friction() {
         let spatial::MultiDetail::Lcp { solutions } = &out.detail else {
             panic!("lcp detail")
         };
-        let v0 = p.velocity();
         for s in solutions {
-            let flat =
-                DVector::from_iterator(3 * k, s.impulses.iter().flat_map(|x| [x.x, x.y, x.z]));
-            let after = v0 + p.w() * &flat;
-            let scale = v0.amax() + (p.w().abs() * flat.abs()).amax();
-            let tol = 1e-12 * scale;
-            for c in 0..k {
-                let (pc, vc) = (
-                    s.impulses[c],
-                    Vec3::new(after[3 * c], after[3 * c + 1], after[3 * c + 2]),
-                );
-                assert!(
-                    (vc - s.velocities_after[c]).amax() <= tol,
-                    "round {round}, μ = {mu:e}: reported v⁺"
-                );
-                assert!(pc.z >= 0.0);
-                let pt = pc.x.hypot(pc.y);
-                assert!(pt <= mu * pc.z * (1.0 + 1e-12) + 1e-300);
-                if vc.x.hypot(vc.y) > tol {
-                    assert!(
-                        pc.x * vc.x + pc.y * vc.y <= tol * pt,
-                        "friction drives the slip"
-                    );
-                }
-            }
-            let dt = 0.5 * (v0 + &after).dot(&flat);
-            assert!(
-                (dt - s.energy_change).abs() <= 1e-12 * scale * flat.amax(),
-                "ΔT"
-            );
+            assert_spatial_lcp_solution(&p, s, &format!("round {round}, μ = {mu:e}"));
         }
     }
     assert!(solved > 200, "{solved}");

@@ -289,3 +289,62 @@ pub fn random_spatial_space(rng: &mut SplitMix64, k: usize) -> Option<(DMatrix<f
     let (w, v) = contact_space(&j, &masses, &u);
     (0..k).any(|c| v[3 * c + 2] < 0.0).then_some((w, v))
 }
+
+/// Asserts that an `lcp` solution of the spatial problem `p` meets the
+/// conditions to `1e-12` of the velocity scale, with `v⁺ = v⁻ + W p` recomputed here: the
+/// reported velocities, `p_n ≥ 0`, the cone, Newton's target with complementarity, a slip's
+/// impulse on the cone's edge against the slip, and `ΔT = ½ (v⁻ + v⁺)·p`. The tolerances are
+/// relative to the impulses' and friction's scale, so they hold at any `μ`.
+pub fn assert_spatial_lcp_solution(
+    p: &impax::multi::spatial::MultiProblem,
+    s: &impax::multi::spatial::LcpSolution,
+    label: &str,
+) {
+    let k = p.contacts();
+    let flat = DVector::from_iterator(3 * k, s.impulses.iter().flat_map(|x| [x.x, x.y, x.z]));
+    let v0 = p.velocity();
+    let after = v0 + p.w() * &flat;
+    let scale = v0.amax() + (p.w().abs() * flat.abs()).amax();
+    let tol = 1e-12 * scale;
+    for c in 0..k {
+        let mu = p.friction(c);
+        let pc = s.impulses[c];
+        let vc = impax::math::Vec3::new(after[3 * c], after[3 * c + 1], after[3 * c + 2]);
+        let target = (-p.restitution(c) * v0[3 * c + 2]).max(0.0);
+        assert!(
+            (vc - s.velocities_after[c]).amax() <= tol,
+            "{label}: reported v⁺"
+        );
+        assert!(pc.z >= 0.0, "{label}: p_n < 0");
+        let pt = pc.x.hypot(pc.y);
+        assert!(
+            pt <= mu * pc.z * (1.0 + 1e-12) + 1e-300,
+            "{label}: outside the cone"
+        );
+        assert!(vc.z >= target - tol, "{label}: short of Newton's target");
+        if pc.z > 0.0 {
+            assert!((vc.z - target).abs() <= tol, "{label}: complementarity");
+        }
+        if vc.x.hypot(vc.y) > tol {
+            // Slip: friction opposes the slip and is on the cone's edge.
+            assert!(
+                (pt - mu * pc.z).abs() <= 1e-12 * mu * pc.z + tol,
+                "{label}: a slip inside the cone"
+            );
+            let cross = pc.x * vc.y - pc.y * vc.x;
+            assert!(
+                cross.abs() <= 1e-11 * scale * pt.max(1e-300) + 1e-300,
+                "{label}: friction not along the slip"
+            );
+            assert!(
+                pc.x * vc.x + pc.y * vc.y <= tol * pt,
+                "{label}: friction drives the slip"
+            );
+        }
+    }
+    let dt = 0.5 * (v0 + &after).dot(&flat);
+    assert!(
+        (dt - s.energy_change).abs() <= 1e-12 * scale * flat.amax(),
+        "{label}: ΔT"
+    );
+}
