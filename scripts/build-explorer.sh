@@ -4,8 +4,9 @@
 #
 #   bash scripts/build-explorer.sh           # the release module, and its sources' fingerprint
 #                                            # in crates/impax-wasm/module-sources.sha256 (commit both)
-#   bash scripts/build-explorer.sh --check   # a notice if the committed module predates the
-#                                            # sources (their fingerprint differs)
+#   bash scripts/build-explorer.sh --check   # exit 0 if the committed module was built from
+#                                            # today's sources (their fingerprint), else a
+#                                            # notice and exit 1
 #   bash scripts/build-explorer.sh --fast    # a quicker build (no LTO, 16 codegen units) for a
 #                                            # test run; the fingerprint is left alone
 #
@@ -28,10 +29,12 @@ fingerprint() {
 if [[ "$mode" == "--check" ]]; then
     if ! git rev-parse --is-inside-work-tree >/dev/null 2>&1; then
         echo "(not a git checkout: the module's fingerprint is not checked)"
+        exit 1
     elif [[ "$(fingerprint)" != "$(cat crates/impax-wasm/module-sources.sha256 2>/dev/null)" ]]; then
         echo "notice: the committed web/impax_wasm.wasm predates today's sources (the fingerprint in"
         echo "        crates/impax-wasm/module-sources.sha256 differs): rebuild it with"
         echo "        bash scripts/build-explorer.sh and commit both files"
+        exit 1
     else
         echo "web/impax_wasm.wasm: built from today's sources"
     fi

@@ -22,7 +22,7 @@
 
 use crate::support::{
     body_after, chain_jacobian, contact_space, flat, kinetic, random_multi, random_one,
-    rod_jacobian,
+    rod_jacobian, solved_in_parallel,
 };
 use impax::math::{SplitMix64, Vec2};
 use impax::multi::{lzb, ContactPhaseKind, LzbPrimary, MultiDetail, MultiOutcome, MultiProblem};
@@ -535,7 +535,8 @@ fn never_gains_energy_on_random_problems() {
     let mut verdicts = [0usize; 3];
     let mut worst_works = 0.0f64;
     let n = 100_000;
-    for trial in 0..n {
+    // Made in the generator's order, resolved in parallel, checked in order.
+    let make = |trial: usize| {
         let k = 2 + trial % 3;
         let r = random_multi(&mut rng, k);
         let kappa: Vec<f64> = (0..k)
@@ -559,7 +560,11 @@ fn never_gains_energy_on_random_problems() {
             .unwrap()
             .with_exponent(eta)
             .unwrap();
-        let o = match lzb::resolve(&p) {
+        (r, p)
+    };
+    for ((r, p), out) in solved_in_parallel(n, make, |(_, p)| lzb::resolve(p)) {
+        let k = p.contacts();
+        let o = match out {
             Ok(o) => o,
             Err(b) => {
                 match b.reason.id() {

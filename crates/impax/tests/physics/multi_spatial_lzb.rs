@@ -18,7 +18,7 @@
 //!   cone, no consistent result leaving a contact approaching; the breakdowns counted.
 
 use super::multi_spatial::box_rows;
-use super::support::{contact_space, random_multi, random_spatial_space};
+use super::support::{contact_space, random_multi, random_spatial_space, solved_in_parallel};
 use impax::law::Verdict;
 use impax::math::{Mat3, SplitMix64, Vec3};
 use impax::multi::scenarios::BoxFlat;
@@ -462,10 +462,11 @@ fn never_gains_energy_on_random_problems() {
     let mut breakdowns = std::collections::BTreeMap::<&str, [usize; 2]>::new();
     let mut verdicts = [0usize; 3];
     let (mut worst_works, mut largest_gain) = (0.0f64, f64::NEG_INFINITY);
-    for trial in 0..n {
+    // Made in the generator's order, resolved in parallel, checked in order.
+    let make = |trial: usize| {
         let k = 2 + trial % 3;
         let p = random_spatial(&mut rng, k, true);
-        let p = if trial % 4 == 3 {
+        if trial % 4 == 3 {
             let kappa: Vec<f64> = (0..k).map(|_| rng.decades(-2.0, 2.0)).collect();
             p.with_stiffness(&kappa)
                 .unwrap()
@@ -473,9 +474,12 @@ fn never_gains_energy_on_random_problems() {
                 .unwrap()
         } else {
             p
-        };
+        }
+    };
+    for (p, out) in solved_in_parallel(n, make, lzb::resolve) {
+        let k = p.contacts();
         let singular = p.rank() < 3 * k;
-        let o = match lzb::resolve(&p) {
+        let o = match out {
             Ok(o) => o,
             Err(b) => {
                 let id = b.reason.id();

@@ -348,3 +348,20 @@ pub fn assert_spatial_lcp_solution(
         "{label}: ΔT"
     );
 }
+
+/// `n` cases made by `make` in order (a random generator's sequence is kept), solved by
+/// `solve` in parallel (rayon) a chunk at a time, and handed back in order with their
+/// answers: a long randomized test then uses both cores whatever else runs.
+pub fn solved_in_parallel<T: Send + Sync, R: Send>(
+    n: usize,
+    mut make: impl FnMut(usize) -> T,
+    solve: impl Fn(&T) -> R + Sync,
+) -> impl Iterator<Item = (T, R)> {
+    use rayon::prelude::*;
+    const CHUNK: usize = 1000;
+    (0..n).step_by(CHUNK).flat_map(move |first| {
+        let batch: Vec<T> = (first..n.min(first + CHUNK)).map(&mut make).collect();
+        let answers: Vec<R> = batch.par_iter().map(&solve).collect();
+        batch.into_iter().zip(answers)
+    })
+}
