@@ -290,9 +290,8 @@ pub fn random_spatial_space(rng: &mut SplitMix64, k: usize) -> Option<(DMatrix<f
     (0..k).any(|c| v[3 * c + 2] < 0.0).then_some((w, v))
 }
 
-/// Asserts that an `lcp` solution of the spatial problem `p` meets the
-/// conditions to `1e-12` of the velocity scale, with `v⁺ = v⁻ + W p` recomputed here: the
-/// reported velocities, `p_n ≥ 0`, the cone, Newton's target with complementarity, a slip's
+/// Asserts that an `lcp` solution of the spatial problem `p` meets the conditions to `1e-12`
+/// of the velocity scale, with `v⁺ = v⁻ + W p` recomputed here: the reported velocities, `p_n ≥ 0`, the cone, Newton's target with complementarity, a slip's
 /// impulse on the cone's edge against the slip, and `ΔT = ½ (v⁻ + v⁺)·p`. The tolerances are
 /// relative to the impulses' and friction's scale, so they hold at any `μ`.
 pub fn assert_spatial_lcp_solution(
