@@ -46,7 +46,7 @@ else
     fi
 fi
 
-echo "-- impax, embedding the fresh module (stage at $SECONDS s)"
+echo "-- impax, embedding the module (stage at $SECONDS s)"
 cargo build -p impax-cli --locked
 bin="${CARGO_TARGET_DIR:-target}/debug/impax"
 
