@@ -374,6 +374,19 @@ pub(crate) fn error_measure<const N: usize>(step: &Step<N>, scale: impl Fn(usize
     }
 }
 
+/// A step's continuous extension: the state at a fraction `θ ∈ [0, 1]` of the step.
+pub(crate) trait Interpolant<const N: usize> {
+    /// The state at the fraction `theta` of the step.
+    fn at(&self, theta: f64) -> [f64; N];
+}
+
+impl<const N: usize> Interpolant<N> for Dense<N> {
+    #[inline]
+    fn at(&self, theta: f64) -> [f64; N] {
+        Dense::at(self, theta)
+    }
+}
+
 /// The seventh-order continuous extension of one accepted step (three more stages).
 pub(crate) struct Dense<const N: usize> {
     r: [[f64; N]; 8],

@@ -605,7 +605,7 @@ fn never_gains_energy_on_random_problems() {
         assert!((dt - o.energy_change).abs() <= 1e-10 * escale);
         // Coulomb: every impulse inside its cone.
         for (j, c) in o.contacts.iter().enumerate() {
-            assert!(c.impulse.y >= 0.0);
+            assert!(c.impulse.y >= 0.0, "p_n {} on {p:?}", c.impulse.y);
             assert!(
                 c.impulse.x.abs() <= p.friction(j) * c.impulse.y * (1.0 + 1e-9) + 1e-12 * escale
             );

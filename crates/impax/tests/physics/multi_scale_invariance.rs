@@ -87,6 +87,34 @@ fn shape(text: String) -> String {
     out
 }
 
+/// The regimes' text with every repeated cycle of two regimes at a contact written once
+/// (`A, B, A, B, A` → `A, B, A`): the micro-impacts of a chattering tail, as many as it takes
+/// for the exchanges to fall below the settled threshold (`lzb`), a number that round-off of
+/// the canonical units can move by a few in a tail of a hundred.
+fn cycles_once(text: &str) -> String {
+    let Some(open) = text.find('[') else {
+        return text.to_string();
+    };
+    let (verdict, lists) = text.split_at(open);
+    let inner = lists.trim_start_matches("[[").trim_end_matches("]]");
+    let contacts: Vec<String> = inner
+        .split("], [")
+        .map(|c| {
+            let mut kinds: Vec<&str> = c.split(", ").collect();
+            let mut i = 0;
+            while i + 4 <= kinds.len() {
+                if kinds[i..i + 2] == kinds[i + 2..i + 4] {
+                    kinds.drain(i + 2..i + 4);
+                } else {
+                    i += 1;
+                }
+            }
+            kinds.join(", ")
+        })
+        .collect();
+    format!("{verdict}[[{}]]", contacts.join("], ["))
+}
+
 /// Whether `x · k` stays a normal number (or zero) with room to spare.
 fn representable(x: f64, k: f64) -> bool {
     x == 0.0 || (1e-290..1e290).contains(&(x.abs() * k))
@@ -115,7 +143,13 @@ fn agree(
         (Err(x), Err(y)) => return assert_eq!(x, y, "{what}"),
         _ => panic!("{what}: {a:?} vs {b:?}"),
     };
-    assert_eq!(x.labels, y.labels, "{what}");
+    // (Exact units: the same regimes to the last one; others: the same up to the number of
+    // micro-impacts of a chattering tail, `cycles_once`.)
+    if tol == 0.0 {
+        assert_eq!(x.labels, y.labels, "{what}");
+    } else {
+        assert_eq!(cycles_once(&x.labels), cycles_once(&y.labels), "{what}");
+    }
     let lists = [
         (&x.impulse, &y.impulse, kp, 0.0),
         (&x.velocity, &y.velocity, kv, vmax),

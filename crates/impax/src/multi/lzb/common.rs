@@ -4,7 +4,7 @@
 //! stick set's tangential block.
 
 use crate::multi::{LzbPrimary, RANK_TOL};
-use crate::numerics::dop853::Dense;
+use crate::numerics::dop853::Interpolant;
 use crate::numerics::roots::illinois;
 
 use super::PRIMARY_MARGIN;
@@ -214,13 +214,13 @@ impl Primary {
     /// overtook the primary's (located on the dense output, which is built only then);
     /// `pn(c, y)` is contact `c`'s normal impulse.
     #[allow(clippy::too_many_arguments)]
-    pub(in crate::multi) fn follow<const N: usize>(
+    pub(in crate::multi) fn follow<const N: usize, D: Interpolant<N>>(
         &mut self,
         k: usize,
         theta: f64,
         y0: &[f64; N],
         y1: &[f64; N],
-        dense: &dyn Fn() -> Dense<N>,
+        dense: &dyn Fn() -> D,
         order: impl Fn(usize, &[f64]) -> f64,
         active: impl Fn(usize) -> bool,
         pn: impl Fn(usize, &[f64]) -> f64,

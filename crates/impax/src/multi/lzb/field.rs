@@ -158,6 +158,9 @@ pub(super) struct Field {
     div: [f64; MAXK],
     /// `T`.
     map: [[f64; MAXK]; MAXK],
+    /// Whether each contact slips with friction (`T_jj ≠ 0` its only entry): the contacts
+    /// whose friction does work (a sticking contact's `v_t` is zero).
+    rubs: [bool; MAXK],
 }
 
 impl Field {
@@ -169,6 +172,7 @@ impl Field {
             active: [false; MAXK],
             div: [1.0; MAXK],
             map: [[0.0; MAXK]; MAXK],
+            rubs: [false; MAXK],
         };
         // The slip friction per unit normal force (0 off or in stick).
         let mut slip = [0.0; MAXK];
@@ -180,6 +184,7 @@ impl Field {
             if let (true, Tangent::Slip(sigma)) = (modes.active(j), modes.tangent[j]) {
                 slip[j] = -setup.mu[j] * sigma;
                 field.map[j][j] = slip[j];
+                field.rubs[j] = slip[j] != 0.0;
             }
         }
         let st = &modes.stick;
@@ -212,6 +217,25 @@ impl Field {
             *ptj = dot(&row[..k], &f[..k]);
         }
         pt
+    }
+
+    /// Whether contact `j` carries a force.
+    #[inline(always)]
+    pub(super) fn active(&self, j: usize) -> bool {
+        self.active[j]
+    }
+
+    /// Row `j` of `T` (contact `j`'s tangential impulse rate per unit normal force of each
+    /// contact).
+    #[inline(always)]
+    pub(super) fn map_row(&self, j: usize) -> &[f64; MAXK] {
+        &self.map[j]
+    }
+
+    /// Whether contact `j` slips with friction.
+    #[inline(always)]
+    pub(super) fn rubs(&self, j: usize) -> bool {
+        self.rubs[j]
     }
 
     /// Contact `j`'s divisor of the deflection rate, `ds_j/dτ = −v_nj / div_j` (1 in

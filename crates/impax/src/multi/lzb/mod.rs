@@ -87,13 +87,21 @@
 //! The right-hand side is smooth except where a contact's force law is not, at `s_j = 0`
 //! (`F ∝ s^η`): at the start of the impact and at each separation the path is integrated in
 //! regularising variables (`u = τ^(1/m)`, `σ = s_j^(1/m)`: module `variable.rs`), in which it
-//! is analytic for Hertz's exponent. The integrator is the explicit Runge–Kutta pair of order
-//! 8 of Dormand & Prince (DOP853, as in Hairer, Nørsett & Wanner, *Solving ODEs I*, §II.5;
-//! the crate's `numerics::dop853`), relative tolerance `1e-12` on every component; the events
-//! — a compression ending (`v_nj = 0`), a separation (`Ê_j = 0`), a recompression while
-//! loaded, a contact joining, a slip halting, a stick breaking — are located on the dense
-//! output and the path goes on from the discrete solution there (`events.rs`, `path.rs`). A
-//! primary switch is located on the dense output too.
+//! is analytic for Hertz's exponent. Where every contact that carries a force is loaded
+//! (`s_j > 0`) the path is a **Taylor series** in the variable, to order 17, its coefficients
+//! by the recurrences of automatic differentiation (`s^η`, products, the quotient of a
+//! separation's variable) and its step where the terms reach the tolerance (`series.rs`);
+//! elsewhere — the first step of the impact and of a contact joining, where a force starts
+//! from zero, and where a series' coefficients overflow (friction of `1e100`) — the explicit
+//! Runge–Kutta pair of order 8 of Dormand & Prince (DOP853, as in Hairer, Nørsett & Wanner,
+//! *Solving ODEs I*, §II.5; the crate's `numerics::dop853`) takes the step. The tolerance is
+//! `1e-12` relative on every component. The events — a compression ending (`v_nj = 0`), a
+//! separation (`Ê_j = 0`), a recompression while loaded, a contact joining, a slip halting,
+//! a stick breaking — are located on the step's dense output (the series itself, or DOP853's
+//! seventh-order extension) and the path goes on from the solution there (`events.rs`,
+//! `path.rs`); a series step in which an event's function rises above zero and falls back
+//! (a slip that halts and would resume the same way) is shortened to where it is above zero,
+//! so the event is seen. A primary switch is located on the dense output too.
 //!
 //! **Phases in closed form.** Where the contacts that carry a force load in fixed
 //! proportions — one contact alone (the striking corner of a rocking block, the first ball
@@ -165,6 +173,7 @@ mod events;
 mod field;
 mod friction;
 mod path;
+mod series;
 mod state;
 mod stepper;
 mod variable;

@@ -1,14 +1,18 @@
-//! The path of the impact in `τ`: the adaptive DOP853 integration with its error test, the
-//! first event inside an accepted step located on the discrete solution, what each event
-//! changes, and the record of each contact (works, phases) and of the primary contact.
+//! The path of the impact in `τ`: each step a Taylor series (`series.rs`) where every loaded
+//! contact's force is analytic, else an adaptive DOP853 step with its error test; the first
+//! event inside an accepted step located on its dense output, what each event changes, and
+//! the record of each contact (works, phases) and of the primary contact.
 //!
-//! An event is located on the step's seventh-order dense output: the root of the event
-//! function in the step's fraction `θ` by the Illinois iteration to `4ε` in
-//! `θ` (of the events inside one step, the first). The path goes on from the discrete
-//! solution there, by re-stepping from the step's start to that `θ` (the dense output and
-//! the discrete solution differ by less than the step's error; where the event's function is
-//! there a hair below zero, the regime it starts is offset so that it starts below zero all
-//! the same: `events.rs`).
+//! An event is located on the step's dense output — the series itself, or DOP853's
+//! seventh-order extension: the root of the event function in the step's fraction `θ` by the
+//! Illinois iteration to `4ε` in `θ` (of the events inside one step, the first). The path
+//! goes on from the solution there: the series at `θ`, or the discrete solution by
+//! re-stepping from the step's start to that `θ` (the dense output and the discrete solution
+//! differ by less than the step's error; where the event's function is there a hair below
+//! zero, the regime it starts is offset so that it starts below zero all the same:
+//! `events.rs`). A series step is long (a fifth of its radius of convergence): where an
+//! event's function is below zero at both ends but rises above zero inside, the step is
+//! shortened to there ([`Series::first_rise`]).
 //!
 //! After an event the path goes on with the step that crossed it, shortened by `e_j` where
 //! contact `j`'s compression ended (it then expands `1/e_j²` times faster); a separation's
@@ -23,6 +27,7 @@ use super::common::{grow, shrink, NormalWork, Primary};
 use super::events::{self, Event};
 use super::field::{eval, tangential_acceleration, tangential_rates, Eval, Field};
 use super::friction::{choose, rebuild, Allowed};
+use super::series::Series;
 use super::state::{Modes, Normal, Setup, StickSet, Tangent, MAXK, PER, PN, PT, S, WT};
 use super::stepper::Stepper;
 use super::variable::Var;
@@ -30,7 +35,7 @@ use super::{MAX_STEPS, RTOL};
 use crate::law::{BreakdownReason, WorkSplit};
 use crate::math::Vec2;
 use crate::multi::{ContactPhaseKind, ContactResult, LzbPrimary};
-use crate::numerics::dop853::{dop853_step, error_measure, Dense};
+use crate::numerics::dop853::{dop853_step, error_measure, Dense, Interpolant, Step};
 use crate::planar::SlipDirection;
 
 /// What the path ends with (canonical units).
@@ -41,6 +46,48 @@ pub(super) struct End {
     pub primaries: Vec<LzbPrimary>,
     /// The accepted steps.
     pub steps: usize,
+}
+
+/// An accepted step: a DOP853 step (and its error measure) or a Taylor series.
+enum Taken<const N: usize> {
+    Rk(Step<N>, f64),
+    /// (The series is the run's workspace.)
+    Series,
+}
+
+/// A step's continuous extension: DOP853's, or the series itself.
+enum Interp<'a, const N: usize> {
+    Rk(Dense<N>),
+    Series(&'a Series<N>),
+}
+
+impl<const N: usize> Interpolant<N> for Interp<'_, N> {
+    #[inline]
+    fn at(&self, theta: f64) -> [f64; N] {
+        match self {
+            Interp::Rk(d) => d.at(theta),
+            Interp::Series(s) => s.at(theta),
+        }
+    }
+}
+
+impl<const N: usize> Taken<N> {
+    /// The step's continuous extension (`f` the right-hand side, the step from `(x, y0)` of
+    /// size `h`, `k_end` the derivative at its end).
+    fn dense<'a>(
+        &self,
+        ser: &'a Series<N>,
+        f: &impl Fn(f64, &[f64; N]) -> [f64; N],
+        x: f64,
+        y0: &[f64; N],
+        k_end: &[f64; N],
+        h: f64,
+    ) -> Interp<'a, N> {
+        match self {
+            Taken::Rk(st, _) => Interp::Rk(Dense::new(f, x, y0, st, k_end, h)),
+            Taken::Series => Interp::Series(ser),
+        }
+    }
 }
 
 /// One contact's record.
@@ -81,6 +128,7 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
     let mut y = [0.0; N];
     let mut path = Path::start(setup, &y);
     let (mut attempts, mut steps) = (0usize, 0usize);
+    let mut ser = Series::<N>::new();
     let mut it = match path.closed(&mut y, &mut attempts)? {
         Closed::Ended => return Ok(path.finish(&y, steps)),
         Closed::Unchanged => Stepper::<N>::start(setup, path.modes, &y),
@@ -92,28 +140,36 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
             return Err(BreakdownReason::TooManySteps { limit: MAX_STEPS });
         }
         let (var, x) = (it.var, it.x);
-        // A separation ends exactly at σ = 0.
-        let lands = matches!(var, Var::Separation { .. }) && x + it.h <= 0.0;
-        if lands {
-            it.h = -x;
-        }
-        let h = it.h;
+        let Some(taken) = take_step(&mut it, &mut ser, &y) else {
+            continue;
+        };
         let field = &it.field;
         let f = |xx: f64, yy: &[f64; N]| var.rhs::<N>(setup, field, xx, yy);
-        let st = dop853_step(&f, x, &y, &it.k1, h);
-        let en = error_measure(&st, |i| {
-            setup.atol[i] + RTOL * y[i].abs().max(st.y[i].abs())
-        });
-        // (NaN: rejected.)
-        if en.is_nan() || en > 1.0 {
-            it.h *= shrink(en);
-            continue;
-        }
-        let y1 = st.y;
-        let (k_end, ev_b) = var.rhs_eval::<N>(setup, field, x + h, &y1);
-        let g_b = events::values(setup, &it.modes, &it.watch, &y1, &ev_b);
+        let mut h = match &taken {
+            Taken::Series => ser.h,
+            Taken::Rk(..) => it.h,
+        };
+        let mut y1 = match &taken {
+            Taken::Series => ser.end(),
+            Taken::Rk(st, _) => st.y,
+        };
+        let (mut k_end, mut ev_b) = var.rhs_eval::<N>(setup, field, x + h, &y1);
+        let mut g_b = events::values(setup, &it.modes, &it.watch, &y1, &ev_b);
         // (In the separation variable its own separation is the end of the range.)
         let own = var.separating();
+        if let Taken::Series = taken {
+            // A function that rises above zero and falls back inside the long step: the step
+            // ends where it is above zero.
+            let (modes, watch, skip) = (&it.modes, &it.watch, own.map(Event::Separation));
+            if let Some(th) = ser.first_rise(setup, modes, field, watch, &it.g_a, &g_b, skip) {
+                ser.h *= th;
+                h = ser.h;
+                y1 = ser.end();
+                (k_end, ev_b) = var.rhs_eval::<N>(setup, field, x + h, &y1);
+                g_b = events::values(setup, &it.modes, &it.watch, &y1, &ev_b);
+            }
+        }
+        let lands = matches!(var, Var::Separation { .. }) && x + h <= 0.0;
         let (g_a, list) = (&it.g_a, &it.watch.list);
         let crosses =
             |i: usize| g_a[i] <= 0.0 && g_b[i] > 0.0 && Some(list[i]) != own.map(Event::Separation);
@@ -128,7 +184,7 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
             if let Some(stored) = jammed(setup, &it.modes, &y1, &ev_b) {
                 return Err(BreakdownReason::Jammed { stored });
             }
-            path.follow_primary(1.0, &y, &y1, &|| Dense::new(&f, x, &y, &st, &k_end, h));
+            path.follow_primary(1.0, &y, &y1, &|| taken.dense(&ser, &f, x, &y, &k_end, h));
             y = y1;
             steps += 1;
             if let (true, Some(j)) = (lands, own) {
@@ -150,7 +206,10 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
             it.x += h;
             it.k1 = k_end;
             it.g_a = g_b;
-            it.h = h * grow(en);
+            it.h = match &taken {
+                Taken::Rk(_, en) => h * grow(*en),
+                Taken::Series => h,
+            };
             // The next variable: the start ends in u; a separation nears or stops nearing.
             let next = var.next(setup, &it.modes, it.x, it.h, &y1, &ev_b.v, it.root_end);
             if next != var {
@@ -162,16 +221,17 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
             continue;
         }
         // The first event inside the step, located on the dense output.
-        let dense = Dense::new(&f, x, &y, &st, &k_end, h);
+        let dense = taken.dense(&ser, &f, x, &y, &k_end, h);
         let (seed, i) = it.first_event(&dense, &g_b, crosses);
         let event = it.watch.list[i];
-        // On the discrete solution: re-step from the step's start to the seed.
-        let (theta, ye) = if seed == 0.0 {
-            (0.0, y)
-        } else {
-            (seed, dop853_step(&f, x, &y, &it.k1, seed * h).y)
+        // On the discrete solution: re-step from the step's start to the seed (the series
+        // is its own).
+        let (theta, ye) = match &taken {
+            _ if seed == 0.0 => (0.0, y),
+            Taken::Series => (seed, ser.at(seed)),
+            Taken::Rk(..) => (seed, dop853_step(&f, x, &y, &it.k1, seed * h).y),
         };
-        path.follow_primary(theta, &y, &ye, &|| Dense::new(&f, x, &y, &st, &k_end, h));
+        path.follow_primary(theta, &y, &ye, &|| taken.dense(&ser, &f, x, &y, &k_end, h));
         y = ye;
         steps += 1;
         path.apply(&[event], &mut y);
@@ -195,6 +255,36 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
         it.restart(path.modes, field, &ev, &y, ht);
     }
     Ok(path.finish(&y, steps))
+}
+
+/// One step from the stepper's point `y`: the Taylor series where it applies (every loaded
+/// contact has `s > 0`), else a DOP853 step with its error test — `None` if that is rejected
+/// (the step shrunk for the next attempt).
+fn take_step<const N: usize>(
+    it: &mut Stepper<'_, N>,
+    ser: &mut Series<N>,
+    y: &[f64; N],
+) -> Option<Taken<N>> {
+    let (setup, var, x) = (it.setup, it.var, it.x);
+    if ser.build(setup, &it.field, var, x, y) {
+        return Some(Taken::Series);
+    }
+    // A separation ends exactly at σ = 0.
+    if matches!(var, Var::Separation { .. }) && x + it.h <= 0.0 {
+        it.h = -x;
+    }
+    let field = &it.field;
+    let f = |xx: f64, yy: &[f64; N]| var.rhs::<N>(setup, field, xx, yy);
+    let st = dop853_step(&f, x, y, &it.k1, it.h);
+    let en = error_measure(&st, |i| {
+        setup.atol[i] + RTOL * y[i].abs().max(st.y[i].abs())
+    });
+    // (NaN: rejected.)
+    if en.is_nan() || en > 1.0 {
+        it.h *= shrink(en);
+        return None;
+    }
+    Some(Taken::Rk(st, en))
 }
 
 /// Whether the impact has settled at `y` (velocities `v`): every contact that carries a
@@ -604,12 +694,12 @@ impl<'a> Path<'a> {
     /// the state is `y1`: a contact whose stored energy exceeds the primary's by more than
     /// [`super::PRIMARY_MARGIN`] takes over, where its energy overtook the primary's (located
     /// on the dense output, which is built only then).
-    fn follow_primary<const N: usize>(
+    fn follow_primary<const N: usize, D: Interpolant<N>>(
         &mut self,
         theta: f64,
         y0: &[f64; N],
         y1: &[f64; N],
-        dense: &dyn Fn() -> Dense<N>,
+        dense: &dyn Fn() -> D,
     ) {
         let (setup, modes) = (self.setup, &self.modes);
         self.primary.follow(

@@ -6,7 +6,7 @@ use super::events;
 use super::field::{Eval, Field};
 use super::state::{Modes, Setup, MAXK};
 use super::variable::Var;
-use crate::numerics::dop853::Dense;
+use crate::numerics::dop853::Interpolant;
 use crate::numerics::roots::illinois;
 
 use super::common::guard;
@@ -114,7 +114,7 @@ impl<'a, const N: usize> Stepper<'a, N> {
     /// step and its index in the watch.
     pub(super) fn first_event(
         &self,
-        dense: &Dense<N>,
+        dense: &impl Interpolant<N>,
         g_b: &[f64; 3 * MAXK],
         crosses: impl Fn(usize) -> bool,
     ) -> (f64, usize) {

@@ -1,0 +1,654 @@
+//! The path's Taylor series in one set of regimes: the step where every contact that carries
+//! a force is loaded (`s_j > 0`), so that `F_j = κ_j s_j^η` is analytic there.
+//!
+//! In a fixed set of regimes ([`Field`]) the right-hand side in `τ` is
+//!
+//! ```text
+//! ds_j/dτ = −v_nj / div_j,   dp_nj/dτ = F_j = κ_j s_j^η,   dp_t/dτ = T F,
+//! dw_tj/dτ = v_tj dp_tj/dτ,  v = v⁻ + W p,
+//! ```
+//!
+//! and in a regularising variable `x` (`variable.rs`) every rate is multiplied by
+//! `g = dτ/dx`: `m u^(m−1)` in `u = τ^(1/m)`, `−m σ^(m−1) e_j²/v_nj` in a separation's
+//! `σ = s_j^(1/m)` (where `s_j = σ^m` exactly). Its Taylor coefficients in `t = x − x₀`
+//! follow order by order from the recurrences of automatic differentiation (Griewank &
+//! Walther, *Evaluating Derivatives*, 2nd ed., SIAM 2008, §13.2; Jorba & Zou, *A software
+//! package for the numerical integration of ODEs by means of high-order Taylor methods*,
+//! Experimental Mathematics 14 (2005) 99–117): with `a = s^α`, `s₀ > 0`,
+//!
+//! ```text
+//! a₀ = s₀^α,   a_k = (1/(k s₀)) Σ_{i<k} (α (k − i) − i) s_{k−i} a_i,
+//! (g f)_k = Σ_i g_i f_{k−i},      y_{k+1} = (dy/dx)_k / (k + 1),
+//! (1/v)·: q_k = (n_k − Σ_{i≥1} v_i q_{k−i}) / v₀      (the quotient q = n/v),
+//! ```
+//!
+//! and the velocities' coefficients `W p_k` (linear). The series is taken to order
+//! [`ORDER`]; its step is where its last two terms reach the tolerance of each component
+//! (`atol + RTOL |y|`, as the Runge–Kutta steps' error test), the step-size rule of Jorba &
+//! Zou (their §3.2) with a safety factor: the first neglected term is then about `h/ρ` of
+//! the tolerance, `ρ` the series' radius of convergence. The series is its own dense output,
+//! of the same order, so an event inside the step is located on it and the path goes on from
+//! it exactly there.
+
+use super::events::{Event, Watch};
+use super::field::Field;
+use super::state::{Modes, Setup, Tangent, PER, PN, PT, S, WT};
+use super::variable::Var;
+use super::RTOL;
+
+/// The order of the series. The work per series grows as the order's square and the step
+/// as `RTOL^(1/16)` of the radius of convergence (0.18; the step is set by the term of order
+/// 16, the last one guarding it): near the least work per unit of path at `RTOL = 1e-12`
+/// (Jorba & Zou's optimal order, `−½ ln RTOL + 1`, is 14.8).
+pub(super) const ORDER: usize = 17;
+
+/// The step's factor on the radius the last two terms suggest.
+const SAFETY: f64 = 0.9;
+
+/// The blocks of [`Series`]'s `aux` rows (`K` entries each, contact `j` at `K b + j`): the
+/// forces, the normal and tangential velocities, `dp_t/dx`.
+const F: usize = 0;
+const VN: usize = 1;
+const VT: usize = 2;
+const DPT: usize = 3;
+
+/// `1/k` for `k = 0 … ORDER + 1` (`0` for `k = 0`).
+const RECIP: [f64; ORDER + 2] = {
+    let mut r = [0.0; ORDER + 2];
+    let mut k = 1;
+    while k < ORDER + 2 {
+        r[k] = 1.0 / k as f64;
+        k += 1;
+    }
+    r
+};
+
+/// The state's Taylor series over one step, `y(x₀ + t) = Σ_k c_k t^k`, and the working
+/// coefficients it is built from (kept between steps: every entry read is written first).
+#[derive(Debug, Clone)]
+pub(super) struct Series<const N: usize> {
+    /// The coefficients, `c[k][i]` that of `t^k` in component `i` (the state's layout).
+    c: [[f64; N]; ORDER + 1],
+    /// By order, per contact: the force, `v_n`, `v_t`, `dp_t/dx` (blocks of `K`).
+    aux: [[f64; N]; ORDER],
+    /// The step (signed: negative in a separation's variable, which decreases).
+    pub h: f64,
+}
+
+impl<const N: usize> Series<N> {
+    /// An empty series.
+    pub(super) fn new() -> Self {
+        Series {
+            c: [[0.0; N]; ORDER + 1],
+            aux: [[0.0; N]; ORDER],
+            h: 0.0,
+        }
+    }
+
+    /// The state at `t = θ h` (Horner). A normal impulse never decreases (`dp_nj = F_j dτ`,
+    /// `F_j ≥ 0`): one that the series puts below its start — a contact just joined, whose
+    /// impulse is still below the tolerance, by round-off of the tolerance's size — is held
+    /// there.
+    #[inline]
+    pub(super) fn at(&self, theta: f64) -> [f64; N] {
+        let t = theta * self.h;
+        let mut out = self.c[ORDER];
+        for ck in self.c[..ORDER].iter().rev() {
+            for (o, c) in out.iter_mut().zip(ck) {
+                *o = *o * t + c;
+            }
+        }
+        for j in 0..N / PER {
+            let o = PER * j + PN;
+            out[o] = out[o].max(self.c[0][o]);
+        }
+        out
+    }
+
+    /// The step's end, `θ = 1`.
+    #[inline]
+    pub(super) fn end(&self) -> [f64; N] {
+        self.at(1.0)
+    }
+
+    /// The Taylor series of the path from `(x0, y)` in the variable `var` and the regimes
+    /// of `field`, and its step. `false` where it does not apply: a contact carrying a force
+    /// is unloaded (`s_j ≤ 0`: the impact's start, a contact joining), the start's variable
+    /// at `u = 0`, or no finite step; the Runge–Kutta step is taken there.
+    #[allow(clippy::needless_range_loop)] // the rows are indexed by order and contact alike
+    pub(super) fn build(
+        &mut self,
+        setup: &Setup,
+        field: &Field,
+        var: Var,
+        x0: f64,
+        y: &[f64; N],
+    ) -> bool {
+        let k = N / PER;
+        let alpha = setup.law.eta;
+        // Per contact: the mask of loaded contacts, 1/s₀ (0 if not loaded), 1/div.
+        let mut act = [0.0; N];
+        let mut inv_s0 = [0.0; N];
+        let mut inv_div = [0.0; N];
+        let mut rubs = [false; N];
+        for j in 0..k {
+            let sj = y[PER * j + S];
+            if field.active(j) {
+                if sj.is_nan() || sj <= 0.0 {
+                    return false;
+                }
+                act[j] = 1.0;
+                inv_s0[j] = 1.0 / sj;
+                inv_div[j] = 1.0 / field.div(j);
+            }
+            rubs[j] = field.rubs(j);
+        }
+        // v_k = A p_n,k for k ≥ 1 (p_t,k = T p_n,k): A = W_:t T + W_:n, 2K × K.
+        let mut amap = [[0.0; N]; N];
+        for (i, arow) in amap.iter_mut().enumerate().take(2 * k) {
+            let wrow = &setup.w[i];
+            for cc in 0..k {
+                let mut a = wrow[2 * cc + 1];
+                for b in 0..k {
+                    a += wrow[2 * b] * field.map_row(b)[cc];
+                }
+                arow[cc] = a;
+            }
+        }
+        let Some(Rate {
+            mut g,
+            num,
+            sep_s,
+            glen,
+            sep,
+        }) = Rate::of(setup, var, x0)
+        else {
+            return false;
+        };
+        let (c, aux) = (&mut self.c, &mut self.aux);
+        c[0] = *y;
+        for j in 0..k {
+            aux[0][F * k + j] = act[j] * setup.force(j, y[PER * j + S]);
+        }
+        for kk in 0..ORDER {
+            // The velocities: v⁻ + W p at order 0, A p_n,k after.
+            if kk == 0 {
+                for j in 0..k {
+                    let (wt_row, wn_row) = (&setup.w[2 * j], &setup.w[2 * j + 1]);
+                    let (mut a, mut b) = (setup.v0[2 * j], setup.v0[2 * j + 1]);
+                    for cc in 0..k {
+                        let (ptk, pnk) = (y[PER * cc + PT], y[PER * cc + PN]);
+                        a += wt_row[2 * cc] * ptk + wt_row[2 * cc + 1] * pnk;
+                        b += wn_row[2 * cc] * ptk + wn_row[2 * cc + 1] * pnk;
+                    }
+                    aux[0][VT * k + j] = a;
+                    aux[0][VN * k + j] = b;
+                }
+            } else {
+                for j in 0..k {
+                    let (mut a, mut b) = (0.0, 0.0);
+                    for cc in 0..k {
+                        let pnk = c[kk][PER * cc + PN];
+                        a += amap[2 * j][cc] * pnk;
+                        b += amap[2 * j + 1][cc] * pnk;
+                    }
+                    aux[kk][VT * k + j] = a;
+                    aux[kk][VN * k + j] = b;
+                }
+            }
+            // g at this order, in a separation: g = num / v_nj.
+            if let Some(js) = sep {
+                let mut acc = num[kk];
+                for i in 1..=kk {
+                    acc -= aux[i][VN * k + js] * g[kk - i];
+                }
+                g[kk] = acc / aux[0][VN * k + js];
+            }
+            if kk > 0 {
+                force_order(c, aux, kk, alpha, &inv_s0);
+            }
+            // The normal impulses and deflections at order kk + 1.
+            let inv = RECIP[kk + 1];
+            let (mut dphi, mut ds) = ([0.0; N], [0.0; N]);
+            for i in 0..glen.min(kk + 1) {
+                let (gi, a) = (g[i], &aux[kk - i]);
+                for j in 0..k {
+                    dphi[j] += gi * a[F * k + j];
+                    ds[j] += gi * a[VN * k + j];
+                }
+            }
+            for j in 0..k {
+                c[kk + 1][PER * j + PN] = dphi[j] * inv;
+                c[kk + 1][PER * j + S] = -ds[j] * inv * act[j] * inv_div[j];
+            }
+            if let Some(js) = sep {
+                c[kk + 1][PER * js + S] = sep_s[kk + 1];
+            }
+            // The tangential impulses (p_t − p_t0 = T (p_n − p_n0) in fixed regimes) and
+            // the friction works, dw_tj/dx = v_tj dp_tj/dx (two partial sums).
+            for j in 0..k {
+                let row = field.map_row(j);
+                let mut a = 0.0;
+                for cc in 0..k {
+                    a += row[cc] * c[kk + 1][PER * cc + PN];
+                }
+                c[kk + 1][PER * j + PT] = a;
+                aux[kk][DPT * k + j] = a * (kk + 1) as f64;
+            }
+            let w = work_rate(aux, kk);
+            for j in 0..k {
+                c[kk + 1][PER * j + WT] = if rubs[j] { w[j] * inv } else { 0.0 };
+            }
+        }
+        let Some(h) = self.step(setup, y) else {
+            return false;
+        };
+        self.h = if sep.is_some() { -h.min(x0) } else { h };
+        true
+    }
+
+    /// The step of the series from `y`: where the term of order 16 reaches the tolerance of
+    /// every component (`atol + RTOL |y|`; its root by four square roots), or the last, of
+    /// order 17, if it is larger there (a vanishing term of order 16). `None` where the
+    /// coefficients overflow (friction of `1e100` stops a slip within `τ ≈ 1/μ`: DOP853 then
+    /// takes the step, and rejects its non-finite steps).
+    fn step(&self, setup: &Setup, y: &[f64; N]) -> Option<f64> {
+        let c = &self.c;
+        let (mut r1, mut r0) = (0.0f64, 0.0f64);
+        for i in 0..N {
+            let tol = setup.atol[i] + RTOL * y[i].abs();
+            r1 = r1.max(c[ORDER][i].abs() / tol);
+            r0 = r0.max(c[ORDER - 1][i].abs() / tol);
+        }
+        if !(r0.is_finite() && r1.is_finite()) {
+            return None;
+        }
+        let mut h = (1.0 / r0).sqrt().sqrt().sqrt().sqrt();
+        if r1 * h.powi(ORDER as i32) > 1.0 {
+            h = h.min(r1.powf(-1.0 / ORDER as f64));
+        }
+        h *= SAFETY;
+        (h.is_finite() && h > 0.0).then_some(h)
+    }
+}
+
+/// `g = dτ/dx` in the variable `x`: its coefficients (`len` of them nonzero) or, in a
+/// separation's variable, its numerator `−m σ^(m−1) e_j²` (divided order by order by
+/// `v_nj`), and the separating contact's `s_j = σ^m`.
+struct Rate {
+    g: [f64; ORDER + 1],
+    num: [f64; ORDER + 1],
+    sep_s: [f64; ORDER + 1],
+    glen: usize,
+    sep: Option<usize>,
+}
+
+impl Rate {
+    /// The rate at `x0` in `var`; `None` at `x0 = 0` in the start's or a separation's
+    /// variable (a force from zero, or the separation itself).
+    fn of(setup: &Setup, var: Var, x0: f64) -> Option<Rate> {
+        let m = setup.law.m as usize;
+        let mut r = Rate {
+            g: [0.0; ORDER + 1],
+            num: [0.0; ORDER + 1],
+            sep_s: [0.0; ORDER + 1],
+            glen: 1,
+            sep: None,
+        };
+        match var {
+            Var::Time => r.g[0] = 1.0,
+            Var::Root => {
+                if x0 <= 0.0 {
+                    return None;
+                }
+                binomial_powers(m - 1, x0, &mut r.g);
+                for gi in r.g.iter_mut().take(m) {
+                    *gi *= m as f64;
+                }
+                r.glen = m;
+            }
+            Var::Separation { contact: j, .. } => {
+                if x0 <= 0.0 {
+                    return None;
+                }
+                binomial_powers(m - 1, x0, &mut r.num);
+                let e2 = setup.e[j] * setup.e[j];
+                for ni in r.num.iter_mut().take(m) {
+                    *ni *= -(m as f64) * e2;
+                }
+                binomial_powers(m, x0, &mut r.sep_s);
+                r.glen = ORDER + 1;
+                r.sep = Some(j);
+            }
+        }
+        Some(r)
+    }
+}
+
+impl<const N: usize> Series<N> {
+    /// The first fraction `θ ∈ (0, 1]` of the step where one of the watched events'
+    /// functions that is at or below zero at both ends of the step (`g_a`, `g_b`) rises above
+    /// it, `skip` excepted (a separation's own end); `None` if none does. A step of the
+    /// series is long (a fifth of its radius of convergence), and a function can rise above
+    /// zero and fall back inside it — a slip that halts and would resume the same way —
+    /// where its values at the two ends show nothing: the step is shortened to this point,
+    /// where the crossing is then seen and located. Each function is a polynomial in the step
+    /// (velocities and forces linear in the series' rows, `events.rs`), taken to order
+    /// `ORDER − 1`.
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn first_rise(
+        &self,
+        setup: &Setup,
+        modes: &Modes,
+        field: &Field,
+        watch: &Watch,
+        g_a: &[f64],
+        g_b: &[f64],
+        skip: Option<Event>,
+    ) -> Option<f64> {
+        let k = N / PER;
+        let mut first: Option<f64> = None;
+        for i in 0..watch.n {
+            let event = watch.list[i];
+            if g_a[i] > 0.0 || g_b[i] > 0.0 || Some(event) == skip {
+                continue;
+            }
+            let mut q = [0.0; ORDER + 1];
+            let mut q2: Option<[f64; ORDER + 1]> = None;
+            match event {
+                Event::CompressionEnd(j) => {
+                    for (qk, a) in q.iter_mut().zip(&self.aux) {
+                        *qk = a[VN * k + j];
+                    }
+                }
+                Event::Separation(j) => {
+                    for (qk, c) in q.iter_mut().zip(&self.c) {
+                        *qk = -c[PER * j + S];
+                    }
+                }
+                Event::Recompression(j) | Event::Join(j) => {
+                    for (qk, a) in q.iter_mut().zip(&self.aux) {
+                        *qk = -a[VN * k + j];
+                    }
+                }
+                Event::Halt(j) => {
+                    let sigma = match modes.tangent[j] {
+                        Tangent::Slip(sigma) => sigma,
+                        Tangent::Stick => continue,
+                    };
+                    for (qk, a) in q.iter_mut().zip(&self.aux) {
+                        *qk = -sigma * a[VT * k + j];
+                    }
+                }
+                Event::StickBreak(j) => {
+                    // |x_j| − μ_j F_j > 0: x_j − μ_j F_j or −x_j − μ_j F_j, x = T F.
+                    let row = field.map_row(j);
+                    let mut other = [0.0; ORDER + 1];
+                    for ((qk, ok), a) in q.iter_mut().zip(other.iter_mut()).zip(&self.aux) {
+                        let x: f64 = (0..k).map(|c| row[c] * a[F * k + c]).sum();
+                        let mf = setup.mu[j] * a[F * k + j];
+                        *qk = x - mf;
+                        *ok = -x - mf;
+                    }
+                    q2 = Some(other);
+                }
+            }
+            // (At the start, at most the function's value there: the same point, up to the
+            // round-off of its velocities formed anew.)
+            q[0] = (q[0] - watch.offset[i]).min(g_a[i]);
+            let mut rise = rise(&q, self.h);
+            if let Some(mut other) = q2 {
+                other[0] = (other[0] - watch.offset[i]).min(g_a[i]);
+                rise = match (rise, self::rise(&other, self.h)) {
+                    (Some(a), Some(b)) => Some(a.min(b)),
+                    (a, b) => a.or(b),
+                };
+            }
+            if let Some(th) = rise {
+                first = Some(first.map_or(th, |f: f64| f.min(th)));
+            }
+        }
+        first
+    }
+}
+
+/// Where the polynomial `q(t) = Σ q_k t^k` (`q(0) ≤ 0`) first rises above zero on
+/// `t = θ h`, `θ ∈ (0, 1]`: `None` if a bound of it is at most zero there (in `θ`, with
+/// `Q_k = q_k h^k`: the largest value of `Q₀ + Q₁ θ + (Q₂ + Σ_{k≥3} |Q_k|) θ²`); else the first of 16 equally spaced points where `q > 0`, or the maximum of an interval
+/// between two of them where `dq/dθ` falls through zero (bisected), if `q` is above zero
+/// there.
+fn rise(q: &[f64; ORDER + 1], h: f64) -> Option<f64> {
+    // In θ (Q_k = q_k h^k): q ≤ Q₀ + Q₁ θ + (Q₂ + Σ_{k≥3} |Q_k|) θ² on [0, 1].
+    let (q1, q2) = (q[1] * h, q[2] * h * h);
+    let (mut rest, mut hp) = (0.0, h * h * h);
+    for qk in &q[3..] {
+        rest += (qk * hp).abs();
+        hp *= h;
+    }
+    let c = q2 + rest;
+    let mut bound = q[0].max(q[0] + q1 + c);
+    if c < 0.0 && q1 > 0.0 && q1 < -2.0 * c {
+        bound = bound.max(q[0] - q1 * q1 / (4.0 * c));
+    }
+    // (NaN: no rise.)
+    if bound.is_nan() || bound <= 0.0 {
+        return None;
+    }
+    // q and dq/dθ at θ.
+    let at = |th: f64| {
+        let t = th * h;
+        let (mut v, mut d) = (q[ORDER], 0.0);
+        for qk in q[..ORDER].iter().rev() {
+            d = d * t + v;
+            v = v * t + qk;
+        }
+        (v, d * h)
+    };
+    const SAMPLES: usize = 16;
+    let (mut th0, mut d0) = (0.0, at(0.0).1);
+    for m in 1..=SAMPLES {
+        let th1 = m as f64 / SAMPLES as f64;
+        let (v1, d1) = at(th1);
+        if v1 > 0.0 {
+            return Some(th1);
+        }
+        if d0 > 0.0 && d1 < 0.0 {
+            let (mut lo, mut hi) = (th0, th1);
+            for _ in 0..40 {
+                let mid = 0.5 * (lo + hi);
+                if at(mid).1 > 0.0 {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+            }
+            if at(lo).0 > 0.0 {
+                return Some(lo);
+            }
+        }
+        (th0, d0) = (th1, d1);
+    }
+    None
+}
+
+/// The forces' coefficients of order `kk ≥ 1` (`aux`'s block `F`) by the power recurrence of
+/// `a = s^α` (`F = κ a`, `inv_s0 = 1/s₀` per contact, 0 for one without force): two partial
+/// sums per contact, the weights `α (kk − i) − i` falling by `α + 1` with `i`.
+#[allow(clippy::needless_range_loop)] // the rows are indexed by order and contact alike
+fn force_order<const N: usize>(
+    c: &[[f64; N]; ORDER + 1],
+    aux: &mut [[f64; N]; ORDER],
+    kk: usize,
+    alpha: f64,
+    inv_s0: &[f64; N],
+) {
+    let k = N / PER;
+    let (mut acc0, mut acc1) = ([0.0; N], [0.0; N]);
+    let fall = alpha + 1.0;
+    let mut c0 = alpha * kk as f64;
+    let mut i = 0;
+    while i + 1 < kk {
+        let c1 = c0 - fall;
+        for j in 0..k {
+            acc0[j] += c0 * c[kk - i][PER * j + S] * aux[i][F * k + j];
+            acc1[j] += c1 * c[kk - i - 1][PER * j + S] * aux[i + 1][F * k + j];
+        }
+        c0 = c1 - fall;
+        i += 2;
+    }
+    if i < kk {
+        for j in 0..k {
+            acc0[j] += c0 * c[kk - i][PER * j + S] * aux[i][F * k + j];
+        }
+    }
+    for j in 0..k {
+        aux[kk][F * k + j] = (acc0[j] + acc1[j]) * (inv_s0[j] * RECIP[kk]);
+    }
+}
+
+/// The coefficient of order `kk` of each contact's friction power `v_t dp_t/dx`: the product
+/// of the series of `v_t` and of `dp_t/dx` (`aux`'s blocks `VT`, `DPT`), two partial sums.
+#[allow(clippy::needless_range_loop)] // the rows are indexed by order and contact alike
+fn work_rate<const N: usize>(aux: &[[f64; N]; ORDER], kk: usize) -> [f64; N] {
+    let k = N / PER;
+    let (mut w0, mut w1) = ([0.0; N], [0.0; N]);
+    let mut i = 0;
+    while i < kk {
+        for j in 0..k {
+            w0[j] += aux[i][VT * k + j] * aux[kk - i][DPT * k + j];
+            w1[j] += aux[i + 1][VT * k + j] * aux[kk - i - 1][DPT * k + j];
+        }
+        i += 2;
+    }
+    if i == kk {
+        for j in 0..k {
+            w0[j] += aux[kk][VT * k + j] * aux[0][DPT * k + j];
+        }
+    }
+    for j in 0..k {
+        w0[j] += w1[j];
+    }
+    w0
+}
+
+/// `C(n, i) x^(n−i)` for `i = 0 … n`: the coefficients of `(x + t)^n` in `t`.
+fn binomial_powers(n: usize, x: f64, out: &mut [f64; ORDER + 1]) {
+    let mut c = 1.0;
+    for (i, o) in out.iter_mut().enumerate().take(n.min(ORDER) + 1) {
+        // x^(n−i) by repeated multiplication (n is small: the power m of the variables).
+        let mut p = 1.0;
+        for _ in 0..n - i {
+            p *= x;
+        }
+        *o = c * p;
+        c = c * (n - i) as f64 / (i + 1) as f64;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::multi::lzb::state::{Normal, StickSet};
+    use crate::multi::MultiProblem;
+    use crate::numerics::dop853::dop853_step;
+
+    /// Two contacts, both loaded, the first slipping and the second expanding: the state
+    /// after a step of the series against the same step in 400 DOP853 steps.
+    fn agrees_with_runge_kutta(var: Var, x0: f64) {
+        let w = [1.3, 0.2, 0.4, -0.1, 0.9, 0.3, 0.2, 1.1, 0.25, 1.0];
+        let p = MultiProblem::from_upper(2, &w, &[0.3, -1.0, -0.2, 0.4], &[0.4, 0.0], &[0.8, 0.6])
+            .unwrap();
+        let setup = Setup::new(&p);
+        let modes = Modes {
+            normal: [
+                Normal::Compression,
+                Normal::Expansion,
+                Normal::Off,
+                Normal::Off,
+                Normal::Off,
+                Normal::Off,
+                Normal::Off,
+                Normal::Off,
+            ],
+            tangent: [Tangent::Slip(1.0); 8],
+            stick: StickSet::EMPTY,
+        };
+        let field = Field::new(&setup, &modes);
+        let y = [0.05, 0.2, 0.3, 0.01, 0.0, 0.35, 0.25, 0.0];
+        let mut ser = Series::<8>::new();
+        assert!(ser.build(&setup, &field, var, x0, &y));
+        let h = ser.h;
+        assert!(h.abs() > 0.0 && h.is_finite());
+        // (A step of a fair part of the path: in these units its scales are near one.)
+        assert!(h.abs() > 0.01, "{h}");
+        let f = |x: f64, y: &[f64; 8]| var.rhs::<8>(&setup, &field, x, y);
+        let n = 400;
+        let (mut x, mut z) = (x0, y);
+        for _ in 0..n {
+            let k1 = f(x, &z);
+            z = dop853_step(&f, x, &z, &k1, h / n as f64).y;
+            x += h / n as f64;
+        }
+        let end = ser.end();
+        for i in 0..8 {
+            let scale = setup.atol[i] / (0.1 * RTOL) + y[i].abs();
+            assert!(
+                (end[i] - z[i]).abs() <= 1e-11 * scale,
+                "{var:?} component {i}: {} vs {}",
+                end[i],
+                z[i]
+            );
+        }
+        // The dense output is the series itself: half the step is half the way there.
+        let mid = ser.at(0.5);
+        assert!(mid
+            .iter()
+            .zip(&y)
+            .zip(&end)
+            .all(|((m, a), b)| m.is_finite() && (m - a).abs() <= (b - a).abs() + 1e-12));
+    }
+
+    #[test]
+    fn a_step_in_time_agrees_with_runge_kutta() {
+        agrees_with_runge_kutta(Var::Time, 0.0);
+    }
+
+    #[test]
+    fn a_step_in_the_start_variable_agrees_with_runge_kutta() {
+        agrees_with_runge_kutta(Var::Root, 0.4);
+    }
+
+    #[test]
+    fn a_step_in_a_separation_variable_agrees_with_runge_kutta() {
+        // σ = √s₁ at s₁ = 0.25, decreasing.
+        let var = Var::Separation {
+            contact: 1,
+            entry: 0.5,
+        };
+        agrees_with_runge_kutta(var, 0.5);
+    }
+
+    #[test]
+    fn a_rise_inside_the_step_is_found() {
+        // q = −0.01 + t − t² on h = 1 rises from θ ≈ 0.0101 to 0.99 and ends below zero.
+        let mut q = [0.0; ORDER + 1];
+        q[0] = -0.01;
+        q[1] = 1.0;
+        q[2] = -1.0;
+        assert_eq!(rise(&q, 1.0), Some(1.0 / 16.0));
+        // A narrow bump between two samples: −1e-4 + (t − 0.53)² has its rise below zero…
+        let mut q = [0.0; ORDER + 1];
+        q[0] = -1e-4 - 0.53 * 0.53;
+        q[1] = 2.0 * 0.53;
+        q[2] = -1.0;
+        // … (−(t − 0.53)² − 1e-4 never rises), while 1e-5 − (t − 0.53)² does, at its top.
+        assert_eq!(rise(&q, 1.0), None);
+        q[0] = 1e-5 - 0.53 * 0.53;
+        let th = rise(&q, 1.0).expect("the bump");
+        assert!((th - 0.53).abs() < 1e-6, "{th}");
+        // Negative steps (a separation's variable) are the same polynomial in θ.
+        q[1] = -q[1];
+        let th = rise(&q, -1.0).expect("the bump");
+        assert!((th - 0.53).abs() < 1e-6, "{th}");
+    }
+}
