@@ -31,7 +31,7 @@
 //! it exactly there.
 
 use super::events::{Event, Watch};
-use super::field::Field;
+use super::field::{Eval, Field};
 use super::state::{Modes, Setup, Tangent, PER, PN, PT, S, WT};
 use super::variable::Var;
 use super::RTOL;
@@ -130,7 +130,6 @@ impl<const N: usize> Series<N> {
         let mut act = [0.0; N];
         let mut inv_s0 = [0.0; N];
         let mut inv_div = [0.0; N];
-        let mut rubs = [false; N];
         for j in 0..k {
             let sj = y[PER * j + S];
             if field.active(j) {
@@ -141,7 +140,6 @@ impl<const N: usize> Series<N> {
                 inv_s0[j] = 1.0 / sj;
                 inv_div[j] = 1.0 / field.div(j);
             }
-            rubs[j] = field.rubs(j);
         }
         // v_k = A p_n,k for k ≥ 1 (p_t,k = T p_n,k): A = W_:t T + W_:n, 2K × K.
         let mut amap = [[0.0; N]; N];
@@ -165,24 +163,19 @@ impl<const N: usize> Series<N> {
         else {
             return false;
         };
+        // Order 0: the point's velocities and forces, as the field gives them.
+        let Eval { v: v0, f: f0, .. } = field.eval::<N>(setup, y);
         let (c, aux) = (&mut self.c, &mut self.aux);
         c[0] = *y;
         for j in 0..k {
-            aux[0][F * k + j] = act[j] * setup.force(j, y[PER * j + S]);
+            aux[0][F * k + j] = f0[j];
         }
         for kk in 0..ORDER {
             // The velocities: v⁻ + W p at order 0, A p_n,k after.
             if kk == 0 {
                 for j in 0..k {
-                    let (wt_row, wn_row) = (&setup.w[2 * j], &setup.w[2 * j + 1]);
-                    let (mut a, mut b) = (setup.v0[2 * j], setup.v0[2 * j + 1]);
-                    for cc in 0..k {
-                        let (ptk, pnk) = (y[PER * cc + PT], y[PER * cc + PN]);
-                        a += wt_row[2 * cc] * ptk + wt_row[2 * cc + 1] * pnk;
-                        b += wn_row[2 * cc] * ptk + wn_row[2 * cc + 1] * pnk;
-                    }
-                    aux[0][VT * k + j] = a;
-                    aux[0][VN * k + j] = b;
+                    aux[0][VT * k + j] = v0[2 * j];
+                    aux[0][VN * k + j] = v0[2 * j + 1];
                 }
             } else {
                 for j in 0..k {
@@ -237,7 +230,7 @@ impl<const N: usize> Series<N> {
             }
             let w = work_rate(aux, kk);
             for j in 0..k {
-                c[kk + 1][PER * j + WT] = if rubs[j] { w[j] * inv } else { 0.0 };
+                c[kk + 1][PER * j + WT] = if field.rubs(j) { w[j] * inv } else { 0.0 };
             }
         }
         let Some(h) = self.step(setup, y) else {
