@@ -65,8 +65,9 @@ pub(super) struct Path<'a> {
     pub modes: Modes,
     tracks: Vec<Track>,
     primary: Primary,
-    /// Each halting slip's last comparison with its ray: the ray's angle and the slip then.
-    rays: [Option<(f64, f64)>; MAXK],
+    /// Each halting slip's last comparison with its ray: the ray's angle, the slip then and
+    /// the angle between its direction and the ray.
+    rays: [Option<(f64, f64, f64)>; MAXK],
 }
 
 /// The angle of `d` in the tangent plane.
@@ -164,11 +165,37 @@ impl<'a> Path<'a> {
         let vt = slip(&ev.v, j);
         let sigma = vt.norm();
         let s0 = vt / sigma;
-        let hint = self.rays[j].map(|(phi, _)| phi);
+        let hint = self.rays[j].map(|(phi, ..)| phi);
         let ray = halting_ray(setup, &self.modes, &ev.f, &ev.v, j, s0, hint);
         let close = ray.is_some_and(|d| sigma * between(s0, d) <= setup.freeze);
         let dir = if close { ray.unwrap_or(s0) } else { s0 };
         self.fix(j, dir, ray, sigma);
+    }
+
+    /// A slip going on along the ray it halts on ([`Path::check_halts`]) short of its halt
+    /// (`σ > 2 σ_f`) slips freely again at a normal event (`own` the contacts whose slips
+    /// have their own events here, `rest` those whose regimes are to be chosen): the ray was
+    /// its slip field's, extrapolated to the halt, and the event changes how that field
+    /// evolves (a contact joining before the halt adds its force). It is compared with its
+    /// ray again from the next steps.
+    fn release_fixed(&mut self, own: &[bool; MAXK], ev: &Eval, rest: &[usize]) {
+        let setup = self.setup;
+        for (c, &own) in own.iter().enumerate().take(setup.k) {
+            if own || rest.contains(&c) || !self.modes.active(c) {
+                continue;
+            }
+            let Tangent::Fixed { leaving: false, .. } = self.modes.tangent[c] else {
+                continue;
+            };
+            if slip(&ev.v, c).norm() > 2.0 * setup.freeze {
+                self.modes.tangent[c] = Tangent::Slip;
+                self.modes.limit[c] = 2.0 * setup.freeze;
+                self.rays[c] = None;
+                if let Some(Label::Slip { to, .. }) = &mut self.tracks[c].label {
+                    *to = None;
+                }
+            }
+        }
     }
 
     /// Contact `j`'s slip along its own direction `dir`, on a straight line, halts here
@@ -195,8 +222,11 @@ impl<'a> Path<'a> {
     /// [`Setup::near`], is compared with the ray it halts on (module docs: the halt); it goes
     /// on along the ray once the slip `σ` times the angle `δ` between its direction and the
     /// ray, with the ray's drift over the rest of the slip (extrapolated from the last
-    /// comparison), is below [`Setup::freeze`]: `σ (δ + |Δφ*| σ/(σ' − σ)) ≤ σ_f`. Returns
-    /// whether any did.
+    /// comparison), is below [`Setup::freeze`]: `σ (δ + |Δφ*| σ/(σ' − σ)) ≤ σ_f`, and the
+    /// direction has closed on the ray since that comparison (`δ ≤ δ'`; or is on it to
+    /// round-off): a direction swinging past the ray, or leaving one that repels it, is
+    /// not on its way to the ray, though `δ` be small where it passes. Returns whether any
+    /// did.
     pub(super) fn check_halts(&mut self, ev: &Eval, h: f64) -> bool {
         let setup = self.setup;
         let mut fixed = false;
@@ -215,21 +245,29 @@ impl<'a> Path<'a> {
                 self.rays[j] = None;
                 continue;
             }
-            let hint = self.rays[j].map(|(phi, _)| phi);
+            let hint = self.rays[j].map(|(phi, ..)| phi);
             let Some(ray) = halting_ray(setup, &self.modes, &ev.f, &ev.v, j, s0, hint) else {
                 self.rays[j] = None;
                 continue;
             };
             let phi = angle(ray);
-            let drift = match self.rays[j] {
-                Some((before, at)) if at > sigma => {
+            let delta = between(s0, ray);
+            // The ray's drift over the rest of the slip, extrapolated from the last
+            // comparison; and whether the direction closes on the ray (a direction that
+            // swings past it, or leaves a ray that repels, is not on its way to it), or is
+            // on it to round-off (its deviation `σ δ` a thousandth of `σ_f`).
+            let (drift, closing) = match self.rays[j] {
+                Some((before, at, delta_then)) if at > sigma => {
                     let turned = (phi - before).sin().atan2((phi - before).cos()).abs();
-                    turned * sigma / (at - sigma)
+                    (
+                        turned * sigma / (at - sigma),
+                        delta <= delta_then || sigma * delta <= 1e-3 * setup.freeze,
+                    )
                 }
-                _ => f64::INFINITY,
+                _ => (f64::INFINITY, false),
             };
-            self.rays[j] = Some((phi, sigma));
-            if sigma * (between(s0, ray) + drift) <= setup.freeze {
+            self.rays[j] = Some((phi, sigma, delta));
+            if closing && sigma * (delta + drift) <= setup.freeze {
                 self.fix(j, ray, Some(ray), sigma);
                 fixed = true;
             }
@@ -246,10 +284,16 @@ impl<'a> Path<'a> {
         let mut allowed = Vec::new();
         let ev = eval(setup, &self.modes, y);
         let mut done = [false; MAXK];
+        let mut own = [false; MAXK];
         for &event in events {
             done[event.contact()] = true;
+            own[event.contact()] |= matches!(
+                event,
+                Event::NearHalt(_) | Event::Halt(_) | Event::Live(_) | Event::StickBreak(_)
+            );
             self.change(event, &ev, y, &mut rest, &mut allowed);
         }
+        self.release_fixed(&own, &ev, &rest);
         self.settle(&done, y, &mut rest, &mut allowed);
         let ev = eval(setup, &self.modes, y);
         self.decide(&ev.f, &ev.v, y, rest, allowed, &before);
