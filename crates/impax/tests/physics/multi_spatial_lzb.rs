@@ -16,8 +16,9 @@
 //! * 100,000 random problems (`K = 2 … 4`, `W = J M⁻¹ Jᵀ` of random bodies, singular ones
 //!   included): never an energy gain, the contacts' works sum to `ΔT`, every impulse in its
 //!   cone, no consistent result leaving a contact approaching; the breakdowns counted;
-//! * two problems where a slip went on along its ray through another contact's event: an
-//!   integration that never takes a slip along its ray early, to 1e-9.
+//! * problems where a slip went on along its ray through another contact's event, and where
+//!   a stick broke a hair inside its cone: an integration that never takes a slip along its
+//!   ray early, to 1e-9.
 
 use super::multi_spatial::box_rows;
 use super::support::{contact_space, random_multi, random_spatial_space, solved_in_parallel};
@@ -602,7 +603,6 @@ fn the_dispatcher_takes_lzb_at_several_contacts() {
 /// variable down to `2 σ_f`): an independent path to the same halts.
 #[test]
 fn a_slip_on_its_ray_slips_freely_again_after_another_contacts_event() {
-    type Case = ([f64; 21], [f64; 6], [f64; 2], [f64; 2], [f64; 12]);
     let cases: [Case; 2] = [
         (
             [
@@ -703,22 +703,89 @@ fn a_slip_on_its_ray_slips_freely_again_after_another_contacts_event() {
             ],
         ),
     ];
-    for (w, v, mu, e, want) in cases {
-        let p = MultiProblem::from_upper(2, &w, &v, &mu, &e).unwrap();
-        let o = lzb::resolve(&p).unwrap();
-        let got: Vec<f64> = o
-            .contacts
-            .iter()
-            .flat_map(|c| {
-                let (i, u) = (c.impulse, c.velocity_after);
-                [i.x, i.y, i.z, u.x, u.y, u.z]
-            })
-            .collect();
-        let scale = want.iter().fold(0.0f64, |m, x| m.max(x.abs()));
-        let off = got
-            .iter()
-            .zip(&want)
-            .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
-        assert!(off < 1e-9 * scale, "{off:e} of {scale}: {got:?}");
+    for case in cases {
+        assert_two_contacts(case);
     }
+}
+
+/// Where a stick breaks, located to the integration's tolerance, the secular equation of the
+/// ray the slip resumes along has its root at `λ ≈ 0`, and may have it a hair below zero
+/// (`|M⁻¹ w|² − 1 = −4e-11` here): the slip then resumed along `w` instead of the ray's limit
+/// `M⁻¹ w`, 0.24 rad away, and the result was off by `1.7e-6`. The answer is the same
+/// integration at `rtol 1e-14` that never takes a slip along its ray early.
+#[test]
+fn a_stick_breaking_at_its_limit_resumes_along_the_rays_limit() {
+    assert_two_contacts((
+        [
+            3.6216445892347724,
+            1.549695719179994,
+            -0.8023380451691379,
+            0.4969524481576628,
+            -0.4284592504869782,
+            -1.2095577596087779,
+            6.205138384906685,
+            0.5399363239994952,
+            1.9123316024360844,
+            2.6289092318787786,
+            -5.906381533319237,
+            2.690556277903688,
+            0.7810016125139507,
+            1.7122758933878486,
+            -1.6367077625520858,
+            2.9955404069683222,
+            0.8633183811062743,
+            -0.4570887384536919,
+            4.9978145517343675,
+            -5.905072534704053,
+            10.382304606038309,
+        ],
+        [
+            1.1411209221171412,
+            -0.5499015688224778,
+            -1.0255684679916328,
+            -0.4392596733836742,
+            -0.5229510044163779,
+            0.33466027487833294,
+        ],
+        [1.2768107511365119, 0.4463366889463996],
+        [0.1379082085277843, 0.11598830990513675],
+        [
+            -0.3083597305035912,
+            0.15109793241423006,
+            0.30744289946668835,
+            -0.04444226076483049,
+            -0.3168450752004897,
+            0.0005797887448668604,
+            0.009304847852965094,
+            -0.023950641401569613,
+            0.05883345186647012,
+            -0.08313313444227066,
+            0.07373477071339718,
+            0.060006913691772246,
+        ],
+    ));
+}
+
+/// `W`'s upper triangle, `v`, `μ`, `e` and the impulses and velocities after (contact by
+/// contact) of a problem with two contacts.
+type Case = ([f64; 21], [f64; 6], [f64; 2], [f64; 2], [f64; 12]);
+
+/// `lzb` on a problem with two contacts gives its answer to 1e-9 of its largest entry.
+fn assert_two_contacts((w, v, mu, e, want): Case) {
+    let p = MultiProblem::from_upper(2, &w, &v, &mu, &e).unwrap();
+    let o = lzb::resolve(&p).unwrap();
+    let got: Vec<f64> = o
+        .contacts
+        .iter()
+        .flat_map(|c| {
+            let (i, u) = (c.impulse, c.velocity_after);
+            [i.x, i.y, i.z, u.x, u.y, u.z]
+        })
+        .collect();
+    let scale = want.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    let off = got
+        .iter()
+        .zip(&want)
+        .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
+    assert!(off < 1e-9 * scale, "{off:e} of {scale}: {got:?}");
 }

@@ -21,8 +21,9 @@
 //!
 //! * a slip that **leaves rest** does so along the unique centrifugal invariant ray,
 //!   `(λ I + μ_j F_j M_j) d = c_j`, `λ > 0`
-//!   ([`crate::spatial::resumption_direction`]'s secular equation); several contacts leaving
-//!   rest together have coupled rays (`a_j(d) = λ_j d_j` for each), found by Gauss–Seidel
+//!   ([`crate::spatial::resumption_direction`]'s secular equation; where a stick breaks the
+//!   root is `λ ≈ 0`, and a hair below it the ray's limit `M⁻¹ c/(μ F)` is taken);
+//!   several contacts leaving rest together have coupled rays (`a_j(d) = λ_j d_j` for each), found by Gauss–Seidel
 //!   sweeps over the contacts, each solving its own ray given the others';
 //! * a slip that **halts** ends on a centripetal invariant ray, `d × a_j(d) = 0`,
 //!   `d·a_j(d) < 0`: the first one its direction turns towards.
@@ -39,7 +40,7 @@ use super::field::{cone_excess, rate_scale, slip_rate, tangential_rates};
 use super::state::{Modes, Setup, StickSet, Tangent, MAXK, ROWS};
 use crate::math::{Mat2, Vec2};
 use crate::multi::RANK_TOL;
-use crate::spatial::invariant::{rays_of, resumption_ray, InvariantRays, RayKind};
+use crate::spatial::invariant::{polish_ray, rays_of, resumption_ray, InvariantRays, RayKind};
 use nalgebra::{DMatrix, SymmetricEigen};
 use std::f64::consts::TAU;
 
@@ -140,12 +141,34 @@ fn affine(setup: &Setup, modes: &Modes, f: &[f64; MAXK], v: &[f64; ROWS], r: &[u
 fn leave_alone(b: &Mat2, c: Vec2, muf: f64) -> Option<Vec2> {
     if muf > 0.0 {
         let m = (b + b.transpose()) * (-0.5 / muf);
-        resumption_ray(&m, c / muf, 1.0).map(|(d, _)| d)
+        let w = c / muf;
+        resumption_ray(&m, w, 1.0)
+            .map(|(d, _)| d)
+            .or_else(|| at_the_limit(&m, w))
     } else {
         let n = c.norm();
         (n > 0.0).then(|| c / n)
     }
 }
+
+/// A stick at its limit to round-off leaves along the ray's limit `λ → 0⁺`, `M⁻¹ w` (unit
+/// to within [`LIMIT_BAND`]): where a stick breaks — located to the integration's tolerance,
+/// a hair inside the cone or outside — the secular equation's root is `λ ≈ 0` and may fall
+/// a hair below it, where [`resumption_ray`] finds none. `None` for a singular `M` or a
+/// stick inside the band.
+fn at_the_limit(m: &Mat2, w: Vec2) -> Option<Vec2> {
+    let d = m.try_inverse()? * w;
+    let n2 = d.norm_squared();
+    (n2.is_finite() && n2 > 0.0 && n2 >= 1.0 - LIMIT_BAND).then(|| {
+        let s = d / n2.sqrt();
+        polish_ray(m, w, 1.0, s).unwrap_or(s)
+    })
+}
+
+/// How far inside the cone (`1 − |M⁻¹ w|²`) a stick still counts as at its limit for
+/// [`at_the_limit`]: a stick break located to the integration's tolerance (`1e-12`) is within
+/// about `1e-10` of it.
+const LIMIT_BAND: f64 = 1e-9;
 
 /// The directions of the contacts `r` leaving rest together (module docs), `None` if
 /// some contact has none or the sweeps do not settle.
