@@ -23,8 +23,9 @@
 //!   `(λ I + μ_j F_j M_j) d = c_j`, `λ > 0`
 //!   ([`crate::spatial::resumption_direction`]'s secular equation; where a stick breaks the
 //!   root is `λ ≈ 0`, and a hair below it the ray's limit `M⁻¹ c/(μ F)` is taken);
-//!   several contacts leaving rest together have coupled rays (`a_j(d) = λ_j d_j` for each), found by Gauss–Seidel
-//!   sweeps over the contacts, each solving its own ray given the others';
+//!   several contacts leaving rest together have coupled rays (`a_j(d) = λ_j d_j` for
+//!   each), found by Gauss–Seidel sweeps over the contacts, each solving its own ray given
+//!   the others';
 //! * a slip that **halts** ends on a centripetal invariant ray, `d × a_j(d) = 0`,
 //!   `d·a_j(d) < 0`: the first one its direction turns towards.
 //!

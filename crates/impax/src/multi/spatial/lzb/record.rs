@@ -173,11 +173,11 @@ impl<'a> Path<'a> {
     }
 
     /// A slip going on along the ray it halts on ([`Path::check_halts`]) short of its halt
-    /// (`σ > 2 σ_f`) slips freely again at a normal event (`own` the contacts whose slips
-    /// have their own events here, `rest` those whose regimes are to be chosen): the ray was
-    /// its slip field's, extrapolated to the halt, and the event changes how that field
-    /// evolves (a contact joining before the halt adds its force). It is compared with its
-    /// ray again from the next steps.
+    /// (`σ > 2 σ_f`) slips freely again at any event but its own slip's (`own` the contacts
+    /// whose slips have their own events here — a halt, a stick breaking —, `rest` those
+    /// whose regimes are to be chosen): the ray was its slip field's, extrapolated to the
+    /// halt, and the event changes how that field evolves (a contact joining before the halt
+    /// adds its force). It is compared with its ray again from the next steps.
     fn release_fixed(&mut self, own: &[bool; MAXK], ev: &Eval, rest: &[usize]) {
         let setup = self.setup;
         for (c, &own) in own.iter().enumerate().take(setup.k) {

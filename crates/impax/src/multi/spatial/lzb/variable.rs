@@ -24,8 +24,8 @@
 //!   others set the steps, the halt recedes). The slip is compared with the ray it halts
 //!   on at the end of each step (`record.rs`) and goes on along it when close and closing
 //!   (a direction swinging past the ray is close where it passes), until it halts or
-//!   another contact's event changes the field the ray was the slip's in (it then slips
-//!   freely again); the variable ends at the latest at the contact's limit `2 σ_f` exactly
+//!   an event changes the field the ray was the slip's in (it then slips freely again);
+//!   the variable ends at the latest at the contact's limit `2 σ_f` exactly
 //!   ([`Modes::limit`]).
 //!
 //! The power `m` is the force law's ([`crate::multi::lzb::common::ForceLaw`]). Any event
