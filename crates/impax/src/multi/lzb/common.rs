@@ -65,6 +65,14 @@ impl ForceLaw {
         ForceLaw { eta, power, m }
     }
 
+    /// `ζ = 2η` where it is an integer of at least 2: a force from a double zero of `s`,
+    /// `κ (t² q)^η = κ t^ζ q^η`, is then analytic in `t` (a contact joining, the impact's
+    /// start in `u = √τ`). `None` otherwise.
+    pub(in crate::multi) fn double_zero_power(&self) -> Option<usize> {
+        let zeta = 2.0 * self.eta;
+        (zeta.fract() == 0.0 && (2.0..=6.0).contains(&zeta)).then_some(zeta as usize)
+    }
+
     /// `x^(m−1)` by repeated squaring, as `f64::powi` computes it (`x` itself for the
     /// common `m = 2`), without the call `powi` makes (which the compiler would also make
     /// where the result is not needed).

@@ -1,5 +1,9 @@
 //! The path's Taylor series in one set of regimes: the step where every contact that carries
-//! a force is loaded (`s_j > 0`), so that `F_j = κ_j s_j^η` is analytic there.
+//! a force is loaded (`s_j > 0`), so that `F_j = κ_j s_j^η` is analytic there, or starts
+//! loading from a double zero of `s_j` — the impact's start in `u = √τ` (`s_j = −v_nj⁻ u² +
+//! …`), a contact joining at `v_nj = 0` (`s_j ∝ t²`) — where, with `s_j = t² q_j`,
+//! `q_j(0) > 0`, the force `κ_j |t|^(2η) q_j^η` is analytic for an integer `2η` (`η = 3/2`:
+//! `|t|³`), its coefficients those of `q_j^η` shifted by `2η` orders.
 //!
 //! In a fixed set of regimes ([`Field`]) the right-hand side in `τ` is
 //!
@@ -113,8 +117,9 @@ impl<const N: usize> Series<N> {
 
     /// The Taylor series of the path from `(x0, y)` in the variable `var` and the regimes
     /// of `field`, and its step. `false` where it does not apply: a contact carrying a force
-    /// is unloaded (`s_j ≤ 0`: the impact's start, a contact joining), the start's variable
-    /// at `u = 0`, or no finite step; the Runge–Kutta step is taken there.
+    /// is unloaded (`s_j ≤ 0`) other than from a double zero of `s_j` with `2η` an integer
+    /// (module docs), a force from a double zero that does not grow, or no finite step; the
+    /// Runge–Kutta step is taken there.
     #[allow(clippy::needless_range_loop)] // the rows are indexed by order and contact alike
     pub(super) fn build(
         &mut self,
@@ -126,18 +131,31 @@ impl<const N: usize> Series<N> {
     ) -> bool {
         let k = N / PER;
         let alpha = setup.law.eta;
-        // Per contact: the mask of loaded contacts, 1/s₀ (0 if not loaded), 1/div.
+        // Order 0: the point's velocities and forces, as the field gives them.
+        let Eval { v: v0, f: f0, .. } = field.eval::<N>(setup, y);
+        // Per contact: the mask of loaded contacts, 1/s₀ (0 if not loaded), 1/div, and the
+        // contacts whose force starts here from zero (`s_j = t² q_j`, module docs).
         let mut act = [0.0; N];
         let mut inv_s0 = [0.0; N];
         let mut inv_div = [0.0; N];
+        // (Bit j: contact j's force starts here from zero.)
+        let mut from_zero = 0u32;
+        let zeta = setup.law.double_zero_power();
         for j in 0..k {
             let sj = y[PER * j + S];
             if field.active(j) {
-                if sj.is_nan() || sj <= 0.0 {
+                if sj > 0.0 {
+                    inv_s0[j] = 1.0 / sj;
+                } else if sj == 0.0
+                    && zeta.is_some()
+                    && starts_from_zero(setup, var, x0, v0[2 * j + 1])
+                {
+                    from_zero |= 1 << j;
+                } else {
+                    // (NaN included.)
                     return false;
                 }
                 act[j] = 1.0;
-                inv_s0[j] = 1.0 / sj;
                 inv_div[j] = 1.0 / field.div(j);
             }
         }
@@ -163,8 +181,7 @@ impl<const N: usize> Series<N> {
         else {
             return false;
         };
-        // Order 0: the point's velocities and forces, as the field gives them.
-        let Eval { v: v0, f: f0, .. } = field.eval::<N>(setup, y);
+        let in_time = var == Var::Time;
         let (c, aux) = (&mut self.c, &mut self.aux);
         c[0] = *y;
         for j in 0..k {
@@ -199,20 +216,46 @@ impl<const N: usize> Series<N> {
             }
             if kk > 0 {
                 force_order(c, aux, kk, alpha, &inv_s0);
+                if let (true, Some(zeta)) = (from_zero != 0, zeta) {
+                    // F_j = κ_j |t|^ζ q_j^η: in a separation's variable, which decreases
+                    // (t < 0), (−t)^ζ.
+                    let odd = zeta % 2 == 1 && var.separating().is_some();
+                    for j in (0..k).filter(|&j| from_zero & (1 << j) != 0) {
+                        let base = if odd { -setup.kappa[j] } else { setup.kappa[j] };
+                        let Some(fk) = force_from_zero(c, aux, kk, j, zeta, alpha, base) else {
+                            return false;
+                        };
+                        aux[kk][F * k + j] = fk;
+                    }
+                }
             }
             // The normal impulses and deflections at order kk + 1.
             let inv = RECIP[kk + 1];
             let (mut dphi, mut ds) = ([0.0; N], [0.0; N]);
-            for i in 0..glen.min(kk + 1) {
-                let (gi, a) = (g[i], &aux[kk - i]);
+            if in_time {
+                // (g = 1.)
                 for j in 0..k {
-                    dphi[j] += gi * a[F * k + j];
-                    ds[j] += gi * a[VN * k + j];
+                    dphi[j] = aux[kk][F * k + j];
+                    ds[j] = aux[kk][VN * k + j];
+                }
+            } else {
+                for i in 0..glen.min(kk + 1) {
+                    let (gi, a) = (g[i], &aux[kk - i]);
+                    for j in 0..k {
+                        dphi[j] += gi * a[F * k + j];
+                        ds[j] += gi * a[VN * k + j];
+                    }
                 }
             }
             for j in 0..k {
                 c[kk + 1][PER * j + PN] = dphi[j] * inv;
                 c[kk + 1][PER * j + S] = -ds[j] * inv * act[j] * inv_div[j];
+            }
+            if kk == 0 && from_zero != 0 {
+                // A contact joining starts at v_nj = 0 (to round-off): s_j = O(t²) exactly.
+                for j in (0..k).filter(|&j| from_zero & (1 << j) != 0) {
+                    c[1][PER * j + S] = 0.0;
+                }
             }
             if let Some(js) = sep {
                 c[kk + 1][PER * js + S] = sep_s[kk + 1];
@@ -291,7 +334,8 @@ impl Rate {
         match var {
             Var::Time => r.g[0] = 1.0,
             Var::Root => {
-                if x0 <= 0.0 {
+                // (At u = 0 only for contacts starting from zero, `starts_from_zero`.)
+                if x0 < 0.0 {
                     return None;
                 }
                 binomial_powers(m - 1, x0, &mut r.g);
@@ -499,6 +543,52 @@ fn force_order<const N: usize>(
     }
 }
 
+/// Whether a contact with `s_j = 0` and normal velocity `vn` starts its force here, at `x0`
+/// in `var`, from a double zero of `s_j`: at the impact's start in `u` (`s_j = −v_nj⁻ u²`
+/// to leading order), or joining at `v_nj = 0` (to [`Setup::approach`]) in `τ` or a
+/// separation's variable.
+fn starts_from_zero(setup: &Setup, var: Var, x0: f64, vn: f64) -> bool {
+    match var {
+        Var::Root => x0 == 0.0 && vn < 0.0,
+        Var::Time | Var::Separation { .. } => vn.abs() <= setup.approach,
+    }
+}
+
+/// The force's coefficient of order `kk` of contact `j`, whose `s_j = t² q_j` starts from a
+/// double zero (`q_i = s_{i+2}`, `q₀ > 0`): `F_j = κ_j |t|^ζ q_j^η = base t^ζ q_j^η`
+/// (`base = ±κ_j`, the sign of `t^ζ` along the step), `ζ = 2η` an integer, by the power
+/// recurrence of `q^η` (as [`force_order`]'s) shifted by `ζ` orders. `None` where `q₀ ≤ 0`
+/// (the contact does not load: the Runge–Kutta step decides).
+#[allow(clippy::needless_range_loop)] // the rows are indexed by order and contact alike
+fn force_from_zero<const N: usize>(
+    c: &[[f64; N]; ORDER + 1],
+    aux: &[[f64; N]; ORDER],
+    kk: usize,
+    j: usize,
+    zeta: usize,
+    alpha: f64,
+    base: f64,
+) -> Option<f64> {
+    let k = N / PER;
+    if kk < zeta {
+        return Some(0.0);
+    }
+    let n = kk - zeta;
+    let q0 = c[2][PER * j + S];
+    if q0.is_nan() || q0 <= 0.0 {
+        return None;
+    }
+    if n == 0 {
+        return Some(base * q0.powf(alpha));
+    }
+    let mut acc = 0.0;
+    for i in 0..n {
+        let weight = alpha * (n - i) as f64 - i as f64;
+        acc += weight * c[n - i + 2][PER * j + S] * aux[i + zeta][F * k + j];
+    }
+    Some(acc * RECIP[n] / q0)
+}
+
 /// The coefficient of order `kk` of each contact's friction power `v_t dp_t/dx`: the product
 /// of the series of `v_t` and of `dp_t/dx` (`aux`'s blocks `VT`, `DPT`), two partial sums.
 #[allow(clippy::needless_range_loop)] // the rows are indexed by order and contact alike
@@ -545,29 +635,40 @@ mod tests {
     use crate::multi::MultiProblem;
     use crate::numerics::dop853::dop853_step;
 
-    /// Two contacts, both loaded, the first slipping and the second expanding: the state
-    /// after a step of the series against the same step in 400 DOP853 steps.
+    /// Two contacts (`W` positive definite, `w` its upper triangle), the first slipping: the
+    /// state after a step of the series from `y` in the normal regimes `normal` against the
+    /// same step in 400 DOP853 steps.
+    struct Case {
+        w: [f64; 10],
+        v: [f64; 4],
+        normal: [Normal; 2],
+        y: [f64; 8],
+    }
+
+    /// Both loaded, the second expanding.
+    const LOADED: Case = Case {
+        w: [1.3, 0.2, 0.4, -0.1, 0.9, 0.3, 0.2, 1.1, 0.25, 1.0],
+        v: [0.3, -1.0, -0.2, 0.4],
+        normal: [Normal::Compression, Normal::Expansion],
+        y: [0.05, 0.2, 0.3, 0.01, 0.0, 0.35, 0.25, 0.0],
+    };
+
     fn agrees_with_runge_kutta(var: Var, x0: f64) {
-        let w = [1.3, 0.2, 0.4, -0.1, 0.9, 0.3, 0.2, 1.1, 0.25, 1.0];
-        let p = MultiProblem::from_upper(2, &w, &[0.3, -1.0, -0.2, 0.4], &[0.4, 0.0], &[0.8, 0.6])
-            .unwrap();
+        agrees(&LOADED, var, x0);
+    }
+
+    fn agrees(case: &Case, var: Var, x0: f64) {
+        let p = MultiProblem::from_upper(2, &case.w, &case.v, &[0.4, 0.0], &[0.8, 0.6]).unwrap();
         let setup = Setup::new(&p);
+        let mut normal = [Normal::Off; 8];
+        normal[..2].copy_from_slice(&case.normal);
         let modes = Modes {
-            normal: [
-                Normal::Compression,
-                Normal::Expansion,
-                Normal::Off,
-                Normal::Off,
-                Normal::Off,
-                Normal::Off,
-                Normal::Off,
-                Normal::Off,
-            ],
+            normal,
             tangent: [Tangent::Slip(1.0); 8],
             stick: StickSet::EMPTY,
         };
         let field = Field::new(&setup, &modes);
-        let y = [0.05, 0.2, 0.3, 0.01, 0.0, 0.35, 0.25, 0.0];
+        let y = case.y;
         let mut ser = Series::<8>::new();
         assert!(ser.build(&setup, &field, var, x0, &y));
         let h = ser.h;
@@ -619,6 +720,45 @@ mod tests {
             entry: 0.5,
         };
         agrees_with_runge_kutta(var, 0.5);
+    }
+
+    #[test]
+    fn a_step_from_the_impacts_start_in_u_agrees_with_runge_kutta() {
+        // Both contacts approaching, s = 0: each force starts as κ u³ (s_j = −v_nj⁻ u²).
+        let case = Case {
+            v: [0.3, -1.0, -0.2, -0.6],
+            normal: [Normal::Compression; 2],
+            y: [0.0; 8],
+            ..LOADED
+        };
+        agrees(&case, Var::Root, 0.0);
+    }
+
+    #[test]
+    fn a_step_from_a_contact_joining_agrees_with_runge_kutta() {
+        // The second contact at s = 0 and v_n = 0, pushed into approach by the first's force
+        // (dv_n2/dτ = (−0.2 + 0.1 · 0.4) F₁ < 0): s₂ ∝ τ², its force ∝ τ³.
+        let case = Case {
+            w: [1.3, 0.2, 0.4, -0.1, 0.9, 0.3, -0.2, 1.1, 0.25, 1.0],
+            v: [0.3, -1.0, -0.2, 0.0],
+            normal: [Normal::Compression; 2],
+            y: [0.0, 0.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0],
+        };
+        agrees(&case, Var::Time, 0.0);
+        // The same in a separation's variable, the first contact expanding to its
+        // separation (σ decreasing: the force ∝ (−t)³): after an impulse p_n1 = 2, where
+        // v_n1 = −1 + 0.9 · 2 and v_n2 = 0.4 − 0.2 · 2 = 0.
+        let case = Case {
+            v: [0.3, -1.0, -0.2, 0.4],
+            normal: [Normal::Expansion, Normal::Compression],
+            y: [0.0, 2.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0],
+            ..case
+        };
+        let var = Var::Separation {
+            contact: 0,
+            entry: 1.0,
+        };
+        agrees(&case, var, 0.3f64.sqrt());
     }
 
     #[test]
