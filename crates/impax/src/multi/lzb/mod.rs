@@ -88,12 +88,13 @@
 //! (`F ∝ s^η`): at the start of the impact and at each separation the path is integrated in
 //! regularising variables (`u = τ^(1/m)`, `σ = s_j^(1/m)`: module `variable.rs`), in which it
 //! is analytic for Hertz's exponent. Where every contact that carries a force is loaded
-//! (`s_j > 0`) the path is a **Taylor series** in the variable, to order 17, its coefficients
-//! by the recurrences of automatic differentiation (`s^η`, products, the quotient of a
-//! separation's variable) and its step where the terms reach the tolerance (`series.rs`);
-//! elsewhere — the first step of the impact and of a contact joining, where a force starts
-//! from zero, and where a series' coefficients overflow (friction of `1e100`) — the explicit
-//! Runge–Kutta pair of order 8 of Dormand & Prince (DOP853, as in Hairer, Nørsett & Wanner,
+//! (`s_j > 0`), or starts loading from a double zero of `s_j` (the impact's start in `u`, a
+//! contact joining at `v_nj = 0`: `s_j = t² q_j`, the force `κ_j |t|^(2η) q_j^η`, analytic
+//! for an integer `2η`), the path is a **Taylor series** in the variable, to order 17, its
+//! coefficients by the recurrences of automatic differentiation (`s^η`, products, the
+//! quotient of a separation's variable) and its step where the terms reach the tolerance
+//! (`series/`); elsewhere — a force starting from zero for another exponent, and where a
+//! series' coefficients overflow (friction of `1e100`) — the explicit Runge–Kutta pair of order 8 of Dormand & Prince (DOP853, as in Hairer, Nørsett & Wanner,
 //! *Solving ODEs I*, §II.5; the crate's `numerics::dop853`) takes the step. The tolerance is
 //! `1e-12` relative on every component. The events — a compression ending (`v_nj = 0`), a
 //! separation (`Ê_j = 0`), a recompression while loaded, a contact joining, a slip halting,

@@ -1,4 +1,4 @@
-//! The path of the impact in `τ`: each step a Taylor series (`series.rs`) where every loaded
+//! The path of the impact in `τ`: each step a Taylor series (`series/`) where every loaded
 //! contact's force is analytic, else an adaptive DOP853 step with its error test; the first
 //! event inside an accepted step located on its dense output, what each event changes, and
 //! the record of each contact (works, phases) and of the primary contact.

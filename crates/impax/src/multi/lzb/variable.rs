@@ -19,7 +19,7 @@
 //! smooth to beyond the integrator's order); an integer `η` (a linear spring, `η = 1`) has no
 //! singular point and is integrated in `τ` throughout. A contact joining mid-impact starts at
 //! `v_nj = 0` with `s_j ∝ (τ − τ_j)²`, so its force `∝ (τ − τ_j)^(2η)` is analytic for
-//! `η = 3/2`: the series (`series.rs`) starts there, as at `u = 0`. Any event returns the
+//! `η = 3/2`: the series (`series/`) starts there, as at `u = 0`. Any event returns the
 //! path to `τ`.
 
 use super::field::{Eval, Field};

@@ -36,7 +36,7 @@
 
 use super::events::{Event, Watch};
 use super::field::{Eval, Field};
-use super::state::{Modes, Setup, Tangent, PER, PN, PT, S, WT};
+use super::state::{Modes, Setup, Tangent, MAXK, PER, PN, PT, S, WT};
 use super::variable::Var;
 use super::RTOL;
 
@@ -133,32 +133,16 @@ impl<const N: usize> Series<N> {
         let alpha = setup.law.eta;
         // Order 0: the point's velocities and forces, as the field gives them.
         let Eval { v: v0, f: f0, .. } = field.eval::<N>(setup, y);
-        // Per contact: the mask of loaded contacts, 1/s₀ (0 if not loaded), 1/div, and the
-        // contacts whose force starts here from zero (`s_j = t² q_j`, module docs).
-        let mut act = [0.0; N];
-        let mut inv_s0 = [0.0; N];
-        let mut inv_div = [0.0; N];
-        // (Bit j: contact j's force starts here from zero.)
-        let mut from_zero = 0u32;
+        let Some(Loads {
+            act,
+            inv_s0,
+            inv_div,
+            from_zero,
+        }) = Loads::of(setup, field, var, x0, y, &v0)
+        else {
+            return false;
+        };
         let zeta = setup.law.double_zero_power();
-        for j in 0..k {
-            let sj = y[PER * j + S];
-            if field.active(j) {
-                if sj > 0.0 {
-                    inv_s0[j] = 1.0 / sj;
-                } else if sj == 0.0
-                    && zeta.is_some()
-                    && starts_from_zero(setup, var, x0, v0[2 * j + 1])
-                {
-                    from_zero |= 1 << j;
-                } else {
-                    // (NaN included.)
-                    return false;
-                }
-                act[j] = 1.0;
-                inv_div[j] = 1.0 / field.div(j);
-            }
-        }
         // v_k = A p_n,k for k ≥ 1 (p_t,k = T p_n,k): A = W_:t T + W_:n, 2K × K.
         let mut amap = [[0.0; N]; N];
         for (i, arow) in amap.iter_mut().enumerate().take(2 * k) {
@@ -305,6 +289,50 @@ impl<const N: usize> Series<N> {
         }
         h *= SAFETY;
         (h.is_finite() && h > 0.0).then_some(h)
+    }
+}
+
+/// Per contact: the mask of the contacts that carry a force, `1/s₀` (0 where `s₀ = 0`),
+/// `1/div`, and the contacts whose force starts here from zero (bit `j`: `s_j = t² q_j`,
+/// module docs).
+struct Loads<const N: usize> {
+    act: [f64; N],
+    inv_s0: [f64; N],
+    inv_div: [f64; N],
+    from_zero: u32,
+}
+
+impl<const N: usize> Loads<N> {
+    /// The loads at `x0` in `var`, state `y`, velocities `v0`; `None` where a contact that
+    /// carries a force is unloaded and does not start from zero there (NaN included).
+    fn of(
+        setup: &Setup,
+        field: &Field,
+        var: Var,
+        x0: f64,
+        y: &[f64; N],
+        v0: &[f64; 2 * MAXK],
+    ) -> Option<Self> {
+        let mut l = Loads {
+            act: [0.0; N],
+            inv_s0: [0.0; N],
+            inv_div: [0.0; N],
+            from_zero: 0,
+        };
+        let double_zero = setup.law.double_zero_power().is_some();
+        for j in (0..N / PER).filter(|&j| field.active(j)) {
+            let sj = y[PER * j + S];
+            if sj > 0.0 {
+                l.inv_s0[j] = 1.0 / sj;
+            } else if sj == 0.0 && double_zero && starts_from_zero(setup, var, x0, v0[2 * j + 1]) {
+                l.from_zero |= 1 << j;
+            } else {
+                return None;
+            }
+            l.act[j] = 1.0;
+            l.inv_div[j] = 1.0 / field.div(j);
+        }
+        Some(l)
     }
 }
 
@@ -629,159 +657,4 @@ fn binomial_powers(n: usize, x: f64, out: &mut [f64; ORDER + 1]) {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::multi::lzb::state::{Normal, StickSet};
-    use crate::multi::MultiProblem;
-    use crate::numerics::dop853::dop853_step;
-
-    /// Two contacts (`W` positive definite, `w` its upper triangle), the first slipping: the
-    /// state after a step of the series from `y` in the normal regimes `normal` against the
-    /// same step in 400 DOP853 steps.
-    struct Case {
-        w: [f64; 10],
-        v: [f64; 4],
-        normal: [Normal; 2],
-        y: [f64; 8],
-    }
-
-    /// Both loaded, the second expanding.
-    const LOADED: Case = Case {
-        w: [1.3, 0.2, 0.4, -0.1, 0.9, 0.3, 0.2, 1.1, 0.25, 1.0],
-        v: [0.3, -1.0, -0.2, 0.4],
-        normal: [Normal::Compression, Normal::Expansion],
-        y: [0.05, 0.2, 0.3, 0.01, 0.0, 0.35, 0.25, 0.0],
-    };
-
-    fn agrees_with_runge_kutta(var: Var, x0: f64) {
-        agrees(&LOADED, var, x0);
-    }
-
-    fn agrees(case: &Case, var: Var, x0: f64) {
-        let p = MultiProblem::from_upper(2, &case.w, &case.v, &[0.4, 0.0], &[0.8, 0.6]).unwrap();
-        let setup = Setup::new(&p);
-        let mut normal = [Normal::Off; 8];
-        normal[..2].copy_from_slice(&case.normal);
-        let modes = Modes {
-            normal,
-            tangent: [Tangent::Slip(1.0); 8],
-            stick: StickSet::EMPTY,
-        };
-        let field = Field::new(&setup, &modes);
-        let y = case.y;
-        let mut ser = Series::<8>::new();
-        assert!(ser.build(&setup, &field, var, x0, &y));
-        let h = ser.h;
-        assert!(h.abs() > 0.0 && h.is_finite());
-        // (A step of a fair part of the path: in these units its scales are near one.)
-        assert!(h.abs() > 0.01, "{h}");
-        let f = |x: f64, y: &[f64; 8]| var.rhs::<8>(&setup, &field, x, y);
-        let n = 400;
-        let (mut x, mut z) = (x0, y);
-        for _ in 0..n {
-            let k1 = f(x, &z);
-            z = dop853_step(&f, x, &z, &k1, h / n as f64).y;
-            x += h / n as f64;
-        }
-        let end = ser.end();
-        for i in 0..8 {
-            let scale = setup.atol[i] / (0.1 * RTOL) + y[i].abs();
-            assert!(
-                (end[i] - z[i]).abs() <= 1e-11 * scale,
-                "{var:?} component {i}: {} vs {}",
-                end[i],
-                z[i]
-            );
-        }
-        // The dense output is the series itself: half the step is half the way there.
-        let mid = ser.at(0.5);
-        assert!(mid
-            .iter()
-            .zip(&y)
-            .zip(&end)
-            .all(|((m, a), b)| m.is_finite() && (m - a).abs() <= (b - a).abs() + 1e-12));
-    }
-
-    #[test]
-    fn a_step_in_time_agrees_with_runge_kutta() {
-        agrees_with_runge_kutta(Var::Time, 0.0);
-    }
-
-    #[test]
-    fn a_step_in_the_start_variable_agrees_with_runge_kutta() {
-        agrees_with_runge_kutta(Var::Root, 0.4);
-    }
-
-    #[test]
-    fn a_step_in_a_separation_variable_agrees_with_runge_kutta() {
-        // σ = √s₁ at s₁ = 0.25, decreasing.
-        let var = Var::Separation {
-            contact: 1,
-            entry: 0.5,
-        };
-        agrees_with_runge_kutta(var, 0.5);
-    }
-
-    #[test]
-    fn a_step_from_the_impacts_start_in_u_agrees_with_runge_kutta() {
-        // Both contacts approaching, s = 0: each force starts as κ u³ (s_j = −v_nj⁻ u²).
-        let case = Case {
-            v: [0.3, -1.0, -0.2, -0.6],
-            normal: [Normal::Compression; 2],
-            y: [0.0; 8],
-            ..LOADED
-        };
-        agrees(&case, Var::Root, 0.0);
-    }
-
-    #[test]
-    fn a_step_from_a_contact_joining_agrees_with_runge_kutta() {
-        // The second contact at s = 0 and v_n = 0, pushed into approach by the first's force
-        // (dv_n2/dτ = (−0.2 + 0.1 · 0.4) F₁ < 0): s₂ ∝ τ², its force ∝ τ³.
-        let case = Case {
-            w: [1.3, 0.2, 0.4, -0.1, 0.9, 0.3, -0.2, 1.1, 0.25, 1.0],
-            v: [0.3, -1.0, -0.2, 0.0],
-            normal: [Normal::Compression; 2],
-            y: [0.0, 0.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0],
-        };
-        agrees(&case, Var::Time, 0.0);
-        // The same in a separation's variable, the first contact expanding to its
-        // separation (σ decreasing: the force ∝ (−t)³): after an impulse p_n1 = 2, where
-        // v_n1 = −1 + 0.9 · 2 and v_n2 = 0.4 − 0.2 · 2 = 0.
-        let case = Case {
-            v: [0.3, -1.0, -0.2, 0.4],
-            normal: [Normal::Expansion, Normal::Compression],
-            y: [0.0, 2.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0],
-            ..case
-        };
-        let var = Var::Separation {
-            contact: 0,
-            entry: 1.0,
-        };
-        agrees(&case, var, 0.3f64.sqrt());
-    }
-
-    #[test]
-    fn a_rise_inside_the_step_is_found() {
-        // q = −0.01 + t − t² on h = 1 rises from θ ≈ 0.0101 to 0.99 and ends below zero.
-        let mut q = [0.0; ORDER + 1];
-        q[0] = -0.01;
-        q[1] = 1.0;
-        q[2] = -1.0;
-        assert_eq!(rise(&q, 1.0), Some(1.0 / 16.0));
-        // A narrow bump between two samples: −1e-4 + (t − 0.53)² has its rise below zero…
-        let mut q = [0.0; ORDER + 1];
-        q[0] = -1e-4 - 0.53 * 0.53;
-        q[1] = 2.0 * 0.53;
-        q[2] = -1.0;
-        // … (−(t − 0.53)² − 1e-4 never rises), while 1e-5 − (t − 0.53)² does, at its top.
-        assert_eq!(rise(&q, 1.0), None);
-        q[0] = 1e-5 - 0.53 * 0.53;
-        let th = rise(&q, 1.0).expect("the bump");
-        assert!((th - 0.53).abs() < 1e-6, "{th}");
-        // Negative steps (a separation's variable) are the same polynomial in θ.
-        q[1] = -q[1];
-        let th = rise(&q, -1.0).expect("the bump");
-        assert!((th - 0.53).abs() < 1e-6, "{th}");
-    }
-}
+mod tests;

@@ -1,0 +1,157 @@
+//! The series against many DOP853 steps over the same step, from loaded contacts and from
+//! forces starting at zero; the rise of an event function inside a step.
+
+use super::*;
+use crate::multi::lzb::state::{Normal, StickSet};
+use crate::multi::MultiProblem;
+use crate::numerics::dop853::dop853_step;
+
+/// Two contacts (`W` positive definite, `w` its upper triangle), the first slipping: the
+/// state after a step of the series from `y` in the normal regimes `normal` against the
+/// same step in 400 DOP853 steps.
+struct Case {
+    w: [f64; 10],
+    v: [f64; 4],
+    normal: [Normal; 2],
+    y: [f64; 8],
+}
+
+/// Both loaded, the second expanding.
+const LOADED: Case = Case {
+    w: [1.3, 0.2, 0.4, -0.1, 0.9, 0.3, 0.2, 1.1, 0.25, 1.0],
+    v: [0.3, -1.0, -0.2, 0.4],
+    normal: [Normal::Compression, Normal::Expansion],
+    y: [0.05, 0.2, 0.3, 0.01, 0.0, 0.35, 0.25, 0.0],
+};
+
+fn agrees_with_runge_kutta(var: Var, x0: f64) {
+    agrees(&LOADED, var, x0);
+}
+
+fn agrees(case: &Case, var: Var, x0: f64) {
+    let p = MultiProblem::from_upper(2, &case.w, &case.v, &[0.4, 0.0], &[0.8, 0.6]).unwrap();
+    let setup = Setup::new(&p);
+    let mut normal = [Normal::Off; 8];
+    normal[..2].copy_from_slice(&case.normal);
+    let modes = Modes {
+        normal,
+        tangent: [Tangent::Slip(1.0); 8],
+        stick: StickSet::EMPTY,
+    };
+    let field = Field::new(&setup, &modes);
+    let y = case.y;
+    let mut ser = Series::<8>::new();
+    assert!(ser.build(&setup, &field, var, x0, &y));
+    let h = ser.h;
+    assert!(h.abs() > 0.0 && h.is_finite());
+    // (A step of a fair part of the path: in these units its scales are near one.)
+    assert!(h.abs() > 0.01, "{h}");
+    let f = |x: f64, y: &[f64; 8]| var.rhs::<8>(&setup, &field, x, y);
+    let n = 400;
+    let (mut x, mut z) = (x0, y);
+    for _ in 0..n {
+        let k1 = f(x, &z);
+        z = dop853_step(&f, x, &z, &k1, h / n as f64).y;
+        x += h / n as f64;
+    }
+    let end = ser.end();
+    for i in 0..8 {
+        let scale = setup.atol[i] / (0.1 * RTOL) + y[i].abs();
+        assert!(
+            (end[i] - z[i]).abs() <= 1e-11 * scale,
+            "{var:?} component {i}: {} vs {}",
+            end[i],
+            z[i]
+        );
+    }
+    // The dense output is the series itself: half the step is half the way there.
+    let mid = ser.at(0.5);
+    assert!(mid
+        .iter()
+        .zip(&y)
+        .zip(&end)
+        .all(|((m, a), b)| m.is_finite() && (m - a).abs() <= (b - a).abs() + 1e-12));
+}
+
+#[test]
+fn a_step_in_time_agrees_with_runge_kutta() {
+    agrees_with_runge_kutta(Var::Time, 0.0);
+}
+
+#[test]
+fn a_step_in_the_start_variable_agrees_with_runge_kutta() {
+    agrees_with_runge_kutta(Var::Root, 0.4);
+}
+
+#[test]
+fn a_step_in_a_separation_variable_agrees_with_runge_kutta() {
+    // σ = √s₁ at s₁ = 0.25, decreasing.
+    let var = Var::Separation {
+        contact: 1,
+        entry: 0.5,
+    };
+    agrees_with_runge_kutta(var, 0.5);
+}
+
+#[test]
+fn a_step_from_the_impacts_start_in_u_agrees_with_runge_kutta() {
+    // Both contacts approaching, s = 0: each force starts as κ u³ (s_j = −v_nj⁻ u²).
+    let case = Case {
+        v: [0.3, -1.0, -0.2, -0.6],
+        normal: [Normal::Compression; 2],
+        y: [0.0; 8],
+        ..LOADED
+    };
+    agrees(&case, Var::Root, 0.0);
+}
+
+#[test]
+fn a_step_from_a_contact_joining_agrees_with_runge_kutta() {
+    // The second contact at s = 0 and v_n = 0, pushed into approach by the first's force
+    // (dv_n2/dτ = (−0.2 + 0.1 · 0.4) F₁ < 0): s₂ ∝ τ², its force ∝ τ³.
+    let case = Case {
+        w: [1.3, 0.2, 0.4, -0.1, 0.9, 0.3, -0.2, 1.1, 0.25, 1.0],
+        v: [0.3, -1.0, -0.2, 0.0],
+        normal: [Normal::Compression; 2],
+        y: [0.0, 0.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0],
+    };
+    agrees(&case, Var::Time, 0.0);
+    // The same in a separation's variable, the first contact expanding to its
+    // separation (σ decreasing: the force ∝ (−t)³): after an impulse p_n1 = 2, where
+    // v_n1 = −1 + 0.9 · 2 and v_n2 = 0.4 − 0.2 · 2 = 0.
+    let case = Case {
+        v: [0.3, -1.0, -0.2, 0.4],
+        normal: [Normal::Expansion, Normal::Compression],
+        y: [0.0, 2.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0],
+        ..case
+    };
+    let var = Var::Separation {
+        contact: 0,
+        entry: 1.0,
+    };
+    agrees(&case, var, 0.3f64.sqrt());
+}
+
+#[test]
+fn a_rise_inside_the_step_is_found() {
+    // q = −0.01 + t − t² on h = 1 rises from θ ≈ 0.0101 to 0.99 and ends below zero.
+    let mut q = [0.0; ORDER + 1];
+    q[0] = -0.01;
+    q[1] = 1.0;
+    q[2] = -1.0;
+    assert_eq!(rise(&q, 1.0), Some(1.0 / 16.0));
+    // A narrow bump between two samples: −1e-4 + (t − 0.53)² has its rise below zero…
+    let mut q = [0.0; ORDER + 1];
+    q[0] = -1e-4 - 0.53 * 0.53;
+    q[1] = 2.0 * 0.53;
+    q[2] = -1.0;
+    // … (−(t − 0.53)² − 1e-4 never rises), while 1e-5 − (t − 0.53)² does, at its top.
+    assert_eq!(rise(&q, 1.0), None);
+    q[0] = 1e-5 - 0.53 * 0.53;
+    let th = rise(&q, 1.0).expect("the bump");
+    assert!((th - 0.53).abs() < 1e-6, "{th}");
+    // Negative steps (a separation's variable) are the same polynomial in θ.
+    q[1] = -q[1];
+    let th = rise(&q, -1.0).expect("the bump");
+    assert!((th - 0.53).abs() < 1e-6, "{th}");
+}
