@@ -6,14 +6,15 @@ use crate::multi::lzb::state::{Normal, StickSet};
 use crate::multi::MultiProblem;
 use crate::numerics::dop853::dop853_step;
 
-/// Two contacts (`W` positive definite, `w` its upper triangle), the first slipping: the
-/// state after a step of the series from `y` in the normal regimes `normal` against the
-/// same step in 400 DOP853 steps.
+/// Two contacts (`W` positive definite, `w` its upper triangle), the first slipping, the
+/// force exponent `eta`: the state after a step of the series from `y` in the normal
+/// regimes `normal` against the same step in 400 DOP853 steps.
 struct Case {
     w: [f64; 10],
     v: [f64; 4],
     normal: [Normal; 2],
     y: [f64; 8],
+    eta: f64,
 }
 
 /// Both loaded, the second expanding.
@@ -22,6 +23,7 @@ const LOADED: Case = Case {
     v: [0.3, -1.0, -0.2, 0.4],
     normal: [Normal::Compression, Normal::Expansion],
     y: [0.05, 0.2, 0.3, 0.01, 0.0, 0.35, 0.25, 0.0],
+    eta: 1.5,
 };
 
 fn agrees_with_runge_kutta(var: Var, x0: f64) {
@@ -29,7 +31,9 @@ fn agrees_with_runge_kutta(var: Var, x0: f64) {
 }
 
 fn agrees(case: &Case, var: Var, x0: f64) {
-    let p = MultiProblem::from_upper(2, &case.w, &case.v, &[0.4, 0.0], &[0.8, 0.6]).unwrap();
+    let p = MultiProblem::from_upper(2, &case.w, &case.v, &[0.4, 0.0], &[0.8, 0.6])
+        .and_then(|p| p.with_exponent(case.eta))
+        .unwrap();
     let setup = Setup::new(&p);
     let mut normal = [Normal::Off; 8];
     normal[..2].copy_from_slice(&case.normal);
@@ -95,41 +99,53 @@ fn a_step_in_a_separation_variable_agrees_with_runge_kutta() {
 
 #[test]
 fn a_step_from_the_impacts_start_in_u_agrees_with_runge_kutta() {
-    // Both contacts approaching, s = 0: each force starts as κ u³ (s_j = −v_nj⁻ u²).
-    let case = Case {
-        v: [0.3, -1.0, -0.2, -0.6],
-        normal: [Normal::Compression; 2],
-        y: [0.0; 8],
-        ..LOADED
-    };
-    agrees(&case, Var::Root, 0.0);
+    // Both contacts approaching, s = 0: each force starts as κ |v_n⁻|^η u^(2η)
+    // (s_j = −v_nj⁻ u²), for Hertz's exponent and for η = 5/2.
+    for eta in [1.5, 2.5] {
+        let case = Case {
+            v: [0.3, -1.0, -0.2, -0.6],
+            normal: [Normal::Compression; 2],
+            y: [0.0; 8],
+            eta,
+            ..LOADED
+        };
+        agrees(&case, Var::Root, 0.0);
+    }
 }
 
 #[test]
 fn a_step_from_a_contact_joining_agrees_with_runge_kutta() {
     // The second contact at s = 0 and v_n = 0, pushed into approach by the first's force
-    // (dv_n2/dτ = (−0.2 + 0.1 · 0.4) F₁ < 0): s₂ ∝ τ², its force ∝ τ³.
-    let case = Case {
-        w: [1.3, 0.2, 0.4, -0.1, 0.9, 0.3, -0.2, 1.1, 0.25, 1.0],
-        v: [0.3, -1.0, -0.2, 0.0],
-        normal: [Normal::Compression; 2],
-        y: [0.0, 0.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0],
-    };
-    agrees(&case, Var::Time, 0.0);
-    // The same in a separation's variable, the first contact expanding to its
-    // separation (σ decreasing: the force ∝ (−t)³): after an impulse p_n1 = 2, where
-    // v_n1 = −1 + 0.9 · 2 and v_n2 = 0.4 − 0.2 · 2 = 0.
-    let case = Case {
-        v: [0.3, -1.0, -0.2, 0.4],
-        normal: [Normal::Expansion, Normal::Compression],
-        y: [0.0, 2.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0],
-        ..case
-    };
-    let var = Var::Separation {
-        contact: 0,
-        entry: 1.0,
-    };
-    agrees(&case, var, 0.3f64.sqrt());
+    // (dv_n2/dτ = (−0.2 + 0.1 · 0.4) F₁ < 0): s₂ ∝ τ², its force ∝ τ^(2η) — for Hertz's
+    // exponent, a linear spring and η = 5/2.
+    for eta in [1.5, 1.0, 2.5] {
+        let case = Case {
+            w: [1.3, 0.2, 0.4, -0.1, 0.9, 0.3, -0.2, 1.1, 0.25, 1.0],
+            v: [0.3, -1.0, -0.2, 0.0],
+            normal: [Normal::Compression; 2],
+            y: [0.0, 0.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0],
+            eta,
+        };
+        agrees(&case, Var::Time, 0.0);
+        if eta == 1.0 {
+            // (A linear spring has no separation's variable.)
+            continue;
+        }
+        // The same in a separation's variable, the first contact expanding to its
+        // separation (σ decreasing: the force ∝ (−t)^(2η)): after an impulse p_n1 = 2,
+        // where v_n1 = −1 + 0.9 · 2 and v_n2 = 0.4 − 0.2 · 2 = 0.
+        let case = Case {
+            v: [0.3, -1.0, -0.2, 0.4],
+            normal: [Normal::Expansion, Normal::Compression],
+            y: [0.0, 2.0, 0.3, 0.0, 0.0, 0.0, 0.0, 0.0],
+            ..case
+        };
+        let var = Var::Separation {
+            contact: 0,
+            entry: 1.0,
+        };
+        agrees(&case, var, 0.3f64.sqrt());
+    }
 }
 
 #[test]
