@@ -65,9 +65,10 @@ impl ForceLaw {
         ForceLaw { eta, power, m }
     }
 
-    /// `ζ = 2η` where it is an integer of at least 2: a force from a double zero of `s`,
+    /// `ζ = 2η` where it is an integer from 2 to 6: a force from a double zero of `s`,
     /// `κ (t² q)^η = κ t^ζ q^η`, is then analytic in `t` (a contact joining, the impact's
-    /// start in `u = √τ`). `None` otherwise.
+    /// start in `u = √τ`), and the series of order 17 keeps at least 11 of its terms.
+    /// `None` otherwise (the Runge–Kutta step is taken there).
     pub(in crate::multi) fn double_zero_power(&self) -> Option<usize> {
         let zeta = 2.0 * self.eta;
         (zeta.fract() == 0.0 && (2.0..=6.0).contains(&zeta)).then_some(zeta as usize)
