@@ -272,14 +272,22 @@ pub(crate) fn resumption_ray(wtt: &Mat2, w: Vec2, mu: f64) -> Option<(Vec2, f64)
         }
         l = next;
     }
+    ray_at(&wtt, w, mu, l).map(|(s, _)| (s, l))
+}
+
+/// The unit direction of `(λ' I + μ W_tt)⁻¹ w` at `λ'`, polished onto the ray, and the
+/// squared length of that solve (the secular function plus one): [`resumption_ray`]'s ray
+/// at its root, or, at `λ' = 0`, the limit the ray tends to as a stick reaches its cone.
+pub(crate) fn ray_at(wtt: &Mat2, w: Vec2, mu: f64, l: f64) -> Option<(Vec2, f64)> {
     let m = Mat2::identity() * l + mu * wtt;
     let s = m.try_inverse()? * w;
-    let s = s / s.norm();
+    let n2 = s.norm_squared();
+    let s = s / n2.sqrt();
     // The solve loses κ(λ' I + μ W_tt) ε in the direction, much where λ' is small beside
     // μ W_tt (near the stick limit of an ill-conditioned W); the ray is a root of
     // f(φ) = ŝ × g(ŝ), which Newton's method on f (evaluated to round-off of its
     // coefficients) polishes to the last bits.
-    Some((polish_ray(&wtt, w, mu, s).unwrap_or(s), l))
+    Some((polish_ray(wtt, w, mu, s).unwrap_or(s), n2))
 }
 
 /// The root of `f(ŝ) = ŝ × (w_tn − μ W_tt ŝ)` next to the direction `s` (an accurate start),

@@ -43,6 +43,11 @@ pub(in crate::multi) struct ForceLaw {
     /// regularisation), 2 when `2η` is an integer (`η = 3/2`: `F ∝ u³`), else the least with
     /// `m η ≥ 9` (the force then smooth to the integrator's order).
     pub m: i32,
+    /// `ζ = 2η` where it is an integer from 2 to 6: a force from a double zero of `s`,
+    /// `κ (t² q)^η = κ t^ζ q^η`, is then analytic in `t` (a contact joining, the impact's
+    /// start in `u = √τ`), and the series of order 17 keeps at least 11 of its terms.
+    /// `None` otherwise (the Runge–Kutta step is taken there).
+    pub double_zero: Option<usize>,
 }
 
 impl ForceLaw {
@@ -62,16 +67,15 @@ impl ForceLaw {
         } else {
             ((9.0 / eta).ceil() as i32).clamp(2, 24)
         };
-        ForceLaw { eta, power, m }
-    }
-
-    /// `ζ = 2η` where it is an integer from 2 to 6: a force from a double zero of `s`,
-    /// `κ (t² q)^η = κ t^ζ q^η`, is then analytic in `t` (a contact joining, the impact's
-    /// start in `u = √τ`), and the series of order 17 keeps at least 11 of its terms.
-    /// `None` otherwise (the Runge–Kutta step is taken there).
-    pub(in crate::multi) fn double_zero_power(&self) -> Option<usize> {
-        let zeta = 2.0 * self.eta;
-        (zeta.fract() == 0.0 && (2.0..=6.0).contains(&zeta)).then_some(zeta as usize)
+        let zeta = 2.0 * eta;
+        let double_zero =
+            (zeta.fract() == 0.0 && (2.0..=6.0).contains(&zeta)).then_some(zeta as usize);
+        ForceLaw {
+            eta,
+            power,
+            m,
+            double_zero,
+        }
     }
 
     /// `x^(m−1)` by repeated squaring, as `f64::powi` computes it (`x` itself for the

@@ -142,7 +142,10 @@ impl<const N: usize> Series<N> {
         else {
             return false;
         };
-        let zeta = setup.law.double_zero_power();
+        // A force from zero: F_j = κ_j |t|^ζ q_j^η, in a separation's variable (which
+        // decreases, t < 0) (−t)^ζ.
+        let zeta = setup.law.double_zero.unwrap_or(0);
+        let odd = zeta % 2 == 1 && var.separating().is_some();
         // v_k = A p_n,k for k ≥ 1 (p_t,k = T p_n,k): A = W_:t T + W_:n, 2K × K.
         let mut amap = [[0.0; N]; N];
         for (i, arow) in amap.iter_mut().enumerate().take(2 * k) {
@@ -200,17 +203,12 @@ impl<const N: usize> Series<N> {
             }
             if kk > 0 {
                 force_order(c, aux, kk, alpha, &inv_s0);
-                if let (true, Some(zeta)) = (from_zero != 0, zeta) {
-                    // F_j = κ_j |t|^ζ q_j^η: in a separation's variable, which decreases
-                    // (t < 0), (−t)^ζ.
-                    let odd = zeta % 2 == 1 && var.separating().is_some();
-                    for j in (0..k).filter(|&j| from_zero & (1 << j) != 0) {
-                        let base = if odd { -setup.kappa[j] } else { setup.kappa[j] };
-                        let Some(fk) = force_from_zero(c, aux, kk, j, zeta, alpha, base) else {
-                            return false;
-                        };
-                        aux[kk][F * k + j] = fk;
-                    }
+                for j in (0..k).filter(|&j| from_zero & (1 << j) != 0) {
+                    let base = if odd { -setup.kappa[j] } else { setup.kappa[j] };
+                    let Some(fk) = force_from_zero(c, aux, kk, j, zeta, alpha, base) else {
+                        return false;
+                    };
+                    aux[kk][F * k + j] = fk;
                 }
             }
             // The normal impulses and deflections at order kk + 1.
@@ -319,7 +317,7 @@ impl<const N: usize> Loads<N> {
             inv_div: [0.0; N],
             from_zero: 0,
         };
-        let double_zero = setup.law.double_zero_power().is_some();
+        let double_zero = setup.law.double_zero.is_some();
         for j in (0..N / PER).filter(|&j| field.active(j)) {
             let sj = y[PER * j + S];
             if sj > 0.0 {

@@ -41,7 +41,7 @@ use super::field::{cone_excess, rate_scale, slip_rate, tangential_rates};
 use super::state::{Modes, Setup, StickSet, Tangent, MAXK, ROWS};
 use crate::math::{Mat2, Vec2};
 use crate::multi::RANK_TOL;
-use crate::spatial::invariant::{polish_ray, rays_of, resumption_ray, InvariantRays, RayKind};
+use crate::spatial::invariant::{ray_at, rays_of, resumption_ray, InvariantRays, RayKind};
 use nalgebra::{DMatrix, SymmetricEigen};
 use std::f64::consts::TAU;
 
@@ -158,12 +158,8 @@ fn leave_alone(b: &Mat2, c: Vec2, muf: f64) -> Option<Vec2> {
 /// a hair below it, where [`resumption_ray`] finds none. `None` for a singular `M` or a
 /// stick inside the band.
 fn at_the_limit(m: &Mat2, w: Vec2) -> Option<Vec2> {
-    let d = m.try_inverse()? * w;
-    let n2 = d.norm_squared();
-    (n2.is_finite() && n2 > 0.0 && n2 >= 1.0 - LIMIT_BAND).then(|| {
-        let s = d / n2.sqrt();
-        polish_ray(m, w, 1.0, s).unwrap_or(s)
-    })
+    let (s, n2) = ray_at(m, w, 1.0, 0.0)?;
+    (n2.is_finite() && n2 > 0.0 && n2 >= 1.0 - LIMIT_BAND).then_some(s)
 }
 
 /// How far inside the cone (`1 − |M⁻¹ w|²`) a stick still counts as at its limit for
