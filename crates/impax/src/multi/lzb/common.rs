@@ -142,6 +142,18 @@ impl ForceLaw {
         (p, energy, self.deflection(kappa, energy))
     }
 
+    /// The time `τ = z^(1/(η+1))` at `z` of the start's variable (`variable.rs`).
+    #[inline]
+    pub(in crate::multi) fn onset_time(&self, z: f64) -> f64 {
+        z.max(0.0).powf(1.0 / (self.eta + 1.0))
+    }
+
+    /// `dτ/dz = τ^(−η)/(η+1)` at `z = τ^(η+1)` (infinite at `z = 0`).
+    #[inline]
+    pub(in crate::multi) fn onset_rate(&self, z: f64) -> f64 {
+        z.powf(-self.eta / (self.eta + 1.0)) / (self.eta + 1.0)
+    }
+
     /// The time `τ` a contact alone approaching at `vn < 0` would compress in (straight:
     /// the deflection of its energy over its speed).
     #[inline]

@@ -85,12 +85,13 @@
 //!   fastest, the largest `κ_j |v_nj⁻|^(η+1)` (the most approaching one for equal stiffness).
 //!
 //! The right-hand side is smooth except where a contact's force law is not, at `s_j = 0`
-//! (`F ∝ s^η`): at the start of the impact and at each separation the path is integrated in
-//! regularising variables (`u = τ^(1/m)`, `σ = s_j^(1/m)`: module `variable.rs`), in which it
-//! is analytic for Hertz's exponent. Where every contact that carries a force is loaded
-//! (`s_j > 0`), or starts loading from a double zero of `s_j` (the impact's start in `u`, a
-//! contact joining at `v_nj = 0`: `s_j = t² q_j`, the force `κ_j |t|^(2η) q_j^η`, analytic
-//! for an integer `2η`), the path is a **Taylor series** in the variable, to order 17, its
+//! (`F ∝ s^η`): from the start of the impact to its first event the path is integrated in
+//! `z = τ^(η+1)`, in which it is analytic for every `η` (`s_j = τ q_j(z)`), and at each
+//! separation in `σ = s_j^(1/m)` (module `variable.rs`), in which it is analytic for Hertz's
+//! exponent. Where every contact that carries a force is loaded (`s_j > 0`), or starts
+//! loading from a double zero of `s_j` (a contact joining at `v_nj = 0`: `s_j = t² q_j`, the
+//! force `κ_j |t|^(2η) q_j^η`, analytic for an integer `2η`), and from the start in `z`, the
+//! path is a **Taylor series** in the variable, to order 17, its
 //! coefficients by the recurrences of automatic differentiation (`s^η`, products, the
 //! quotient of a separation's variable) and its step where the terms reach the tolerance
 //! (`series/`); elsewhere — a force starting from zero for another exponent, and where a

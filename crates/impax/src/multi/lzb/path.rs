@@ -139,10 +139,11 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
         if attempts > MAX_STEPS {
             return Err(BreakdownReason::TooManySteps { limit: MAX_STEPS });
         }
-        let (var, x) = (it.var, it.x);
         let Some(taken) = take_step(&mut it, &mut ser, &y) else {
             continue;
         };
+        // (The step may have left the start's variable.)
+        let (var, x) = (it.var, it.x);
         let field = &it.field;
         let f = |xx: f64, yy: &[f64; N]| var.rhs::<N>(setup, field, xx, yy);
         let mut h = match &taken {
@@ -265,10 +266,17 @@ fn take_step<const N: usize>(
     ser: &mut Series<N>,
     y: &[f64; N],
 ) -> Option<Taken<N>> {
-    let (setup, var, x) = (it.setup, it.var, it.x);
-    if ser.build(setup, &it.field, var, x, y) {
+    if ser.build(it.setup, &it.field, it.var, it.x, y) {
         return Some(Taken::Series);
     }
+    if it.var == Var::Onset {
+        // (Its series overflows: DOP853 in `u`.)
+        it.leave_onset(y);
+        if ser.build(it.setup, &it.field, it.var, it.x, y) {
+            return Some(Taken::Series);
+        }
+    }
+    let (setup, var, x) = (it.setup, it.var, it.x);
     // A separation ends exactly at σ = 0.
     if matches!(var, Var::Separation { .. }) && x + it.h <= 0.0 {
         it.h = -x;

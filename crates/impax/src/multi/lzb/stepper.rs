@@ -1,5 +1,5 @@
 //! The integration's state between two accepted points ([`Stepper`]): where it starts
-//! (in `u = τ^(1/m)` from the impact's start, or in `τ` after a phase in closed form), how it
+//! (in `z = τ^(η+1)` from the impact's start, or in `τ` after a phase in closed form), how it
 //! restarts after an event, and the first event inside a step, located on the dense output.
 
 use super::events;
@@ -16,8 +16,9 @@ use super::common::guard;
 pub(super) const FIRST_STEP: f64 = 0.01;
 
 /// The start: the variable, its first step, and the shortest time a contact alone would
-/// compress in. In `u = τ^(1/m)` for a quarter of that time, or in `τ` for an integer
-/// exponent; the first step a tenth of the way.
+/// compress in. In `z = τ^(η+1)`, whose series takes the path to the first event
+/// (`series/onset.rs`); the first step, for DOP853 only, a tenth of the way to a quarter of
+/// that time.
 fn start(setup: &Setup) -> (Var, f64, f64) {
     let mut shortest = f64::INFINITY;
     for j in 0..setup.k {
@@ -27,11 +28,22 @@ fn start(setup: &Setup) -> (Var, f64, f64) {
             shortest = shortest.min(setup.law.compression_time(setup.kappa[j], wnn, vn));
         }
     }
+    let h = (0.025 * shortest).powf(setup.law.eta + 1.0);
+    (Var::Onset, h, shortest)
+}
+
+/// Where the start's series does not apply (its coefficients overflow): the same point in
+/// `u = τ^(1/m)` (DOP853 steps, until a quarter of the shortest compression time), or in `τ`
+/// for an integer exponent; the first step a tenth of the way (from the start).
+fn fallback(setup: &Setup, z: f64, shortest: f64) -> (Var, f64, f64) {
+    let tau = setup.law.onset_time(z);
+    let m = f64::from(setup.law.m);
     if setup.law.m == 1 {
-        (Var::Time, 0.01 * shortest, shortest)
+        (Var::Time, tau, 0.01 * shortest)
     } else {
-        let h = 0.1 * (0.25 * shortest).powf(1.0 / f64::from(setup.law.m));
-        (Var::Root, h, shortest)
+        let u = tau.powf(1.0 / m);
+        let h = 0.1 * (0.25 * shortest).powf(1.0 / m);
+        (Var::Root, u, if u > 0.0 { h.min(0.1 * u) } else { h })
     }
 }
 
@@ -102,6 +114,13 @@ impl<'a, const N: usize> Stepper<'a, N> {
         self.k1 = self.var.rhs::<N>(setup, &self.field, self.x, y);
         self.watch = events::watch(setup, &modes, y, ev);
         self.g_a = events::values(setup, &modes, &self.watch, y, ev);
+    }
+
+    /// Leave the start's variable for [`fallback`]'s, at the point `y`.
+    pub(super) fn leave_onset(&mut self, y: &[f64; N]) {
+        let (var, x, h) = fallback(self.setup, self.x, self.shortest);
+        (self.var, self.x, self.h) = (var, x, h);
+        self.k1 = var.rhs::<N>(self.setup, &self.field, x, y);
     }
 
     /// The step `h` of the current variable at `x` (velocities `v`) as a step of `τ`.

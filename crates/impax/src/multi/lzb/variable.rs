@@ -4,9 +4,12 @@
 //! Runge–Kutta step across either has a low order (its error estimate then fails too):
 //!
 //! * **the start**, `τ = 0`, where every approaching contact has `s_j ≈ −v_nj⁻ τ`, so
-//!   `F_j ∝ τ^η`: the path starts in `u = τ^(1/m)` (`dτ = m u^(m−1) du`), until `τ` reaches
-//!   a quarter of the shortest compression time of a contact alone. With `m = 2` and
-//!   `η = 3/2` the path is analytic in `u` (every term `τ^(a + 3b/2)` is a power of `u`);
+//!   `F_j ∝ τ^η`: the path starts in `z = τ^(η+1)` (`dτ/dz = τ^(−η)/(η+1)`), in which it is
+//!   analytic for every `η` until the first event (`s_j = τ q_j(z)`, the rest analytic in
+//!   `z`: `series/onset.rs`), and goes on in `τ` after it. In `u = √τ` (for `η = 3/2`) the
+//!   path is analytic too (`s_j = u² G(u⁵)`), but its series has one nonzero term in five;
+//!   `u = τ^(1/m)` is kept for DOP853 steps where the series in `z` overflows, until `τ`
+//!   reaches a quarter of the shortest compression time of a contact alone;
 //! * **a separation**, where an expanding contact's `s_j` falls linearly to zero, so
 //!   `F_j ∝ (τ_e − τ)^η`: once the separation is predicted within the next two steps, the
 //!   path goes on in `σ = s_j^(1/m)` (`dτ/dσ = −m σ^(m−1) e_j²/v_nj`, regular while
@@ -30,7 +33,10 @@ use super::state::{Modes, Normal, Setup, MAXK, PER, S};
 pub(super) enum Var {
     /// The contact-force time `τ` (`dp_nj = F_j dτ`).
     Time,
-    /// `u = √τ`, at the start.
+    /// `z = τ^(η+1)`, from the impact's start to its first event, in which the whole path
+    /// is analytic (`s_j = τ q_j(z)`, module docs); its series is `series/onset.rs`'s.
+    Onset,
+    /// `u = τ^(1/m)`, at the start where the series in `z` does not apply (DOP853 steps).
     Root,
     /// `σ = √s_j` while contact `contact`'s expansion ends (`σ` decreasing to 0); `entry` its
     /// normal velocity when the variable was taken.
@@ -44,6 +50,7 @@ impl Var {
         let m = setup.law.m;
         match self {
             Var::Time => 1.0,
+            Var::Onset => setup.law.onset_rate(x),
             Var::Root => f64::from(m) * setup.law.power_m1(x),
             Var::Separation { contact: j, .. } => {
                 -f64::from(m) * setup.law.power_m1(x) * setup.e[j] * setup.e[j] / v[2 * j + 1]
@@ -64,6 +71,7 @@ impl Var {
         let m = f64::from(setup.law.m);
         let c = match self {
             Var::Time => return dy,
+            Var::Onset => setup.law.onset_rate(x),
             Var::Root => m * setup.law.power_m1(x),
             Var::Separation { contact: j, .. } => {
                 let vn = field.normal_velocity::<N>(setup, y, j);
@@ -112,9 +120,14 @@ impl Var {
         }
     }
 
-    /// A step `h` of this variable at `x` as a step of `τ` (positive).
+    /// A step `h` of this variable at `x` as a step of `τ` (positive; in `z`, exactly
+    /// `τ(x + h) − τ(x)`, `dτ/dz` being infinite at the start).
     #[inline]
     pub(super) fn to_time(self, setup: &Setup, x: f64, h: f64, v: &[f64; 2 * MAXK]) -> f64 {
+        if self == Var::Onset {
+            let tau = |z: f64| setup.law.onset_time(z);
+            return tau(x + h) - tau(x);
+        }
         (h * self.dtau(setup, x, v)).abs()
     }
 
@@ -133,6 +146,7 @@ impl Var {
         root_end: f64,
     ) -> Var {
         match self {
+            Var::Onset => Var::Onset,
             Var::Root if x.powi(setup.law.m) >= root_end => Var::Time,
             Var::Root => Var::Root,
             Var::Time if setup.law.m == 1 => Var::Time,
@@ -177,7 +191,7 @@ impl Var {
         v: &[f64; 2 * MAXK],
     ) -> (f64, f64) {
         match self {
-            Var::Time | Var::Root => (0.0, h),
+            Var::Time | Var::Root | Var::Onset => (0.0, h),
             Var::Separation { contact: j, .. } => {
                 let sigma = y[PER * j + S].max(0.0).powf(1.0 / f64::from(setup.law.m));
                 // The step of τ as a step of σ (dτ/dσ = −m σ^(m−1) e²/v_n), at most the whole

@@ -1,7 +1,8 @@
 //! The path's Taylor series in one set of regimes: the step where every contact that carries
 //! a force is loaded (`s_j > 0`), so that `F_j = κ_j s_j^η` is analytic there, or starts
-//! loading from a double zero of `s_j` — the impact's start in `u = √τ` (`s_j = −v_nj⁻ u² +
-//! …`), a contact joining at `v_nj = 0` (`s_j ∝ t²`) — where, with `s_j = t² q_j`,
+//! loading from a double zero of `s_j` — a contact joining at `v_nj = 0` (`s_j ∝ t²`), and
+//! the impact's start in `u = √τ` (`s_j = −v_nj⁻ u² + …`; the start is taken in `z`,
+//! `onset.rs`, and in `u` only where that overflows) — where, with `s_j = t² q_j`,
 //! `q_j(0) > 0`, the force `κ_j |t|^(2η) q_j^η` is analytic for an integer `2η` (`η = 3/2`:
 //! `|t|³`), its coefficients those of `q_j^η` shifted by `2η` orders.
 //!
@@ -77,6 +78,9 @@ pub(super) struct Series<const N: usize> {
     aux: [[f64; N]; ORDER],
     /// The step (signed: negative in a separation's variable, which decreases).
     pub h: f64,
+    /// In the start's variable `z` (`onset.rs`): where the step starts, `z₀`, and
+    /// `1/(η+1)`; the rows of `s_j` then hold `q_j = s_j/τ`.
+    onset: Option<(f64, f64)>,
 }
 
 impl<const N: usize> Series<N> {
@@ -86,6 +90,7 @@ impl<const N: usize> Series<N> {
             c: [[0.0; N]; ORDER + 1],
             aux: [[0.0; N]; ORDER],
             h: 0.0,
+            onset: None,
         }
     }
 
@@ -105,6 +110,13 @@ impl<const N: usize> Series<N> {
         for j in 0..N / PER {
             let o = PER * j + PN;
             out[o] = out[o].max(self.c[0][o]);
+        }
+        if let Some((z0, inv_p)) = self.onset {
+            // s_j = τ q_j, τ = z^(1/(η+1)).
+            let tau = (z0 + t).max(0.0).powf(inv_p);
+            for j in 0..N / PER {
+                out[PER * j + S] *= tau;
+            }
         }
         out
     }
@@ -129,6 +141,9 @@ impl<const N: usize> Series<N> {
         x0: f64,
         y: &[f64; N],
     ) -> bool {
+        if var == Var::Onset {
+            return self.build_onset(setup, field, x0, y);
+        }
         let k = N / PER;
         let alpha = setup.law.eta;
         // Order 0: the point's velocities and forces, as the field gives them.
@@ -146,18 +161,7 @@ impl<const N: usize> Series<N> {
         // decreases, t < 0) (−t)^ζ.
         let zeta = setup.law.double_zero.unwrap_or(0);
         let odd = zeta % 2 == 1 && var.separating().is_some();
-        // v_k = A p_n,k for k ≥ 1 (p_t,k = T p_n,k): A = W_:t T + W_:n, 2K × K.
-        let mut amap = [[0.0; N]; N];
-        for (i, arow) in amap.iter_mut().enumerate().take(2 * k) {
-            let wrow = &setup.w[i];
-            for cc in 0..k {
-                let mut a = wrow[2 * cc + 1];
-                for b in 0..k {
-                    a += wrow[2 * b] * field.map_row(b)[cc];
-                }
-                arow[cc] = a;
-            }
-        }
+        let amap = normal_map::<N>(setup, field);
         let Some(Rate {
             mut g,
             num,
@@ -169,6 +173,7 @@ impl<const N: usize> Series<N> {
             return false;
         };
         let in_time = var == Var::Time;
+        self.onset = None;
         let (c, aux) = (&mut self.c, &mut self.aux);
         c[0] = *y;
         for j in 0..k {
@@ -258,23 +263,23 @@ impl<const N: usize> Series<N> {
                 c[kk + 1][PER * j + WT] = if field.rubs(j) { w[j] * inv } else { 0.0 };
             }
         }
-        let Some(h) = self.step(setup, y) else {
+        let Some(h) = self.step(|i| setup.atol[i] + RTOL * y[i].abs()) else {
             return false;
         };
         self.h = if sep.is_some() { -h.min(x0) } else { h };
         true
     }
 
-    /// The step of the series from `y`: where the term of order 16 reaches the tolerance of
-    /// every component (`atol + RTOL |y|`; its root by four square roots), or the last, of
-    /// order 17, if it is larger there (a vanishing term of order 16). `None` where the
-    /// coefficients overflow (friction of `1e100` stops a slip within `τ ≈ 1/μ`: DOP853 then
-    /// takes the step, and rejects its non-finite steps).
-    fn step(&self, setup: &Setup, y: &[f64; N]) -> Option<f64> {
+    /// The step of the series: where the term of order 16 reaches the tolerance `tol(i)` of
+    /// every component (`atol + RTOL |y|` at the step's start; its root by four square roots),
+    /// or the last, of order 17, if it is larger there (a vanishing term of order 16). `None`
+    /// where the coefficients overflow (friction of `1e100` stops a slip within `τ ≈ 1/μ`:
+    /// DOP853 then takes the step, and rejects its non-finite steps).
+    fn step(&self, tol: impl Fn(usize) -> f64) -> Option<f64> {
         let c = &self.c;
         let (mut r1, mut r0) = (0.0f64, 0.0f64);
         for i in 0..N {
-            let tol = setup.atol[i] + RTOL * y[i].abs();
+            let tol = tol(i);
             r1 = r1.max(c[ORDER][i].abs() / tol);
             r0 = r0.max(c[ORDER - 1][i].abs() / tol);
         }
@@ -358,6 +363,8 @@ impl Rate {
             sep: None,
         };
         match var {
+            // (The start's variable has its own series, `onset.rs`.)
+            Var::Onset => return None,
             Var::Time => r.g[0] = 1.0,
             Var::Root => {
                 // (At u = 0 only for contacts starting from zero, `starts_from_zero`.)
@@ -534,6 +541,24 @@ fn rise(q: &[f64; ORDER + 1], h: f64) -> Option<f64> {
     None
 }
 
+/// The map of the normal impulses' coefficients to the velocities' (orders `k ≥ 1`, where
+/// `p_t,k = T p_n,k`): `v_k = A p_n,k`, `A = W_:t T + W_:n`, `2K × K`.
+fn normal_map<const N: usize>(setup: &Setup, field: &Field) -> [[f64; N]; N] {
+    let k = N / PER;
+    let mut amap = [[0.0; N]; N];
+    for (i, arow) in amap.iter_mut().enumerate().take(2 * k) {
+        let wrow = &setup.w[i];
+        for cc in 0..k {
+            let mut a = wrow[2 * cc + 1];
+            for b in 0..k {
+                a += wrow[2 * b] * field.map_row(b)[cc];
+            }
+            arow[cc] = a;
+        }
+    }
+    amap
+}
+
 /// The forces' coefficients of order `kk ≥ 1` (`aux`'s block `F`) by the power recurrence of
 /// `a = s^α` (`F = κ a`, `inv_s0 = 1/s₀` per contact, 0 for one without force): two partial
 /// sums per contact, the weights `α (kk − i) − i` falling by `α + 1` with `i`.
@@ -576,6 +601,7 @@ fn force_order<const N: usize>(
 fn starts_from_zero(setup: &Setup, var: Var, x0: f64, vn: f64) -> bool {
     match var {
         Var::Root => x0 == 0.0 && vn < 0.0,
+        Var::Onset => false,
         Var::Time | Var::Separation { .. } => vn.abs() <= setup.approach,
     }
 }
@@ -654,5 +680,6 @@ fn binomial_powers(n: usize, x: f64, out: &mut [f64; ORDER + 1]) {
     }
 }
 
+mod onset;
 #[cfg(test)]
 mod tests;

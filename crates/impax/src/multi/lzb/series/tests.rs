@@ -114,6 +114,76 @@ fn a_step_from_the_impacts_start_in_u_agrees_with_runge_kutta() {
 }
 
 #[test]
+fn the_start_in_z_agrees_with_runge_kutta() {
+    // Both contacts approaching from s = 0: two steps of the series in z = τ^(η+1), each
+    // against 2000 DOP853 steps over the same stretch of τ — the first from the start in
+    // u = τ^(1/m) (where the path is smooth), the second in τ — for Hertz's exponent, a
+    // linear spring, η = 5/2 and η = 5/4 (whose start in u is smooth only to order 9).
+    for eta in [1.5, 1.0, 2.5, 1.25] {
+        let p = MultiProblem::from_upper(
+            2,
+            &LOADED.w,
+            &[0.3, -1.0, -0.2, -0.6],
+            &[0.4, 0.0],
+            &[0.8, 0.6],
+        )
+        .and_then(|p| p.with_exponent(eta))
+        .unwrap();
+        let setup = Setup::new(&p);
+        let mut normal = [Normal::Off; 8];
+        normal[..2].copy_from_slice(&[Normal::Compression; 2]);
+        let modes = Modes {
+            normal,
+            tangent: [Tangent::Slip(1.0); 8],
+            stick: StickSet::EMPTY,
+        };
+        let field = Field::new(&setup, &modes);
+        let m = f64::from(setup.law.m);
+        let mut ser = Series::<8>::new();
+        let (mut z0, mut y) = (0.0, [0.0; 8]);
+        for step in 0..2 {
+            assert!(ser.build(&setup, &field, Var::Onset, z0, &y), "η = {eta}");
+            // (A linear spring's force is analytic through s = 0, where the path's would be
+            // cut: the step is kept to where both contacts are loaded.)
+            while (0..2).any(|j| ser.end()[PER * j + S] <= 0.0) {
+                ser.h *= 0.5;
+            }
+            let h = ser.h;
+            assert!(h > 0.0 && h.is_finite());
+            let (tau0, tau1) = (setup.law.onset_time(z0), setup.law.onset_time(z0 + h));
+            // (The first step a fair part of the compression: in these units it lasts about
+            // 1.)
+            assert!(step > 0 || tau1 > 0.5, "η = {eta}: {tau1}");
+            let (var, xa, xb) = if step == 0 {
+                (Var::Root, 0.0, tau1.powf(1.0 / m))
+            } else {
+                (Var::Time, tau0, tau1)
+            };
+            let f = |x: f64, y: &[f64; 8]| var.rhs::<8>(&setup, &field, x, y);
+            let n = 2000;
+            let dx = (xb - xa) / n as f64;
+            let (mut x, mut r) = (xa, y);
+            for _ in 0..n {
+                let k1 = f(x, &r);
+                r = dop853_step(&f, x, &r, &k1, dx).y;
+                x += dx;
+            }
+            let end = ser.end();
+            for i in 0..8 {
+                let scale = setup.atol[i] / (0.1 * RTOL) + end[i].abs();
+                assert!(
+                    (end[i] - r[i]).abs() <= 1e-11 * scale,
+                    "η = {eta}, step {step}, component {i}: {} vs {}",
+                    end[i],
+                    r[i]
+                );
+            }
+            (z0, y) = (z0 + h, end);
+        }
+    }
+}
+
+#[test]
 fn a_step_from_a_contact_joining_agrees_with_runge_kutta() {
     // The second contact at s = 0 and v_n = 0, pushed into approach by the first's force
     // (dv_n2/dτ = (−0.2 + 0.1 · 0.4) F₁ < 0): s₂ ∝ τ², its force ∝ τ^(2η) — for Hertz's
