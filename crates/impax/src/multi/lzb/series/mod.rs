@@ -278,10 +278,10 @@ impl<const N: usize> Series<N> {
     fn step(&self, tol: impl Fn(usize) -> f64) -> Option<f64> {
         let c = &self.c;
         let (mut r1, mut r0) = (0.0f64, 0.0f64);
-        for i in 0..N {
+        for (i, (last, before)) in c[ORDER].iter().zip(&c[ORDER - 1]).enumerate() {
             let tol = tol(i);
-            r1 = r1.max(c[ORDER][i].abs() / tol);
-            r0 = r0.max(c[ORDER - 1][i].abs() / tol);
+            r1 = r1.max(last.abs() / tol);
+            r0 = r0.max(before.abs() / tol);
         }
         if !(r0.is_finite() && r1.is_finite()) {
             return None;
