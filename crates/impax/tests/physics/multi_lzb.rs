@@ -286,6 +286,36 @@ fn closed_form_is_the_limit_of_the_integrated_path() {
     }
 }
 
+#[test]
+fn a_contact_barely_approaching_at_the_start_is_the_limit_of_one_at_rest() {
+    // The second contact pushed into the first's impact (W_n1n2 = 0.1, v_n2 → 0⁻): its
+    // result is continuous in v_n2, whether it starts compressing (the slowest approaches,
+    // down to one whose force κ |v_n2|^η underflows) or at rest and joins.
+    let w = [1.0, 0.2, 0.0, 0.1, 1.0, 0.1, 0.0, 1.0, 0.3, 1.0];
+    let solve = |vn2: f64| {
+        let p = MultiProblem::from_upper(2, &w, &[0.1, -1.0, 0.2, vn2], &[0.5], &[0.7]);
+        lzb::resolve(&p.unwrap()).unwrap()
+    };
+    let rest = solve(0.0);
+    assert!(rest.contacts[1].impulse.y > 0.09, "{rest:?}");
+    // (Below 1e-12 of the largest velocity a contact approaching is at rest; above, its
+    // result moves by O(v_n2).)
+    for vn2 in [
+        -1e-300, -1e-200, -1e-150, -1e-100, -1e-50, -1e-13, -1e-11, -1e-9, -1e-6,
+    ] {
+        let o = solve(vn2);
+        for (a, b) in rest.contacts.iter().zip(&o.contacts) {
+            let gap = (a.impulse - b.impulse).norm();
+            assert!(
+                gap < 1e-10 + 10.0 * vn2.abs(),
+                "v_n2 = {vn2:e}: {gap:e} ({:?} vs {:?})",
+                a.impulse,
+                b.impulse
+            );
+        }
+    }
+}
+
 // ---------------------------------------------------------------------------------------
 // Housner's rocking block
 

@@ -206,6 +206,36 @@ fn embedded(planar: &Planar) -> Option<MultiProblem> {
 }
 
 #[test]
+fn a_contact_barely_approaching_at_the_start_is_the_limit_of_one_at_rest() {
+    // The second contact pushed into the first's impact (W_n1n2 = −0.1), v_n2 → 0⁻: the
+    // result is continuous in v_n2 — where it approaches by less than the round-off, it is
+    // at rest and joins (it took 20,000 steps and broke down at v_n2 = −1e-300).
+    let w = [
+        1.0, 0.0, 0.2, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.05, 1.0, 0.0, 0.0, -0.1, 1.0, 0.0, 0.3,
+        1.0, 0.0, 1.0,
+    ];
+    let solve = |vn2: f64| {
+        let v = [0.1, 0.05, -1.0, 0.2, 0.0, vn2];
+        let p = MultiProblem::from_upper(2, &w, &v, &[0.5], &[0.7]).unwrap();
+        lzb::resolve(&p).expect("lzb")
+    };
+    let rest = solve(0.0);
+    assert!(rest.contacts[1].impulse.z > 0.3, "{rest:?}");
+    for vn2 in [-1e-300, -1e-200, -1e-100, -1e-13, -1e-11, -1e-9, -1e-6] {
+        let o = solve(vn2);
+        for (a, b) in rest.contacts.iter().zip(&o.contacts) {
+            let gap = (a.impulse - b.impulse).norm();
+            assert!(
+                gap < 1e-10 + 10.0 * vn2.abs(),
+                "v_n2 = {vn2:e}: {gap:e} ({:?} vs {:?})",
+                a.impulse,
+                b.impulse
+            );
+        }
+    }
+}
+
+#[test]
 fn a_planar_problem_in_3d_is_the_planar_lzb() {
     let mut rng = SplitMix64(0x0091_a43d);
     let (mut compared, mut worst, mut beyond) = (0, 0.0f64, 0);

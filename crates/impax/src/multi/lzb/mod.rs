@@ -76,8 +76,9 @@
 //!   approaching contacts, whose forces then grow in the ratios above by themselves;
 //! * **a contact joins** as soon as its `v_nj` falls below zero (below `−`[`APPROACH_ROUND_OFF`]
 //!   of the largest `|v⁻_i|`): `ds_j/dτ = −v_nj > 0` is regular at `s_j = 0`, there is no
-//!   trivial branch. A contact with `v_nj⁻ = 0` at the start (the middle contacts of a
-//!   cradle, the resting corner of a rocking block) is off until then;
+//!   trivial branch. A contact at rest at the start, `v_nj⁻` at or above that round-off
+//!   (the middle contacts of a cradle, the resting corner of a rocking block), is off until
+//!   then;
 //! * **the primary** plays no part in the integration; it is still followed — the contact
 //!   with the most stored energy, changing when another's exceeds it by [`PRIMARY_MARGIN`],
 //!   or when it separates — and reported ([`MultiDetail::Lzb`]), with the normal impulse of

@@ -348,9 +348,9 @@ fn jammed(setup: &Setup, modes: &Modes, y: &[f64], ev: &Eval) -> Option<f64> {
 }
 
 impl<'a> Path<'a> {
-    /// The regimes at the start: the approaching contacts in compression, the tangential
-    /// regimes chosen with the forces' limiting ratios `F_j ∝ κ_j |v_nj⁻|^η` (at `τ → 0`,
-    /// `s_j ≈ −v_nj⁻ τ`).
+    /// The regimes at the start: the approaching contacts (`v_nj⁻ < −`[`Setup::approach`]) in
+    /// compression, the tangential regimes chosen with the forces' limiting ratios
+    /// `F_j ∝ κ_j |v_nj⁻|^η` (at `τ → 0`, `s_j ≈ −v_nj⁻ τ`).
     fn start(setup: &'a Setup, y: &[f64]) -> Path<'a> {
         let k = setup.k;
         let mut modes = Modes {
@@ -362,7 +362,9 @@ impl<'a> Path<'a> {
         let mut best = (f64::NEG_INFINITY, 0);
         for (j, fj) in f.iter_mut().enumerate().take(k) {
             let vn = setup.v0[2 * j + 1];
-            if vn < 0.0 {
+            // (A contact approaching by less than the round-off is at rest: it joins if it
+            // is pushed into approach, as one at rest does.)
+            if vn < -setup.approach {
                 modes.normal[j] = Normal::Compression;
                 *fj = setup.kappa[j] * setup.law.power.of(-vn);
                 // The energy grows as κ_j |v_nj|^(η+1) τ^(η+1)/(η+1).

@@ -15,18 +15,39 @@ use super::common::guard;
 /// contact alone would compress in.
 pub(super) const FIRST_STEP: f64 = 0.01;
 
+/// The least ratio of the slowest approach at the start to the fastest for which the start is
+/// taken in `z`. A contact that barely approaches (`q_j(0) = −v_nj⁻` small) has `q_j` pushed
+/// up by the others' forces from almost zero, where `q_j^η` is singular: the series' radius
+/// shrinks with `q_j(0)` (at `10⁻⁴` of the fastest the start in `z` takes more steps than in
+/// `u`; at `10⁻³` fewer), and the force `κ_j q_j(0)^η` underflows for `q_j(0) = 10⁻³⁰⁰`,
+/// which would leave the contact without force. Below it the start is [`fallback`]'s.
+const ONSET_SPREAD: f64 = 1e-3;
+
 /// The start: the variable, its first step, and the shortest time a contact alone would
 /// compress in. In `z = τ^(η+1)`, whose series takes the path to the first event
-/// (`series/onset.rs`); the first step, for DOP853 only, a tenth of the way to a quarter of
+/// (`series/onset.rs`), where the approaches are within [`ONSET_SPREAD`] of each other, else
+/// in `u` ([`fallback`]); the first step, for DOP853 only, a tenth of the way to a quarter of
 /// that time.
 fn start(setup: &Setup) -> (Var, f64, f64) {
     let mut shortest = f64::INFINITY;
     for j in 0..setup.k {
         let vn = setup.v0[2 * j + 1];
-        if vn < 0.0 {
+        if vn < -setup.approach {
             let wnn = setup.w[2 * j + 1][2 * j + 1];
             shortest = shortest.min(setup.law.compression_time(setup.kappa[j], wnn, vn));
         }
+    }
+    let (mut qmin, mut qmax) = (f64::INFINITY, 0.0f64);
+    for j in 0..setup.k {
+        let vn = setup.v0[2 * j + 1];
+        if vn < -setup.approach {
+            qmin = qmin.min(-vn);
+            qmax = qmax.max(-vn);
+        }
+    }
+    if qmin < ONSET_SPREAD * qmax {
+        let (var, _, h) = fallback(setup, 0.0, shortest);
+        return (var, h, shortest);
     }
     let h = (0.025 * shortest).powf(setup.law.eta + 1.0);
     (Var::Onset, h, shortest)

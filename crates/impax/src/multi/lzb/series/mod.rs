@@ -273,15 +273,20 @@ impl<const N: usize> Series<N> {
     /// The step of the series: where the term of order 16 reaches the tolerance `tol(i)` of
     /// every component (`atol + RTOL |y|` at the step's start; its root by four square roots),
     /// or the last, of order 17, if it is larger there (a vanishing term of order 16). `None`
-    /// where the coefficients overflow (friction of `1e100` stops a slip within `τ ≈ 1/μ`:
-    /// DOP853 then takes the step, and rejects its non-finite steps).
+    /// where the coefficients overflow or one is NaN (friction of `1e100` stops a slip within
+    /// `τ ≈ 1/μ`: DOP853 then takes the step, and rejects its non-finite steps).
     fn step(&self, tol: impl Fn(usize) -> f64) -> Option<f64> {
         let c = &self.c;
         let (mut r1, mut r0) = (0.0f64, 0.0f64);
         for (i, (last, before)) in c[ORDER].iter().zip(&c[ORDER - 1]).enumerate() {
             let tol = tol(i);
-            r1 = r1.max(last.abs() / tol);
-            r0 = r0.max(before.abs() / tol);
+            let (a1, a0) = (last.abs() / tol, before.abs() / tol);
+            // (`max` would pass over a NaN: a coefficient of `∞ − ∞` or `0 · ∞`.)
+            if a1.is_nan() || a0.is_nan() {
+                return None;
+            }
+            r1 = r1.max(a1);
+            r0 = r0.max(a0);
         }
         if !(r0.is_finite() && r1.is_finite()) {
             return None;

@@ -36,8 +36,9 @@ use crate::multi::lzb::RTOL;
 
 impl<const N: usize> Series<N> {
     /// The series of the start from `(z0, y)` (module docs) in the regimes of `field`, and its
-    /// step; `false` where it does not apply (a loaded contact with `q_j ≤ 0`, or no finite
-    /// step: the start is then taken in `u`).
+    /// step; `false` where it does not apply (a loaded contact with `q_j ≤ 0` or a force
+    /// `κ_j q_j^η` below the normal numbers, or no finite step: the start is then taken in
+    /// `u`).
     #[allow(clippy::needless_range_loop)] // the rows are indexed by order and contact alike
     pub(super) fn build_onset(
         &mut self,
@@ -66,6 +67,10 @@ impl<const N: usize> Series<N> {
             }
             (q0[j], inv_q0[j]) = (q, 1.0 / q);
             qmax = qmax.max(q);
+            // (A force that underflows would stay zero through the power recurrence.)
+            if setup.kappa[j] * setup.law.power.of(q) < f64::MIN_POSITIVE {
+                return false;
+            }
         }
         let amap = normal_map::<N>(setup, field);
         let (c, aux) = (&mut self.c, &mut self.aux);

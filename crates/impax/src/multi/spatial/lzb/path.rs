@@ -164,7 +164,7 @@ fn start(setup: &Setup) -> (Var, f64, f64) {
     let mut shortest = f64::INFINITY;
     for j in 0..setup.k {
         let vn = setup.v0[3 * j + 2];
-        if vn < 0.0 {
+        if vn < -setup.approach {
             let wnn = setup.w[3 * j + 2][3 * j + 2];
             shortest = shortest.min(setup.law.compression_time(setup.kappa[j], wnn, vn));
         }
