@@ -95,8 +95,10 @@
 //! path is a **Taylor series** in the variable, to order 17, its
 //! coefficients by the recurrences of automatic differentiation (`s^η`, products, the
 //! quotient of a separation's variable) and its step where the terms reach the tolerance
-//! (`series/`); elsewhere — a force starting from zero for another exponent, and where a
-//! series' coefficients overflow (friction of `1e100`) — the explicit Runge–Kutta pair of
+//! (`series/`); elsewhere — a force starting from zero for another exponent (a contact
+//! joining; the start, where the approaches differ a thousandfold or more and it is taken in
+//! `u`), and where a series' coefficients overflow (friction of `1e100`) — the explicit
+//! Runge–Kutta pair of
 //! order 8 of Dormand & Prince (DOP853, as in Hairer, Nørsett & Wanner,
 //! *Solving ODEs I*, §II.5; the crate's `numerics::dop853`) takes the step. The tolerance is
 //! `1e-12` relative on every component. The events — a compression ending (`v_nj = 0`), a

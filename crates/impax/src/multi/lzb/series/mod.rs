@@ -2,7 +2,7 @@
 //! a force is loaded (`s_j > 0`), so that `F_j = κ_j s_j^η` is analytic there, or starts
 //! loading from a double zero of `s_j` — a contact joining at `v_nj = 0` (`s_j ∝ t²`), and
 //! the impact's start in `u = √τ` (`s_j = −v_nj⁻ u² + …`; the start is taken in `z`,
-//! `onset.rs`, and in `u` only where that overflows) — where, with `s_j = t² q_j`,
+//! `onset.rs`, and in `u` only where that does not apply) — where, with `s_j = t² q_j`,
 //! `q_j(0) > 0`, the force `κ_j |t|^(2η) q_j^η` is analytic for an integer `2η` (`η = 3/2`:
 //! `|t|³`), its coefficients those of `q_j^η` shifted by `2η` orders.
 //!
@@ -97,7 +97,7 @@ impl<const N: usize> Series<N> {
     /// The state at `t = θ h` (Horner). A normal impulse never decreases (`dp_nj = F_j dτ`,
     /// `F_j ≥ 0`): one that the series puts below its start — a contact just joined, whose
     /// impulse is still below the tolerance, by round-off of the tolerance's size — is held
-    /// there.
+    /// there. In the start's variable `z` the rows of `s_j` hold `q_j`: `s_j = τ q_j`.
     #[inline]
     pub(super) fn at(&self, theta: f64) -> [f64; N] {
         let t = theta * self.h;
@@ -141,6 +141,7 @@ impl<const N: usize> Series<N> {
         x0: f64,
         y: &[f64; N],
     ) -> bool {
+        self.onset = None;
         if var == Var::Onset {
             return self.build_onset(setup, field, x0, y);
         }
@@ -173,7 +174,6 @@ impl<const N: usize> Series<N> {
             return false;
         };
         let in_time = var == Var::Time;
-        self.onset = None;
         let (c, aux) = (&mut self.c, &mut self.aux);
         c[0] = *y;
         for j in 0..k {
