@@ -29,9 +29,9 @@
 //! to the first compression's end (the 256 random problems of the benchmark: see the
 //! performance chapter).
 
-use super::{force_order, normal_map, work_rate, Series, DPT, F, ORDER, RECIP, VN, VT};
+use super::{force_order, normal_map, tangential_order, Series, F, ORDER, RECIP, VN, VT};
 use crate::multi::lzb::field::{Eval, Field};
-use crate::multi::lzb::state::{Setup, PER, PN, PT, S, WT};
+use crate::multi::lzb::state::{Setup, PER, PN, S};
 use crate::multi::lzb::RTOL;
 
 impl<const N: usize> Series<N> {
@@ -127,19 +127,7 @@ impl<const N: usize> Series<N> {
             for j in 0..k {
                 c[kk + 1][PER * j + PN] = aux[kk][F * k + j] * inv_p * inv;
             }
-            for j in 0..k {
-                let row = field.map_row(j);
-                let mut a = 0.0;
-                for cc in 0..k {
-                    a += row[cc] * c[kk + 1][PER * cc + PN];
-                }
-                c[kk + 1][PER * j + PT] = a;
-                aux[kk][DPT * k + j] = a * (kk + 1) as f64;
-            }
-            let w = work_rate(aux, kk);
-            for j in 0..k {
-                c[kk + 1][PER * j + WT] = if field.rubs(j) { w[j] * inv } else { 0.0 };
-            }
+            tangential_order(c, aux, field, kk);
         }
         // The tolerance of q_j: relative, as of the velocity it is (plus a tenth of it of the
         // largest, for the contacts without force, whose rows are zero).
