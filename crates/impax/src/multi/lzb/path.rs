@@ -223,7 +223,8 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
         }
         // The first event inside the step, located on the dense output.
         let dense = taken.dense(&ser, &f, x, &y, &k_end, h);
-        let (seed, i) = it.first_event(&dense, &g_b, crosses);
+        let series = matches!(taken, Taken::Series).then_some(&ser);
+        let (seed, i) = it.first_event(&dense, series, &g_b, crosses);
         let event = it.watch.list[i];
         // On the discrete solution: re-step from the step's start to the seed (the series
         // is its own).

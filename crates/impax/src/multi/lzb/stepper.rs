@@ -4,6 +4,7 @@
 
 use super::events;
 use super::field::{Eval, Field};
+use super::series::Series;
 use super::state::{Modes, Setup, MAXK};
 use super::variable::Var;
 use crate::numerics::dop853::Interpolant;
@@ -146,11 +147,13 @@ impl<'a, const N: usize> Stepper<'a, N> {
     }
 
     /// The first of the events whose functions go from `g_a` to `g_b` across the step (the
-    /// watched ones that `crosses`), located on the step's dense output: its fraction of the
-    /// step and its index in the watch.
+    /// watched ones that `crosses`), located on the step's series — each function a
+    /// polynomial of it ([`Series::locate`]) — or on the Runge–Kutta step's dense output
+    /// (`series` `None`): its fraction of the step and its index in the watch.
     pub(super) fn first_event(
         &self,
         dense: &impl Interpolant<N>,
+        series: Option<&Series<N>>,
         g_b: &[f64; 3 * MAXK],
         crosses: impl Fn(usize) -> bool,
     ) -> (f64, usize) {
@@ -159,6 +162,15 @@ impl<'a, const N: usize> Stepper<'a, N> {
         for i in (0..watch.n).filter(|&i| crosses(i)) {
             let seed = if self.g_a[i] == 0.0 {
                 0.0
+            } else if let Some(ser) = series {
+                ser.locate(
+                    setup,
+                    &self.modes,
+                    &self.field,
+                    watch,
+                    i,
+                    (self.g_a[i], g_b[i]),
+                )
             } else {
                 let g = |th: f64| {
                     let z = dense.at(th);

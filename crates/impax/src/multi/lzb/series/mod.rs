@@ -35,9 +35,8 @@
 //! of the same order, so an event inside the step is located on it and the path goes on from
 //! it exactly there.
 
-use super::events::{Event, Watch};
 use super::field::{Eval, Field};
-use super::state::{Modes, Setup, Tangent, MAXK, PER, PN, PT, S, WT};
+use super::state::{Setup, MAXK, PER, PN, PT, S, WT};
 use super::variable::Var;
 use super::RTOL;
 
@@ -386,152 +385,6 @@ impl Rate {
     }
 }
 
-impl<const N: usize> Series<N> {
-    /// The first fraction `θ ∈ (0, 1]` of the step where one of the watched events'
-    /// functions that is at or below zero at both ends of the step (`g_a`, `g_b`) rises above
-    /// it, `skip` excepted (a separation's own end); `None` if none does. A step of the
-    /// series is long (a fifth of its radius of convergence), and a function can rise above
-    /// zero and fall back inside it — a slip that halts and would resume the same way —
-    /// where its values at the two ends show nothing: the step is shortened to this point,
-    /// where the crossing is then seen and located. Each function is a polynomial in the step
-    /// (velocities and forces linear in the series' rows, `events.rs`), taken to order
-    /// `ORDER − 1`.
-    #[allow(clippy::too_many_arguments)]
-    pub(super) fn first_rise(
-        &self,
-        setup: &Setup,
-        modes: &Modes,
-        field: &Field,
-        watch: &Watch,
-        g_a: &[f64],
-        g_b: &[f64],
-        skip: Option<Event>,
-    ) -> Option<f64> {
-        let k = N / PER;
-        let mut first: Option<f64> = None;
-        for i in 0..watch.n {
-            let event = watch.list[i];
-            if g_a[i] > 0.0 || g_b[i] > 0.0 || Some(event) == skip {
-                continue;
-            }
-            let mut q = [0.0; ORDER + 1];
-            let mut q2: Option<[f64; ORDER + 1]> = None;
-            match event {
-                Event::CompressionEnd(j) => {
-                    for (qk, a) in q.iter_mut().zip(&self.aux) {
-                        *qk = a[VN * k + j];
-                    }
-                }
-                Event::Separation(j) => {
-                    for (qk, c) in q.iter_mut().zip(&self.c) {
-                        *qk = -c[PER * j + S];
-                    }
-                }
-                Event::Recompression(j) | Event::Join(j) => {
-                    for (qk, a) in q.iter_mut().zip(&self.aux) {
-                        *qk = -a[VN * k + j];
-                    }
-                }
-                Event::Halt(j) => {
-                    let sigma = match modes.tangent[j] {
-                        Tangent::Slip(sigma) => sigma,
-                        Tangent::Stick => continue,
-                    };
-                    for (qk, a) in q.iter_mut().zip(&self.aux) {
-                        *qk = -sigma * a[VT * k + j];
-                    }
-                }
-                Event::StickBreak(j) => {
-                    // |x_j| − μ_j F_j > 0: x_j − μ_j F_j or −x_j − μ_j F_j, x = T F.
-                    let row = field.map_row(j);
-                    let mut other = [0.0; ORDER + 1];
-                    for ((qk, ok), a) in q.iter_mut().zip(other.iter_mut()).zip(&self.aux) {
-                        let x: f64 = (0..k).map(|c| row[c] * a[F * k + c]).sum();
-                        let mf = setup.mu[j] * a[F * k + j];
-                        *qk = x - mf;
-                        *ok = -x - mf;
-                    }
-                    q2 = Some(other);
-                }
-            }
-            // (At the start, at most the function's value there: the same point, up to the
-            // round-off of its velocities formed anew.)
-            q[0] = (q[0] - watch.offset[i]).min(g_a[i]);
-            let mut rise = rise(&q, self.h);
-            if let Some(mut other) = q2 {
-                other[0] = (other[0] - watch.offset[i]).min(g_a[i]);
-                rise = match (rise, self::rise(&other, self.h)) {
-                    (Some(a), Some(b)) => Some(a.min(b)),
-                    (a, b) => a.or(b),
-                };
-            }
-            if let Some(th) = rise {
-                first = Some(first.map_or(th, |f: f64| f.min(th)));
-            }
-        }
-        first
-    }
-}
-
-/// Where the polynomial `q(t) = Σ q_k t^k` (`q(0) ≤ 0`) first rises above zero on
-/// `t = θ h`, `θ ∈ (0, 1]`: `None` if a bound of it is at most zero there (in `θ`, with
-/// `Q_k = q_k h^k`: the largest value of `Q₀ + Q₁ θ + (Q₂ + Σ_{k≥3} |Q_k|) θ²`); else the first of 16 equally spaced points where `q > 0`, or the maximum of an interval
-/// between two of them where `dq/dθ` falls through zero (bisected), if `q` is above zero
-/// there.
-fn rise(q: &[f64; ORDER + 1], h: f64) -> Option<f64> {
-    // In θ (Q_k = q_k h^k): q ≤ Q₀ + Q₁ θ + (Q₂ + Σ_{k≥3} |Q_k|) θ² on [0, 1].
-    let (q1, q2) = (q[1] * h, q[2] * h * h);
-    let (mut rest, mut hp) = (0.0, h * h * h);
-    for qk in &q[3..] {
-        rest += (qk * hp).abs();
-        hp *= h;
-    }
-    let c = q2 + rest;
-    let mut bound = q[0].max(q[0] + q1 + c);
-    if c < 0.0 && q1 > 0.0 && q1 < -2.0 * c {
-        bound = bound.max(q[0] - q1 * q1 / (4.0 * c));
-    }
-    // (NaN: no rise.)
-    if bound.is_nan() || bound <= 0.0 {
-        return None;
-    }
-    // q and dq/dθ at θ.
-    let at = |th: f64| {
-        let t = th * h;
-        let (mut v, mut d) = (q[ORDER], 0.0);
-        for qk in q[..ORDER].iter().rev() {
-            d = d * t + v;
-            v = v * t + qk;
-        }
-        (v, d * h)
-    };
-    const SAMPLES: usize = 16;
-    let (mut th0, mut d0) = (0.0, at(0.0).1);
-    for m in 1..=SAMPLES {
-        let th1 = m as f64 / SAMPLES as f64;
-        let (v1, d1) = at(th1);
-        if v1 > 0.0 {
-            return Some(th1);
-        }
-        if d0 > 0.0 && d1 < 0.0 {
-            let (mut lo, mut hi) = (th0, th1);
-            for _ in 0..40 {
-                let mid = 0.5 * (lo + hi);
-                if at(mid).1 > 0.0 {
-                    lo = mid;
-                } else {
-                    hi = mid;
-                }
-            }
-            if at(lo).0 > 0.0 {
-                return Some(lo);
-            }
-        }
-        (th0, d0) = (th1, d1);
-    }
-    None
-}
-
 /// The map of the normal impulses' coefficients to the velocities' (orders `k ≥ 1`, where
 /// `p_t,k = T p_n,k`): `v_k = A p_n,k`, `A = W_:t T + W_:n`, `2K × K`.
 fn normal_map<const N: usize>(setup: &Setup, field: &Field) -> [[f64; N]; N] {
@@ -701,3 +554,4 @@ fn binomial_powers(n: usize, x: f64, out: &mut [f64; ORDER + 1]) {
 mod onset;
 #[cfg(test)]
 mod tests;
+mod watched;

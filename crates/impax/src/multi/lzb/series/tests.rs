@@ -1,8 +1,9 @@
 //! The series against many DOP853 steps over the same step, from loaded contacts and from
 //! forces starting at zero; the rise of an event function inside a step.
 
+use super::watched::rise;
 use super::*;
-use crate::multi::lzb::state::{Normal, StickSet};
+use crate::multi::lzb::state::{Modes, Normal, StickSet, Tangent};
 use crate::multi::MultiProblem;
 use crate::numerics::dop853::dop853_step;
 
@@ -240,4 +241,78 @@ fn a_rise_inside_the_step_is_found() {
     q[1] = -q[1];
     let th = rise(&q, -1.0).expect("the bump");
     assert!((th - 0.53).abs() < 1e-6, "{th}");
+}
+
+/// Each watched function along a step, as the series' polynomial (`event_poly`), is the
+/// function of the series' state there (`events::value`) — the same polynomial but for the
+/// state's last order — and `locate` puts a crossing where the state's function is zero:
+/// contact 0 compressing and slipping (then sticking), contact 1 expanding.
+#[test]
+fn the_watched_functions_are_polynomials_of_the_step() {
+    use crate::multi::lzb::events;
+    use crate::multi::lzb::friction::rebuild;
+    let case = &LOADED;
+    let p = MultiProblem::from_upper(2, &case.w, &case.v, &[0.4, 0.3], &[0.8, 0.6]).unwrap();
+    let setup = Setup::new(&p);
+    let mut normal = [Normal::Off; 8];
+    normal[..2].copy_from_slice(&case.normal);
+    let mut located = 0;
+    for stick in [false, true] {
+        let mut modes = Modes {
+            normal,
+            tangent: [Tangent::Slip(1.0); 8],
+            stick: StickSet::EMPTY,
+        };
+        if stick {
+            modes.tangent[0] = Tangent::Stick;
+            rebuild(&setup, &mut modes);
+        }
+        let field = Field::new(&setup, &modes);
+        let y = case.y;
+        let mut ser = Series::<8>::new();
+        assert!(ser.build(&setup, &field, Var::Time, 0.0, &y));
+        let ev = field.eval::<8>(&setup, &y);
+        let watch = events::watch(&setup, &modes, &y, &ev);
+        let on_state = |watch: &events::Watch, i: usize, th: f64| {
+            let z = ser.at(th);
+            events::value(&setup, &modes, watch, i, &z, &field.eval::<8>(&setup, &z))
+        };
+        let poly = |watch: &events::Watch, i: usize, th: f64| {
+            let (q, q2) = ser.event_poly(&setup, &modes, &field, watch, i).unwrap();
+            let t = th * ser.h;
+            let at = |q: &[f64; ORDER + 1]| q.iter().rev().fold(0.0, |v, c| v * t + c);
+            q2.map_or(at(&q), |o| at(&q).max(at(&o)))
+        };
+        assert!(watch.n >= 4, "{:?}", &watch.list[..watch.n]);
+        for i in 0..watch.n {
+            for m in 0..=10 {
+                let th = 0.1 * f64::from(m);
+                let (a, b) = (poly(&watch, i, th), on_state(&watch, i, th));
+                assert!(
+                    (a - b).abs() <= 1e-12,
+                    "{:?} at {th}: {a} vs {b}",
+                    watch.list[i]
+                );
+            }
+            // Offset so that the function crosses zero at θ = 0.37 where it increases
+            // through the step; the crossing located on the polynomial is the state's.
+            let g = |th: f64| on_state(&watch, i, th);
+            let (g0, g1, g2) = (g(0.0), g(0.37), g(1.0));
+            if !(g0 < g1 && g1 < g2) || (g2 - g0) < 1e-3 {
+                continue;
+            }
+            let mut shifted = watch;
+            shifted.offset[i] += g1;
+            let ends = (on_state(&shifted, i, 0.0), on_state(&shifted, i, 1.0));
+            let th = ser.locate(&setup, &modes, &field, &shifted, i, ends);
+            assert!((th - 0.37).abs() <= 1e-9, "{:?}: {th}", watch.list[i]);
+            assert!(
+                on_state(&shifted, i, th).abs() <= 1e-13,
+                "{:?}",
+                watch.list[i]
+            );
+            located += 1;
+        }
+    }
+    assert!(located >= 3, "{located}");
 }
