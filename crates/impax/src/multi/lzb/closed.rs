@@ -96,16 +96,25 @@ impl Line {
 
 /// If the active contacts load in fixed proportions at the point `y` in the regimes
 /// `modes` (module docs), move `y` to the end of that phase and return the events due
-/// there; else `None`, `y` unchanged.
+/// there; else `None`, `y` unchanged. `at`: the field of `modes` and the point's quantities
+/// in it, if the caller has them.
 pub(super) fn phase<const N: usize>(
     setup: &Setup,
     modes: &Modes,
     y: &mut [f64; N],
+    at: Option<(&Field, &Eval)>,
 ) -> Option<Ending> {
-    let field = Field::new(setup, modes);
-    let ev = field.eval::<N>(setup, y);
-    let line = proportions(setup, modes, &field, y, &ev.v)?;
-    let (q, ending) = first_events(setup, modes, y, &ev, &line)?;
+    let formed;
+    let (field, ev) = match at {
+        Some(at) => at,
+        None => {
+            let field = Field::new(setup, modes);
+            formed = (field, field.eval::<N>(setup, y));
+            (&formed.0, &formed.1)
+        }
+    };
+    let line = proportions(setup, modes, field, y, &ev.v)?;
+    let (q, ending) = first_events(setup, modes, y, ev, &line)?;
     let (c, k) = (line.c, setup.k);
     if line.from_rest && (0..k).all(|j| y[PER * j + PN] == 0.0) {
         // The impact's start, where the forces grow as τ^η: a phase ending early would leave

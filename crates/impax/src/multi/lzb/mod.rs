@@ -103,7 +103,8 @@
 //! *Solving ODEs I*, §II.5; the crate's `numerics::dop853`) takes the step. The tolerance is
 //! `1e-12` relative on every component. The events — a compression ending (`v_nj = 0`), a
 //! separation (`Ê_j = 0`), a recompression while loaded, a contact joining, a slip halting,
-//! a stick breaking — are located on the step's dense output (the series itself, or DOP853's
+//! a stick breaking — are located on the step's dense output (on a series step, each
+//! function is a polynomial of the step, `series/watched.rs`; on a DOP853 step, its
 //! seventh-order extension) and the path goes on from the solution there (`events.rs`,
 //! `path.rs`); a series step in which an event's function rises above zero and falls back
 //! (a slip that halts and would resume the same way) is shortened to where it is above zero,

@@ -129,7 +129,7 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
     let mut path = Path::start(setup, &y);
     let (mut attempts, mut steps) = (0usize, 0usize);
     let mut ser = Series::<N>::new();
-    let mut it = match path.closed(&mut y, &mut attempts)? {
+    let mut it = match path.closed(&mut y, &mut attempts, None)? {
         Closed::Ended => return Ok(path.finish(&y, steps)),
         Closed::Unchanged => Stepper::<N>::start(setup, path.modes, &y),
         Closed::Advanced => Stepper::<N>::resume(setup, path.modes, &y),
@@ -191,16 +191,10 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
             if let (true, Some(j)) = (lands, own) {
                 // The contact separates: on in time.
                 path.apply(&[Event::Separation(j)], &mut y);
-                if settled(setup, &path.modes, &y, &eval(setup, &path.modes, &y).v) {
-                    path.end_settled(&y);
+                let Some((field, ev)) = path.on_from(&mut y, &mut attempts)? else {
                     break;
-                }
-                if path.closed(&mut y, &mut attempts)? == Closed::Ended {
-                    break;
-                }
+                };
                 let ht = it.time_step(h, &ev_b.v);
-                let field = Field::new(setup, &path.modes);
-                let ev = field.eval::<N>(setup, &y);
                 it.restart(path.modes, field, &ev, &y, ht);
                 continue;
             }
@@ -221,7 +215,8 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
             }
             continue;
         }
-        // The first event inside the step, located on the dense output.
+        // The first event inside the step, located on the series' polynomials or on the
+        // Runge–Kutta step's dense output.
         let dense = taken.dense(&ser, &f, x, &y, &k_end, h);
         let series = matches!(taken, Taken::Series).then_some(&ser);
         let (seed, i) = it.first_event(&dense, series, &g_b, crosses);
@@ -237,16 +232,10 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
         y = ye;
         steps += 1;
         path.apply(&[event], &mut y);
-        if settled(setup, &path.modes, &y, &eval(setup, &path.modes, &y).v) {
-            path.end_settled(&y);
-            break;
-        }
-        if path.closed(&mut y, &mut attempts)? == Closed::Ended {
-            break;
-        }
         // On from the event (its regimes may have changed).
-        let field = Field::new(setup, &path.modes);
-        let ev = field.eval::<N>(setup, &y);
+        let Some((field, ev)) = path.on_from(&mut y, &mut attempts)? else {
+            break;
+        };
         let mut ht = it.time_step(h, &ev.v);
         if let Event::CompressionEnd(j) = event {
             // The contact now expands 1/e² times faster (ds/dτ = −v_n/e²): a shorter step.
@@ -406,16 +395,45 @@ impl<'a> Path<'a> {
         path
     }
 
+    /// On from the point `y` where events were applied: `None` if the impact ends there
+    /// (settled, or by its phases in closed form), else the field of the regimes the path
+    /// goes on in and the point's quantities in it, after the phases in closed form.
+    #[allow(clippy::type_complexity)]
+    fn on_from<const N: usize>(
+        &mut self,
+        y: &mut [f64; N],
+        attempts: &mut usize,
+    ) -> Result<Option<(Field, Eval)>, BreakdownReason> {
+        let setup = self.setup;
+        let field = Field::new(setup, &self.modes);
+        let ev = field.eval::<N>(setup, y);
+        if settled(setup, &self.modes, y, &ev.v) {
+            self.end_settled(y);
+            return Ok(None);
+        }
+        Ok(match self.closed(y, attempts, Some((&field, &ev)))? {
+            Closed::Ended => None,
+            Closed::Unchanged => Some((field, ev)),
+            Closed::Advanced => {
+                let field = Field::new(setup, &self.modes);
+                let ev = field.eval::<N>(setup, y);
+                Some((field, ev))
+            }
+        })
+    }
+
     /// The phases in closed form from the point `y` (`closed.rs`), one after the other, each
-    /// with the events at its end; `attempts` counts them with the integration's steps.
+    /// with the events at its end; `attempts` counts them with the integration's steps. `at`:
+    /// the field and the point's quantities in it, if the caller has them.
     fn closed<const N: usize>(
         &mut self,
         y: &mut [f64; N],
         attempts: &mut usize,
+        mut at: Option<(&Field, &Eval)>,
     ) -> Result<Closed, BreakdownReason> {
         let setup = self.setup;
         let mut out = Closed::Unchanged;
-        while let Some(end) = closed::phase::<N>(setup, &self.modes, y) {
+        while let Some(end) = closed::phase::<N>(setup, &self.modes, y, at.take()) {
             *attempts += 1;
             if *attempts > MAX_STEPS {
                 return Err(BreakdownReason::TooManySteps { limit: MAX_STEPS });

@@ -1,6 +1,7 @@
 //! The integration's state between two accepted points ([`Stepper`]): where it starts
 //! (in `z = τ^(η+1)` from the impact's start, or in `τ` after a phase in closed form), how it
-//! restarts after an event, and the first event inside a step, located on the dense output.
+//! restarts after an event, and the first event inside a step, located on the step's series
+//! or dense output.
 
 use super::events;
 use super::field::{Eval, Field};

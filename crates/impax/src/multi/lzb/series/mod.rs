@@ -199,11 +199,18 @@ impl<const N: usize> Series<N> {
             }
             // g at this order, in a separation: g = num / v_nj.
             if let Some(js) = sep {
-                let mut acc = num[kk];
-                for i in 1..=kk {
-                    acc -= aux[i][VN * k + js] * g[kk - i];
+                // (Two partial sums: the additions of one chain wait on each other.)
+                let (mut acc0, mut acc1) = (num[kk], 0.0);
+                let mut i = 1;
+                while i < kk {
+                    acc0 -= aux[i][VN * k + js] * g[kk - i];
+                    acc1 -= aux[i + 1][VN * k + js] * g[kk - i - 1];
+                    i += 2;
                 }
-                g[kk] = acc / aux[0][VN * k + js];
+                if i == kk {
+                    acc0 -= aux[i][VN * k + js] * g[0];
+                }
+                g[kk] = (acc0 + acc1) / aux[0][VN * k + js];
             }
             if kk > 0 {
                 force_order(c, aux, kk, alpha, &inv_s0);
@@ -225,12 +232,30 @@ impl<const N: usize> Series<N> {
                     ds[j] = aux[kk][VN * k + j];
                 }
             } else {
-                for i in 0..glen.min(kk + 1) {
+                // (Two partial sums each, as above.)
+                let (mut dphi1, mut ds1) = ([0.0; N], [0.0; N]);
+                let n = glen.min(kk + 1);
+                let mut i = 0;
+                while i + 1 < n {
+                    let (g0, a0, g1, a1) = (g[i], &aux[kk - i], g[i + 1], &aux[kk - i - 1]);
+                    for j in 0..k {
+                        dphi[j] += g0 * a0[F * k + j];
+                        ds[j] += g0 * a0[VN * k + j];
+                        dphi1[j] += g1 * a1[F * k + j];
+                        ds1[j] += g1 * a1[VN * k + j];
+                    }
+                    i += 2;
+                }
+                if i < n {
                     let (gi, a) = (g[i], &aux[kk - i]);
                     for j in 0..k {
                         dphi[j] += gi * a[F * k + j];
                         ds[j] += gi * a[VN * k + j];
                     }
+                }
+                for j in 0..k {
+                    dphi[j] += dphi1[j];
+                    ds[j] += ds1[j];
                 }
             }
             for j in 0..k {
