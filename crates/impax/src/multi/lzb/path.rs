@@ -398,7 +398,6 @@ impl<'a> Path<'a> {
     /// On from the point `y` where events were applied: `None` if the impact ends there
     /// (settled, or by its phases in closed form), else the field of the regimes the path
     /// goes on in and the point's quantities in it, after the phases in closed form.
-    #[allow(clippy::type_complexity)]
     fn on_from<const N: usize>(
         &mut self,
         y: &mut [f64; N],
