@@ -150,33 +150,28 @@ impl Var {
             Var::Root if x.powi(setup.law.m) >= root_end => Var::Time,
             Var::Root => Var::Root,
             Var::Time if setup.law.m == 1 => Var::Time,
-            Var::Time => {
+            Var::Time => match soonest(setup, modes, y, v) {
                 // The expanding contact whose separation is soonest, within two steps.
-                let mut best: Option<(f64, usize)> = None;
-                for j in 0..setup.k {
-                    let vn = v[2 * j + 1];
-                    if modes.normal[j] != Normal::Expansion || vn.is_nan() || vn <= setup.settled {
-                        continue;
-                    }
-                    let e2 = setup.e[j] * setup.e[j];
-                    let ahead = y[PER * j + S] * e2 / vn;
-                    if ahead <= 2.0 * h && best.is_none_or(|(b, _)| ahead < b) {
-                        best = Some((ahead, j));
-                    }
-                }
-                match best {
-                    Some((_, j)) => Var::Separation {
-                        contact: j,
-                        entry: v[2 * j + 1],
-                    },
-                    None => Var::Time,
-                }
-            }
+                Some((ahead, j)) if ahead <= 2.0 * h => Var::Separation {
+                    contact: j,
+                    entry: v[2 * j + 1],
+                },
+                _ => Var::Time,
+            },
             Var::Separation { contact: j, entry } => {
                 if modes.normal[j] != Normal::Expansion || v[2 * j + 1] < 0.25 * entry {
-                    Var::Time
-                } else {
-                    self
+                    return Var::Time;
+                }
+                // Another contact separating first (a rod's two ends leaving nearly together)
+                // would be a singular point ahead in this variable: its own is taken instead.
+                match soonest(setup, modes, y, v) {
+                    Some((ahead, i)) if i != j && ahead < 0.5 * ahead_of(setup, y, v, j) => {
+                        Var::Separation {
+                            contact: i,
+                            entry: v[2 * i + 1],
+                        }
+                    }
+                    _ => self,
                 }
             }
         }
@@ -206,4 +201,27 @@ impl Var {
             }
         }
     }
+}
+
+/// The `τ` to contact `j`'s separation on its present rates, `s_j e_j² / v_nj`.
+fn ahead_of(setup: &Setup, y: &[f64], v: &[f64; 2 * MAXK], j: usize) -> f64 {
+    y[PER * j + S] * setup.e[j] * setup.e[j] / v[2 * j + 1]
+}
+
+/// The expanding contact whose separation is soonest on the present rates
+/// ([`ahead_of`]), and its `τ` to it; contacts moving apart by no more than the settled
+/// round-off are passed over.
+fn soonest(setup: &Setup, modes: &Modes, y: &[f64], v: &[f64; 2 * MAXK]) -> Option<(f64, usize)> {
+    let mut best: Option<(f64, usize)> = None;
+    for j in 0..setup.k {
+        let vn = v[2 * j + 1];
+        if modes.normal[j] != Normal::Expansion || vn.is_nan() || vn <= setup.settled {
+            continue;
+        }
+        let ahead = ahead_of(setup, y, v, j);
+        if best.is_none_or(|(b, _)| ahead < b) {
+            best = Some((ahead, j));
+        }
+    }
+    best
 }

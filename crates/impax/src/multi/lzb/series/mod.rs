@@ -271,8 +271,8 @@ impl<const N: usize> Series<N> {
             if let Some(js) = sep {
                 c[kk + 1][PER * js + S] = sep_s[kk + 1];
             }
-            tangential_order(c, aux, field, kk);
         }
+        tangential_rows(c, aux, field);
         let Some(h) = self.step(|i| setup.atol[i] + RTOL * y[i].abs()) else {
             return false;
         };
@@ -428,30 +428,35 @@ fn normal_map<const N: usize>(setup: &Setup, field: &Field) -> [[f64; N]; N] {
     amap
 }
 
-/// The tangential impulses and the friction works of order `kk + 1`, from the normal
-/// impulses of that order: `p_t − p_t0 = T (p_n − p_n0)` in fixed regimes (`aux`'s `dp_t/dx`
-/// of order `kk` with them) and `dw_tj/dx = v_tj dp_tj/dx` ([`work_rate`]).
+/// The tangential impulses and the friction works of every order, from the normal
+/// impulses': `p_t − p_t0 = T (p_n − p_n0)` in fixed regimes (`aux`'s `dp_t/dx` with them)
+/// and `dw_tj/dx = v_tj dp_tj/dx` ([`work_rate`]). Neither feeds the other recurrences (the
+/// velocities' map `A` has `T` in it), so they are formed after them, in one pass whose
+/// orders do not wait on each other.
 #[allow(clippy::needless_range_loop)] // the rows are indexed by order and contact alike
-fn tangential_order<const N: usize>(
+fn tangential_rows<const N: usize>(
     c: &mut [[f64; N]; ORDER + 1],
     aux: &mut [[f64; N]; ORDER],
     field: &Field,
-    kk: usize,
 ) {
     let k = N / PER;
-    for j in 0..k {
-        let row = field.map_row(j);
-        let mut a = 0.0;
-        for cc in 0..k {
-            a += row[cc] * c[kk + 1][PER * cc + PN];
+    for kk in 0..ORDER {
+        for j in 0..k {
+            let row = field.map_row(j);
+            let mut a = 0.0;
+            for cc in 0..k {
+                a += row[cc] * c[kk + 1][PER * cc + PN];
+            }
+            c[kk + 1][PER * j + PT] = a;
+            aux[kk][DPT * k + j] = a * (kk + 1) as f64;
         }
-        c[kk + 1][PER * j + PT] = a;
-        aux[kk][DPT * k + j] = a * (kk + 1) as f64;
     }
-    let w = work_rate(aux, kk);
-    let inv = RECIP[kk + 1];
-    for j in 0..k {
-        c[kk + 1][PER * j + WT] = if field.rubs(j) { w[j] * inv } else { 0.0 };
+    for kk in 0..ORDER {
+        let w = work_rate(aux, kk);
+        let inv = RECIP[kk + 1];
+        for j in 0..k {
+            c[kk + 1][PER * j + WT] = if field.rubs(j) { w[j] * inv } else { 0.0 };
+        }
     }
 }
 

@@ -29,7 +29,7 @@
 //! to the first compression's end (the 256 random problems of the benchmark: see the
 //! performance chapter).
 
-use super::{force_order, normal_map, tangential_order, Series, F, ORDER, RECIP, VN, VT};
+use super::{force_order, normal_map, tangential_rows, Series, F, ORDER, RECIP, VN, VT};
 use crate::multi::lzb::field::{Eval, Field};
 use crate::multi::lzb::state::{Setup, PER, PN, S};
 use crate::multi::lzb::RTOL;
@@ -122,13 +122,14 @@ impl<const N: usize> Series<N> {
                     c[kk + 1][PER * j + S] = (rate - kk as f64 * q) * inv;
                 }
             }
-            // The impulses of order kk + 1: dp_n/dz = κ q^η/(η+1), p_t = T p_n; the works.
+            // The normal impulses of order kk + 1: dp_n/dz = κ q^η/(η+1) (p_t = T p_n and the
+            // works after the loop).
             let inv = RECIP[kk + 1];
             for j in 0..k {
                 c[kk + 1][PER * j + PN] = aux[kk][F * k + j] * inv_p * inv;
             }
-            tangential_order(c, aux, field, kk);
         }
+        tangential_rows(c, aux, field);
         // The tolerance of q_j: relative, as of the velocity it is (plus a tenth of it of the
         // largest, for the contacts without force, whose rows are zero).
         let c0 = c[0];

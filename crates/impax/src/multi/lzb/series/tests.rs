@@ -1,7 +1,7 @@
 //! The series against many DOP853 steps over the same step, from loaded contacts and from
 //! forces starting at zero; the rise of an event function inside a step.
 
-use super::watched::rise;
+use super::watched::{horner, rise};
 use super::*;
 use crate::multi::lzb::state::{Modes, Normal, StickSet, Tangent};
 use crate::multi::MultiProblem;
@@ -241,6 +241,22 @@ fn a_rise_inside_the_step_is_found() {
     q[1] = -q[1];
     let th = rise(&q, -1.0).expect("the bump");
     assert!((th - 0.53).abs() < 1e-6, "{th}");
+    // A function that reaches zero at the step's end as a power, −c (1 − θ)³ (a separating
+    // contact's stick-break function where it lands: its slope there is zero to
+    // round-off), does not rise; a bump just before the end, 1e-6 − (θ − 0.97)², does.
+    let c = 5.48e-5;
+    let mut q = [0.0; ORDER + 1];
+    let h: f64 = -0.0567;
+    for (k, binom) in [1.0, -3.0, 3.0, -1.0].into_iter().enumerate() {
+        q[k] = -c * binom / h.powi(k as i32);
+    }
+    assert_eq!(rise(&q, h), None);
+    let mut q = [0.0; ORDER + 1];
+    q[0] = 1e-6 - 0.97 * 0.97;
+    q[1] = 2.0 * 0.97;
+    q[2] = -1.0;
+    let th = rise(&q, 1.0).expect("the bump at the end");
+    assert!((th - 0.97).abs() < 1e-3 && horner(&q, th) > 0.0, "{th}");
 }
 
 /// Each watched function along a step, as the series' polynomial (`event_poly`), is the

@@ -192,15 +192,16 @@ fn may_rise(q0: f64, q1: f64, q2: f64, rest: f64) -> bool {
 
 /// `Σ_k q_k t^k` (Horner).
 #[inline]
-fn horner(q: &[f64; ORDER + 1], t: f64) -> f64 {
+pub(super) fn horner(q: &[f64; ORDER + 1], t: f64) -> f64 {
     q.iter().rev().fold(0.0, |v, qk| v * t + qk)
 }
 
 /// Where the polynomial `q(t) = Σ q_k t^k` (`q(0) ≤ 0`) first rises above zero on
 /// `t = θ h`, `θ ∈ (0, 1]`: `None` if a bound of it is at most zero there (in `θ`, with
-/// `Q_k = q_k h^k`: the largest value of `Q₀ + Q₁ θ + (Q₂ + Σ_{k≥3} |Q_k|) θ²`); else the first of 16 equally spaced points where `q > 0`, or the maximum of an interval
-/// between two of them where `dq/dθ` falls through zero (bisected), if `q` is above zero
-/// there.
+/// `Q_k = q_k h^k`: the largest value of `Q₀ + Q₁ θ + (Q₂ + Σ_{k≥3} |Q_k|) θ²`); else the
+/// first of 16 equally spaced points where `q > 0`, or, in an interval between two of them
+/// where `dq/dθ` falls through zero, its maximum (Newton's iteration on `dq/dθ`, kept
+/// inside the bracket) if `q` is above zero there.
 pub(super) fn rise(q: &[f64; ORDER + 1], h: f64) -> Option<f64> {
     // In θ (Q_k = q_k h^k): q ≤ Q₀ + Q₁ θ + (Q₂ + Σ_{k≥3} |Q_k|) θ² on [0, 1].
     let (q1, q2) = (q[1] * h, q[2] * h * h);
@@ -212,39 +213,94 @@ pub(super) fn rise(q: &[f64; ORDER + 1], h: f64) -> Option<f64> {
     if !may_rise(q[0], q1, q2, rest) {
         return None;
     }
-    // q and dq/dθ at θ.
+    // q, dq/dθ and d²q/dθ² at θ.
     let at = |th: f64| {
         let t = th * h;
-        let (mut v, mut d) = (q[ORDER], 0.0);
+        let (mut v, mut d, mut dd) = (q[ORDER], 0.0, 0.0);
         for qk in q[..ORDER].iter().rev() {
+            dd = dd * t + d;
             d = d * t + v;
             v = v * t + qk;
         }
-        (v, d * h)
+        (v, d * h, 2.0 * dd * h * h)
     };
+    // The round-off of dq/dθ on [0, 1]: 8 ε Σ_k k |q_k h^k|.
+    let slope_round_off = || {
+        let (mut sum, mut hp) = (0.0, h.abs());
+        for (k, qk) in q.iter().enumerate().skip(1) {
+            sum += k as f64 * (qk * hp).abs();
+            hp *= h.abs();
+        }
+        8.0 * f64::EPSILON * sum
+    };
+    // q and dq/dt at the samples, their Horner chains side by side (each waits on itself
+    // alone).
     const SAMPLES: usize = 16;
+    let t: [f64; SAMPLES] = std::array::from_fn(|m| (m + 1) as f64 / SAMPLES as f64 * h);
+    let (mut vs, mut ds) = ([q[ORDER]; SAMPLES], [0.0; SAMPLES]);
+    for qk in q[..ORDER].iter().rev() {
+        for ((v, d), t) in vs.iter_mut().zip(&mut ds).zip(&t) {
+            *d = *d * t + *v;
+            *v = *v * t + qk;
+        }
+    }
     let (mut th0, mut d0) = (0.0, at(0.0).1);
     for m in 1..=SAMPLES {
         let th1 = m as f64 / SAMPLES as f64;
-        let (v1, d1) = at(th1);
+        let (v1, d1) = (vs[m - 1], ds[m - 1] * h);
         if v1 > 0.0 {
             return Some(th1);
         }
         if d0 > 0.0 && d1 < 0.0 {
-            let (mut lo, mut hi) = (th0, th1);
-            for _ in 0..40 {
-                let mid = 0.5 * (lo + hi);
-                if at(mid).1 > 0.0 {
-                    lo = mid;
-                } else {
-                    hi = mid;
-                }
-            }
-            if at(lo).0 > 0.0 {
-                return Some(lo);
+            if let Some(th) =
+                top(&at, (th0, th1), d1, slope_round_off()).filter(|&th| at(th).0 > 0.0)
+            {
+                return Some(th);
             }
         }
         (th0, d0) = (th1, d1);
     }
     None
+}
+
+/// The maximum of `q` between `th0` and `th1`, where its slope falls from above zero to `d1`
+/// below it (`at(θ)`: `q`, `dq/dθ`, `d²q/dθ²`): Newton's steps on `dq/dθ` kept inside the bracket
+/// (halving it where one would leave it), to where `dq/dθ` is zero to its round-off `flat`.
+/// `None` where the slope at `th1` is zero to round-off: the maximum is there, at or below
+/// zero (a function that reaches zero at the step's end as a power, `−c (1 − θ)³`, the
+/// separating contact's stick-break function where it lands, would otherwise be searched
+/// for a top through its round-off).
+fn top(
+    at: &impl Fn(f64) -> (f64, f64, f64),
+    (th0, th1): (f64, f64),
+    d1: f64,
+    flat: f64,
+) -> Option<f64> {
+    if d1 >= -flat {
+        return None;
+    }
+    let (mut lo, mut hi) = (th0, th1);
+    let mut th = 0.5 * (lo + hi);
+    for _ in 0..60 {
+        let (_, d, dd) = at(th);
+        if d.abs() <= flat {
+            break;
+        }
+        if d > 0.0 {
+            lo = th;
+        } else {
+            hi = th;
+        }
+        let newton = th - d / dd;
+        let next = if newton > lo && newton < hi {
+            newton
+        } else {
+            0.5 * (lo + hi)
+        };
+        if (next - th).abs() <= 4.0 * f64::EPSILON * th || hi - lo <= f64::EPSILON * hi {
+            break;
+        }
+        th = next;
+    }
+    Some(th)
 }
