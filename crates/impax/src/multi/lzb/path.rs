@@ -128,12 +128,13 @@ pub(super) fn run<const N: usize>(setup: &Setup) -> Result<End, BreakdownReason>
     let mut y = [0.0; N];
     let mut path = Path::start(setup, &y);
     let (mut attempts, mut steps) = (0usize, 0usize);
-    let mut ser = Series::<N>::new();
     let mut it = match path.closed(&mut y, &mut attempts, None)? {
         Closed::Ended => return Ok(path.finish(&y, steps)),
         Closed::Unchanged => Stepper::<N>::start(setup, path.modes, &y),
         Closed::Advanced => Stepper::<N>::resume(setup, path.modes, &y),
     };
+    // (Formed only for a path that is integrated.)
+    let mut ser = Series::<N>::new();
     while (0..setup.k).any(|j| it.modes.active(j)) {
         attempts += 1;
         if attempts > MAX_STEPS {

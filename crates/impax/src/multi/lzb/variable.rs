@@ -16,7 +16,9 @@
 //!   `v_nj > 0`), in which the separating contact's force `κ_j σ^(mη)` is analytic for
 //!   `η = 3/2`, `m = 2`, and the separation is the end of the range, `σ = 0`, reached exactly
 //!   (back to `τ` if `v_nj` falls below a quarter of its value on entry: the contact may be
-//!   about to recompress).
+//!   about to recompress; over to another contact's `σ` if that one's separation comes in
+//!   less than half the time, on the present rates: its separation would be a singular point
+//!   ahead, the steps shrinking toward it — a rod's two ends leaving nearly together).
 //!
 //! The power `m` is 2 when `2η` is an integer, else the least with `m η ≥ 9` (the force then
 //! smooth to beyond the integrator's order); an integer `η` (a linear spring, `η = 1`) has no
