@@ -244,7 +244,7 @@ pub(super) fn rise(q: &[f64; ORDER + 1], h: f64) -> Option<f64> {
             *v = *v * t + qk;
         }
     }
-    let (mut th0, mut d0) = (0.0, at(0.0).1);
+    let (mut th0, mut d0) = (0.0, q1);
     for m in 1..=SAMPLES {
         let th1 = m as f64 / SAMPLES as f64;
         let (v1, d1) = (vs[m - 1], ds[m - 1] * h);
